@@ -1,1 +1,16 @@
-//! placeholder
+//! # fwav — design and fly the flapping wing of a flapping-wing air vehicle
+//!
+//! The library behind the `fwav` program. It will carry the MDOIS design
+//! process of the seed paper (3D aeroelastic system analysis, kinematic
+//! optimization on 2D unsteady aerodynamics, ESL topology optimization) and
+//! the serial uploader; today it holds what the link needs first: reading and
+//! checking the kinematics profile file that `fwav design` writes and
+//! `fwav upload` sends.
+//!
+//! The program (`src/main.rs`) only parses arguments and prints; everything
+//! else is here and returns typed errors.
+
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod profile_file;

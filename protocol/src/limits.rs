@@ -3,6 +3,10 @@
 //!
 //! Every comparison is written so that a NaN on either side *fails* the check
 //! (`!(value <= max)`), so a corrupted limit can never let a profile through.
+#![allow(
+    clippy::neg_cmp_op_on_partial_ord,
+    reason = "negated comparisons are the NaN-rejecting form, on purpose"
+)]
 
 use postcard_schema::Schema;
 use serde::{Deserialize, Serialize};

@@ -73,6 +73,10 @@ pub struct VersionMismatch {
 /// A host command. Variant 0 ([`Command::Handshake`]) is frozen; append new
 /// commands at the end.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, Schema)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "no allocator on the device: messages are fixed-size values"
+)]
 pub enum Command {
     /// Open a session: the device answers [`DeviceMessage::Hello`] and, if the
     /// versions differ, refuses every other command.
@@ -112,6 +116,10 @@ pub enum Command {
 
 /// Device → host. Variant 0 ([`DeviceMessage::Hello`]) is frozen.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, Schema)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "no allocator on the device: messages are fixed-size values"
+)]
 pub enum DeviceMessage {
     /// Answer to [`Command::Handshake`].
     Hello(DeviceHello),

@@ -1,0 +1,86 @@
+//! The `fwav` program as a user runs it (the README's main command among them).
+
+use std::process::Command;
+
+fn fwav(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_fwav"))
+        .args(args)
+        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+        .output()
+        .expect("the fwav binary runs")
+}
+
+#[test]
+fn readme_main_command_checks_the_initial_design() {
+    let out = fwav(&["profile", "check", "host/profiles/initial-design.json"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(stdout.contains("valid"), "{stdout}");
+    assert!(
+        stdout.contains("11.000") && stdout.contains("30.00"),
+        "{stdout}"
+    );
+}
+
+#[test]
+fn invalid_profile_is_refused_with_reasons() {
+    let dir = std::env::temp_dir().join(format!("fwav-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("too-wide.json");
+    std::fs::write(
+        &path,
+        r#"{"format":"fwav-profile","format_version":1,"segments":[
+            {"frequency_hz": 25.0, "amplitude_deg": 50.0, "duration_s": 5.0, "ramp_s": 1.0}]}"#,
+    )
+    .unwrap();
+    let out = fwav(&["profile", "check", path.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(stderr.contains("frequency 25 Hz"), "{stderr}");
+    assert!(stderr.contains("amplitude 50.00 deg"), "{stderr}");
+
+    let json = fwav(&["profile", "check", "--json", path.to_str().unwrap()]);
+    let report: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    assert_eq!(report["valid"], false);
+    assert!(report["errors"].as_array().unwrap().len() >= 2);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn unreadable_and_malformed_files_name_the_file() {
+    let out = fwav(&["profile", "check", "no/such/file.json"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cannot read no/such/file.json"));
+
+    let dir = std::env::temp_dir().join(format!("fwav-cli-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("bad.json");
+    std::fs::write(
+        &path,
+        "{\"format\": \"fwav-profile\",\n \"format_version\": 1,\n \"segmnts\": []}",
+    )
+    .unwrap();
+    let out = fwav(&["profile", "check", path.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        stderr.contains("bad.json") && stderr.contains("segmnts") && stderr.contains("line 3"),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn protocol_info_is_json() {
+    let out = fwav(&["protocol", "--json"]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["protocol_version"], fwav_protocol::PROTOCOL_VERSION);
+    assert_eq!(
+        v["schema_hash"],
+        format!("{:016x}", fwav_protocol::SCHEMA_HASH)
+    );
+}
