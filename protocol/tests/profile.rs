@@ -345,7 +345,10 @@ fn document_converts_degrees_and_defaults() {
     assert_eq!(p.on_end, EndAction::Repeat);
     assert_eq!(p.segments.len(), 2);
     let s = p.segments[0];
-    assert!((s.amplitude_rad - core::f32::consts::FRAC_PI_6).abs() < 1e-7, "30 deg = pi/6 rad");
+    assert!(
+        (s.amplitude_rad - core::f32::consts::FRAC_PI_6).abs() < 1e-7,
+        "30 deg = pi/6 rad"
+    );
     assert_eq!((s.mean_rad, s.downstroke_fraction), (0.0, 0.5));
     assert!((p.segments[1].mean_rad - 5.0 * DEG).abs() < 1e-7);
     assert_eq!(p.validate(&L), Ok(()));
