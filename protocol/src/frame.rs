@@ -72,12 +72,22 @@ pub enum FrameError {
 ///
 /// Never panics: an over-long message or a short buffer is an error.
 pub fn encode_frame<T: Serialize>(message: &T, out: &mut [u8]) -> Result<usize, EncodeError> {
+    let mut raw = [0u8; MAX_PAYLOAD_LEN];
+    let payload = postcard::to_slice(message, &mut raw).map_err(|_| EncodeError::TooLarge)?;
+    frame_payload(payload, out)
+}
+
+/// Frames already-serialized bytes (CRC, COBS, delimiters) into `out`;
+/// returns the frame's length. [`encode_frame`] is this after postcard; on its
+/// own it serves fault injection (a well-framed message of wrong content).
+pub fn frame_payload(payload: &[u8], out: &mut [u8]) -> Result<usize, EncodeError> {
+    let n = payload.len();
+    if n > MAX_PAYLOAD_LEN {
+        return Err(EncodeError::TooLarge);
+    }
     let mut raw = [0u8; MAX_PAYLOAD_LEN + CRC_LEN];
-    let n = postcard::to_slice(message, &mut raw[..MAX_PAYLOAD_LEN])
-        .map_err(|_| EncodeError::TooLarge)?
-        .len();
-    let crc = CRC32C.checksum(&raw[..n]);
-    raw[n..n + CRC_LEN].copy_from_slice(&crc.to_le_bytes());
+    raw[..n].copy_from_slice(payload);
+    raw[n..n + CRC_LEN].copy_from_slice(&CRC32C.checksum(payload).to_le_bytes());
 
     let available = out.len();
     let too_small = EncodeError::BufferTooSmall { available };

@@ -64,7 +64,8 @@ pub mod schema;
 pub mod status;
 
 pub use frame::{
-    encode_frame, EncodeError, FrameDecoder, FrameError, MAX_FRAME_LEN, MAX_PAYLOAD_LEN,
+    encode_frame, frame_payload, EncodeError, FrameDecoder, FrameError, MAX_FRAME_LEN,
+    MAX_PAYLOAD_LEN,
 };
 pub use limits::{Limits, ProfileError, SegmentField, SlewQuantity};
 pub use message::{

@@ -73,6 +73,80 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(4096))]
+
+    /// Random bytes inside *valid* frames (good COBS and CRC) reach postcard's
+    /// deserializer, which random frames almost never do: whatever the
+    /// content, both receivers answer without panicking, and anything they
+    /// accept is a well-formed message (e.g. a segment count over 16, a bad
+    /// UTF-8 firmware name or an unknown variant is a Decode error).
+    /// postcard accepts non-canonical varints (`81 00` for 1), so an accepted
+    /// payload need not equal the canonical encoding; it is never shorter.
+    #[test]
+    fn any_payload_in_a_valid_frame_is_handled(payload in vec(any::<u8>(), 0..=MAX_PAYLOAD_LEN)) {
+        let mut frame = vec![0u8; MAX_FRAME_LEN];
+        let n = frame_payload(&payload, &mut frame).unwrap();
+        let mut device = FrameDecoder::new();
+        let got: Vec<Result<Request, FrameError>> = device.feed(&frame[..n]).collect();
+        match got.as_slice() {
+            [] => prop_assert!(payload.is_empty() || n == 0),
+            [Ok(req)] => prop_assert!(well_formed(req, &payload)),
+            [Err(e)] => prop_assert!(matches!(e, FrameError::Decode | FrameError::Malformed)),
+            more => prop_assert!(false, "one frame, {} verdicts", more.len()),
+        }
+        let mut host = FrameDecoder::new();
+        let got: Vec<Result<DeviceMessage, FrameError>> = host.feed(&frame[..n]).collect();
+        if let [Ok(msg)] = got.as_slice() {
+            prop_assert!(well_formed(msg, &payload));
+        }
+    }
+}
+
+/// `message`'s canonical encoding is no longer than what it was decoded from,
+/// and survives encode → decode → encode unchanged (bytes, so NaNs compare).
+fn well_formed<T: serde::Serialize + serde::de::DeserializeOwned>(
+    message: &T,
+    payload: &[u8],
+) -> bool {
+    let canonical = postcard::to_allocvec(message).unwrap();
+    let again: T = postcard::from_bytes(&canonical).unwrap();
+    canonical.len() <= payload.len() && postcard::to_allocvec(&again).unwrap() == canonical
+}
+
+/// Specific hostile payloads that a CRC-valid frame could carry.
+#[test]
+fn hostile_payloads_are_decode_errors() {
+    // UploadProfile (seq 1, variant 2) claiming 17 segments.
+    let mut too_many = vec![0x01, 0x02, 17];
+    too_many.extend(std::iter::repeat_n(0x01, 17 * 24 + 1));
+    // Handshake answer with a 200-byte firmware name (capacity 32).
+    let mut long_name = vec![0x00, 0x01, 0x01, 0x01, 0x01, 200];
+    long_name.extend(std::iter::repeat_n(b'a', 200));
+    // Handshake answer with invalid UTF-8 in the firmware name.
+    let bad_utf8 = vec![0x00, 0x01, 0x01, 0x01, 0x01, 0x02, 0xc3, 0x28];
+    // A command index past the last variant.
+    let unknown_command = vec![0x01, 0x7f];
+    // A varint seq longer than u16.
+    let huge_seq = vec![0xff, 0xff, 0xff, 0x7f, 0x01];
+
+    let mut frame = vec![0u8; MAX_FRAME_LEN];
+    for (name, payload) in [
+        ("too_many", &too_many),
+        ("unknown_command", &unknown_command),
+        ("huge_seq", &huge_seq),
+    ] {
+        let n = frame_payload(payload, &mut frame).unwrap();
+        let got: Vec<Result<Request, _>> = FrameDecoder::new().feed(&frame[..n]).collect();
+        assert_eq!(got, vec![Err(FrameError::Decode)], "{name}");
+    }
+    for (name, payload) in [("long_name", &long_name), ("bad_utf8", &bad_utf8)] {
+        let n = frame_payload(payload, &mut frame).unwrap();
+        let got: Vec<Result<DeviceMessage, _>> = FrameDecoder::new().feed(&frame[..n]).collect();
+        assert_eq!(got, vec![Err(FrameError::Decode)], "{name}");
+    }
+}
+
 /// A frame of MAX_FRAME_LEN non-zero bytes and more is dropped as over-long,
 /// counted once, and the next frame is received.
 #[test]

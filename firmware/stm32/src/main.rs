@@ -1,6 +1,6 @@
 //! # fwav-fc-stm32 — the fwav flight controller on an STM32F405RG
 //!
-//! Thin embassy glue around [`fwav_fc_core`]: clocks, the link UART, and (in
+//! Thin embassy glue around `fwav_fc_core`: clocks, the link UART, and (in
 //! the firmware issue) the PWM H-bridge, encoder, current ADC, flash storage
 //! and watchdog. All decisions live in the portable core, which hil-sim runs
 //! unchanged.
