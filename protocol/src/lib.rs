@@ -73,7 +73,7 @@ pub use message::{
     VersionMismatch, FIRMWARE_NAME_LEN,
 };
 pub use params::{ParamId, ParamInfo, ParamValue, MAX_PARAMS, PARAMS};
-pub use profile::{EndAction, Profile, Segment, MAX_SEGMENTS};
+pub use profile::{EndAction, Profile, Segment, MAX_SEGMENTS, RAMP_PEAK_RATE_FACTOR};
 pub use schema::SCHEMA_HASH;
 pub use status::{DisarmReason, FaultFlags, LinkStats, Status, TelemetryConfig, TelemetrySample};
 

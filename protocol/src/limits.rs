@@ -11,7 +11,7 @@
 use postcard_schema::Schema;
 use serde::{Deserialize, Serialize};
 
-use crate::profile::{EndAction, Profile, Segment, MAX_SEGMENTS};
+use crate::profile::{EndAction, Profile, Segment, MAX_SEGMENTS, RAMP_PEAK_RATE_FACTOR};
 
 /// The envelope of kinematics a flight controller accepts.
 ///
@@ -30,9 +30,10 @@ pub struct Limits {
     pub max_mean_rad: f32,
     /// Largest |mean| + amplitude (the mechanical stop), rad.
     pub max_excursion_rad: f32,
-    /// Fastest change of amplitude or mean during a ramp, rad/s.
+    /// Fastest change of amplitude or mean during a ramp (peak of the
+    /// smoothstep), rad/s.
     pub max_angle_slew_rad_s: f32,
-    /// Fastest change of frequency during a ramp, Hz/s.
+    /// Fastest change of frequency during a ramp (peak), Hz/s.
     pub max_frequency_slew_hz_s: f32,
     /// Largest |downstroke fraction - 0.5| (split-cycle asymmetry).
     pub max_split_asymmetry: f32,
@@ -201,8 +202,9 @@ pub enum ProfileError {
         /// [`Limits::max_split_asymmetry`].
         max_asymmetry: f32,
     },
-    /// A ramp changes a quantity faster than the slew limit (a ramp time of
-    /// zero with any change is infinitely fast).
+    /// A ramp changes a quantity faster than the slew limit at its peak
+    /// (`RAMP_PEAK_RATE_FACTOR * |change| / ramp_s`; a ramp time of zero with
+    /// any change is infinitely fast).
     #[error("segment {segment}: the ramp changes the {quantity:?} at {} per s, the limit is {}", slew_display(*quantity, *rate), slew_display(*quantity, *max_rate))]
     SlewTooFast {
         /// Segment index (the segment whose ramp is too short).
@@ -411,7 +413,8 @@ fn check_slew(
         if change == 0.0 {
             continue;
         }
-        let rate = change.abs() / to.ramp_s; // +inf for an instant step
+        // Peak rate of the smoothstep; +inf for an instant step.
+        let rate = RAMP_PEAK_RATE_FACTOR * change.abs() / to.ramp_s;
         if !within(rate, max_rate) {
             report(ProfileError::SlewTooFast {
                 segment,

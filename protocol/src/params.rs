@@ -18,7 +18,8 @@ pub const MAX_PARAMS: usize = 32;
 /// A controller parameter. Only append variants (the index is the wire id).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize, Schema)]
 pub enum ParamId {
-    /// Inertia of wing + transmission about the flapping axis, kg m^2.
+    /// Inertia about the flapping axis: wing + transmission + motor rotor
+    /// times the gear ratio squared, kg m^2.
     WingInertia,
     /// Torsional spring about the flapping axis, N m/rad.
     SpringStiffness,
@@ -44,8 +45,12 @@ pub enum ParamId {
     PhaseGain,
     /// Motor current limit, A.
     CurrentLimit,
-    /// Link silence that triggers the failsafe while running, s.
+    /// Link silence that triggers the failsafe while armed, s.
     LinkTimeout,
+    /// Measured current that disarms at once (over-current fault), A.
+    OverCurrentTrip,
+    /// Bandwidth of the angle/rate observer behind the encoder, Hz.
+    ObserverBandwidth,
 }
 
 /// Description of one parameter.
@@ -84,7 +89,7 @@ const fn info(
 }
 
 /// Every parameter, in wire-id order (`PARAMS[id as usize].id == id`).
-pub const PARAMS: [ParamInfo; 14] = [
+pub const PARAMS: [ParamInfo; 16] = [
     info(
         ParamId::WingInertia,
         "wing_inertia",
@@ -142,8 +147,8 @@ pub const PARAMS: [ParamInfo; 14] = [
         1.0,
         60.0,
     ),
-    info(ParamId::AngleGain, "angle_gain", "1/rad", 2.0, 0.0, 1e3),
-    info(ParamId::RateGain, "rate_gain", "s/rad", 0.01, 0.0, 10.0),
+    info(ParamId::AngleGain, "angle_gain", "1/rad", 10.0, 0.0, 1e3),
+    info(ParamId::RateGain, "rate_gain", "s/rad", 0.03, 0.0, 10.0),
     info(
         ParamId::AmplitudeGain,
         "amplitude_gain",
@@ -155,6 +160,22 @@ pub const PARAMS: [ParamInfo; 14] = [
     info(ParamId::PhaseGain, "phase_gain", "1/s", 1.0, 0.0, 100.0),
     info(ParamId::CurrentLimit, "current_limit", "A", 1.5, 0.0, 50.0),
     info(ParamId::LinkTimeout, "link_timeout", "s", 0.5, 0.05, 60.0),
+    info(
+        ParamId::OverCurrentTrip,
+        "over_current_trip",
+        "A",
+        3.0,
+        0.0,
+        100.0,
+    ),
+    info(
+        ParamId::ObserverBandwidth,
+        "observer_bandwidth",
+        "Hz",
+        200.0,
+        10.0,
+        2000.0,
+    ),
 ];
 
 impl ParamId {

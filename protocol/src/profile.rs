@@ -1,19 +1,27 @@
 //! The flapping kinematics the host uploads: a [`Profile`] of [`Segment`]s.
 //!
 //! The wing angle the flight controller follows within a segment is
-//! `phi(t) = mean + amplitude * sin(phase(t))`, with the phase advancing at
-//! `2 pi frequency` (split between down- and upstroke by
-//! [`Segment::downstroke_fraction`]). At the start of each segment the
-//! frequency, amplitude and mean ramp linearly from the previous segment's
-//! values (from rest, amplitude 0 and mean 0, for the first segment) over
-//! [`Segment::ramp_s`]; the phase stays continuous. This is the harmonic
-//! leading-edge motion of the paper's flapping kinematics (seed paper,
-//! "flapping motion ... harmonic"), with the split-cycle ratio of
-//! direct-drive flapping controllers added as an option.
+//! `phi(t) = mean + amplitude * sin(theta(p))`, where the cycle phase `p`
+//! advances at `frequency` and `theta` sweeps the downstroke (top to bottom)
+//! in [`Segment::downstroke_fraction`] of the period and the upstroke in the
+//! rest (0.5: the plain sinusoid). At the start of each segment the frequency,
+//! amplitude, mean and split cycle move from the previous segment's values
+//! (from rest, amplitude 0 and mean 0, for the first segment) to the new ones
+//! over [`Segment::ramp_s`] along a cubic smoothstep `3x^2 - 2x^3`, so neither
+//! the angle nor its rate jumps at a segment change; the phase stays
+//! continuous. A smoothstep's peak rate is [`RAMP_PEAK_RATE_FACTOR`] times the
+//! average change `delta / ramp_s`; validation checks that peak against the
+//! slew limits. This is the harmonic leading-edge motion of the paper's
+//! flapping kinematics (seed paper, "flapping motion ... harmonic"), with the
+//! split-cycle ratio of direct-drive flapping controllers added as an option.
 
 use heapless::Vec;
 use postcard_schema::Schema;
 use serde::{Deserialize, Serialize};
+
+/// Peak rate of the cubic smoothstep ramp relative to its average rate
+/// (`d/dx (3x^2 - 2x^3)` is 1.5 at `x = 1/2`).
+pub const RAMP_PEAK_RATE_FACTOR: f32 = 1.5;
 
 /// Maximum number of segments in one [`Profile`].
 ///
@@ -34,8 +42,8 @@ pub struct Segment {
     pub mean_rad: f32,
     /// Time the segment lasts, including its ramp, s.
     pub duration_s: f32,
-    /// Time over which frequency, amplitude and mean move linearly from the
-    /// previous segment's values to this segment's, s.
+    /// Time over which frequency, amplitude, mean and split cycle move
+    /// (smoothstep) from the previous segment's values to this segment's, s.
     pub ramp_s: f32,
     /// Fraction of the period spent on the downstroke (split cycle); 0.5 is
     /// the symmetric sinusoid.

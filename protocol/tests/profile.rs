@@ -164,15 +164,15 @@ fn each_field_error_is_named() {
             },
         ),
         (
-            // 30 deg in 0.25 s = 120 deg/s > 60 deg/s.
+            // Smoothstep peak: 1.5 * 30 deg / 0.5 s = 90 deg/s > 60 deg/s.
             Segment {
-                ramp_s: 0.25,
+                ramp_s: 0.5,
                 ..cruise()
             },
             ProfileError::SlewTooFast {
                 segment: 0,
                 quantity: SlewQuantity::Amplitude,
-                rate: 30.0 * DEG / 0.25,
+                rate: 1.5 * 30.0 * DEG / 0.5,
                 max_rate: L.max_angle_slew_rad_s,
             },
         ),
@@ -209,7 +209,8 @@ fn instant_step_is_infinitely_fast() {
 
 #[test]
 fn slew_between_segments_and_on_repeat() {
-    // 11 -> 16 Hz in 0.25 s is 20 Hz/s > 10 Hz/s.
+    // Peak rates of the smoothstep (1.5 x average), worked by hand.
+    // 11 -> 16 Hz in 0.25 s: 1.5 * 5 / 0.25 = 30 Hz/s > 10 Hz/s.
     let fast = Segment {
         frequency_hz: 16.0,
         ramp_s: 0.25,
@@ -221,52 +222,40 @@ fn slew_between_segments_and_on_repeat() {
         Err(ProfileError::SlewTooFast {
             segment: 1,
             quantity: SlewQuantity::Frequency,
-            rate: 20.0,
+            rate: 30.0,
             max_rate: 10.0
         })
     );
-    // Slow enough forwards. With Repeat the wrap-around 16 Hz -> 11 Hz uses
-    // segment 0's ramp: 5 Hz / 0.6 s = 8.3 Hz/s, within 10 Hz/s.
-    let slow = Segment {
-        frequency_hz: 16.0,
-        ramp_s: 1.0,
+    // 11 -> 18 Hz in 1.5 s: 7 Hz/s, fine forwards; 30 deg in 1 s: 45 deg/s.
+    let second = Segment {
+        frequency_hz: 18.0,
+        ramp_s: 1.5,
         ..cruise()
     };
-    let first = Segment {
-        ramp_s: 0.6,
-        ..cruise()
-    }; // 30 deg / 0.6 s = 50 deg/s
-    let hold = Profile::from_segments(&[first, slow], EndAction::Hold).unwrap();
+    let hold = Profile::from_segments(&[cruise(), second], EndAction::Hold).unwrap();
     assert_eq!(hold.validate(&L), Ok(()));
+    // With Repeat the wrap-around 18 -> 11 Hz uses segment 0's 1 s ramp:
+    // 1.5 * 7 / 1 = 10.5 Hz/s > 10 Hz/s. Only the wrap-around is too fast.
     let repeat = Profile {
         on_end: EndAction::Repeat,
         ..hold
     };
-    assert_eq!(repeat.validate(&L), Ok(()));
-    // 17 Hz -> 11 Hz in 0.55 s = 10.9 Hz/s: only the wrap-around is too fast.
-    let repeat_fast = Profile::from_segments(
-        &[
-            Segment {
-                ramp_s: 0.55,
-                ..cruise()
-            },
-            Segment {
-                frequency_hz: 17.0,
-                ..slow
-            },
-        ],
-        EndAction::Repeat,
-    )
-    .unwrap();
     assert_eq!(
-        repeat_fast.validate(&L),
+        repeat.validate(&L),
         Err(ProfileError::SlewTooFast {
             segment: 0,
             quantity: SlewQuantity::Frequency,
-            rate: 6.0 / 0.55,
+            rate: 10.5,
             max_rate: 10.0
         })
     );
+    // 17 Hz wraps at 1.5 * 6 / 1 = 9 Hz/s: valid.
+    let slower = Segment {
+        frequency_hz: 17.0,
+        ..second
+    };
+    let ok = Profile::from_segments(&[cruise(), slower], EndAction::Repeat).unwrap();
+    assert_eq!(ok.validate(&L), Ok(()));
 }
 
 #[test]

@@ -13,6 +13,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod reference;
 pub mod session;
 
 /// Firmware name and version reported in the handshake.
