@@ -13,6 +13,9 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod controller;
+pub mod estimator;
+pub mod params;
 pub mod reference;
 pub mod session;
 

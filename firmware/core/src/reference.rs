@@ -187,7 +187,8 @@ struct Ramp {
     from: Kinematics,
     to: Kinematics,
     duration: f32,
-    elapsed: f32,
+    /// f64: an f32 clock stops advancing by 100 us steps after ~2000 s.
+    elapsed: f64,
 }
 
 impl Ramp {
@@ -202,10 +203,10 @@ impl Ramp {
 
     /// Value, rate and acceleration now.
     fn sample(&self) -> (Kinematics, Kinematics, Kinematics) {
-        if self.duration <= 0.0 || self.elapsed >= self.duration {
+        if self.done() {
             return (self.to, Kinematics::ZERO, Kinematics::ZERO);
         }
-        let x = self.elapsed / self.duration;
+        let x = (self.elapsed / f64::from(self.duration)) as f32;
         let delta = self.to.sub(&self.from);
         let w = x * x * (3.0 - 2.0 * x);
         let dw = 6.0 * x * (1.0 - x) / self.duration;
@@ -218,7 +219,7 @@ impl Ramp {
     }
 
     fn done(&self) -> bool {
-        self.elapsed >= self.duration
+        self.duration <= 0.0 || self.elapsed >= f64::from(self.duration)
     }
 }
 
@@ -242,8 +243,8 @@ pub struct ReferenceGenerator {
     holding: bool,
     mode: Mode,
     ramp: Ramp,
-    /// Time spent in the current segment, s.
-    in_segment: f32,
+    /// Time spent in the current segment, s (f64, as [`Ramp::elapsed`]).
+    in_segment: f64,
     phase: f32,
 }
 
@@ -383,12 +384,13 @@ impl ReferenceGenerator {
         }
         let (now, _, _) = self.ramp.sample();
         self.phase = wrap(self.phase + now.frequency_hz * dt);
-        self.ramp.elapsed += dt;
-        self.in_segment += dt;
+        self.ramp.elapsed += f64::from(dt);
+        self.in_segment += f64::from(dt);
         match self.mode {
             Mode::Stopping if self.ramp.done() => self.halt(),
             Mode::Segment(i)
-                if !self.holding && self.in_segment >= self.profile.segments[i].duration_s =>
+                if !self.holding
+                    && self.in_segment >= f64::from(self.profile.segments[i].duration_s) =>
             {
                 let (now, _, _) = self.ramp.sample();
                 let next = i + 1;
