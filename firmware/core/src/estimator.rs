@@ -233,7 +233,7 @@ mod tests {
     #[test]
     fn observer_tracks_a_quantized_sinusoid() {
         // 11 Hz, 30 deg, read through a 4096-count encoder at 10 kHz.
-        let (f, a, dt) = (11.0f32, 0.5236f32, 1e-4f32);
+        let (f, a, dt) = (11.0f32, core::f32::consts::FRAC_PI_6, 1e-4f32); // 30 deg
         let count = 2.0 * PI / 4096.0;
         let w = 2.0 * PI * f;
         let mut obs = RateObserver::default();
