@@ -15,9 +15,12 @@
 
 pub mod controller;
 pub mod estimator;
+pub mod flight;
+pub mod monitor;
 pub mod params;
 pub mod reference;
 pub mod session;
+pub mod storage;
 
 /// Firmware name and version reported in the handshake.
 pub const FIRMWARE_NAME: &str = concat!("fwav-fc ", env!("CARGO_PKG_VERSION"));
