@@ -4,6 +4,7 @@
 
 use fwav::profile_file::ProfileFile;
 use fwav_e2e::DeviceEnd;
+use fwav_fc_core::flight::FlightController;
 use fwav_protocol::frame::encode_frame_vec;
 use fwav_protocol::*;
 
@@ -15,17 +16,17 @@ fn initial_design() -> ProfileFile {
     .expect("the shipped example profile loads")
 }
 
-/// A stand-in controller: validates uploads against the reference limits, as
-/// the firmware will, and acks.
-fn controller(seq: u16, command: &Command) -> DeviceMessage {
-    let reply = match command {
-        Command::UploadProfile(p) => match p.validate(&Limits::REFERENCE_FWAV) {
-            Ok(()) => Reply::Ack,
-            Err(e) => Reply::Nack(NackReason::InvalidProfile(e)),
-        },
-        _ => Reply::Nack(NackReason::Unsupported),
-    };
-    DeviceMessage::Response(Response { seq, reply })
+fn frames(requests: &[(u16, Command)]) -> Vec<u8> {
+    requests
+        .iter()
+        .flat_map(|(seq, command)| {
+            encode_frame_vec(&Request {
+                seq: *seq,
+                command: command.clone(),
+            })
+            .unwrap()
+        })
+        .collect()
 }
 
 fn host_receive(decoder: &mut FrameDecoder, bytes: &[u8]) -> Vec<DeviceMessage> {
@@ -35,64 +36,64 @@ fn host_receive(decoder: &mut FrameDecoder, bytes: &[u8]) -> Vec<DeviceMessage> 
         .collect()
 }
 
+fn reply(message: &DeviceMessage) -> (u16, Reply) {
+    match message {
+        DeviceMessage::Response(Response { seq, reply }) => (*seq, reply.clone()),
+        other => panic!("expected a response, got {other:?}"),
+    }
+}
+
 #[test]
-fn profile_file_reaches_the_flight_controller_core_through_noise() {
+fn profile_file_reaches_the_flight_controller_through_noise() {
     let file = initial_design();
     let mut device = DeviceEnd::default();
     let mut host = FrameDecoder::new();
 
     // Line noise before the session, with zeros and a half frame in it.
     let mut wire = vec![0x13, 0x00, 0xff, 0x42, 0x00, 0x07];
-    let handshake = Request {
-        seq: 1,
-        command: Command::Handshake(Hello::THIS),
-    };
-    wire.extend(encode_frame_vec(&handshake).unwrap());
-    let upload = Request {
-        seq: 2,
-        command: Command::UploadProfile(file.profile.clone()),
-    };
-    let upload_frame = encode_frame_vec(&upload).unwrap();
-    wire.extend(&upload_frame[..upload_frame.len() / 2]); // cut by a glitch
-    wire.extend(&upload_frame); // the host's retry with the same seq
+    wire.extend(frames(&[(1, Command::Handshake(Hello::THIS))]));
+    let upload = frames(&[(2, Command::UploadProfile(file.profile.clone()))]);
+    wire.extend(&upload[..upload.len() / 2]); // cut by a glitch
+    wire.extend(&upload); // the host's retry with the same seq
+    wire.extend(frames(&[
+        (3, Command::ReadProfile),
+        (4, Command::SaveProfile),
+    ]));
 
     // The UART delivers whatever chunk sizes it likes.
     let mut replies = Vec::new();
     for chunk in wire.chunks(7) {
-        let back = device.exchange(chunk, controller);
+        let back = device.exchange(chunk, 1_000);
         replies.extend(host_receive(&mut host, &back));
     }
 
     match &replies[0] {
         DeviceMessage::Hello(h) => {
             assert!(h.accepted);
-            assert_eq!(h.seq, 1);
-            assert_eq!(h.hello, Hello::THIS);
+            assert_eq!((h.seq, h.hello), (1, Hello::THIS));
             assert!(h.firmware.starts_with("fwav-fc "));
         }
         other => panic!("expected the handshake answer, got {other:?}"),
     }
+    assert_eq!(reply(&replies[1]), (2, Reply::Ack));
+    // Read back: exactly the file's profile, in radians.
     assert_eq!(
-        replies[1],
-        DeviceMessage::Response(Response {
-            seq: 2,
-            reply: Reply::Ack
-        })
+        reply(&replies[2]),
+        (3, Reply::Profile(Some(file.profile.clone())))
     );
-    assert_eq!(replies.len(), 2);
-
-    // The controller saw exactly the file's profile, in radians.
-    assert_eq!(
-        device.forwarded,
-        vec![(2, Command::UploadProfile(file.profile.clone()))]
-    );
+    assert_eq!(reply(&replies[3]), (4, Reply::Ack));
+    assert_eq!(replies.len(), 4);
     let seg = file.profile.segments[0];
     assert_eq!(seg.frequency_hz, 11.0);
     assert!((seg.amplitude_rad - 30f32.to_radians()).abs() < 1e-6);
 
+    // What was saved restores on a rebooted controller.
+    let mut rebooted = FlightController::new(Limits::REFERENCE_FWAV);
+    assert_eq!(rebooted.restore(&device.flash), Ok(()));
+
     // The noise and the cut frame were dropped and counted, nothing else.
     let stats = device.link_stats();
-    assert_eq!(stats.frames_ok, 2);
+    assert_eq!(stats.frames_ok, 4); // handshake, upload (the retry), read-back, save
     assert!(stats.dropped() >= 2, "{stats:?}");
     assert_eq!(host.stats().dropped(), 0);
 }
@@ -105,27 +106,13 @@ fn a_host_of_another_version_cannot_drive_the_motor() {
         protocol_version: PROTOCOL_VERSION + 1,
         schema_hash: 0xdead_beef,
     };
-    let mut wire = encode_frame_vec(&Request {
-        seq: 1,
-        command: Command::Handshake(stranger),
-    })
-    .unwrap();
-    wire.extend(
-        encode_frame_vec(&Request {
-            seq: 2,
-            command: Command::Arm,
-        })
-        .unwrap(),
-    );
-    wire.extend(
-        encode_frame_vec(&Request {
-            seq: 3,
-            command: Command::Start,
-        })
-        .unwrap(),
-    );
+    let wire = frames(&[
+        (1, Command::Handshake(stranger)),
+        (2, Command::Arm),
+        (3, Command::Start),
+    ]);
 
-    let replies = host_receive(&mut host, &device.exchange(&wire, controller));
+    let replies = host_receive(&mut host, &device.exchange(&wire, 1_000));
     let DeviceMessage::Hello(h) = &replies[0] else {
         panic!("{:?}", replies[0])
     };
@@ -139,22 +126,15 @@ fn a_host_of_another_version_cannot_drive_the_motor() {
     .to_string();
     assert!(
         mismatch.contains(&format!("{:016x}", SCHEMA_HASH))
-            && mismatch.contains("00000000deadbeef"),
-        "{mismatch}"
+            && mismatch.contains("00000000deadbeef")
     );
     for (i, seq) in [2u16, 3].into_iter().enumerate() {
         assert_eq!(
-            replies[i + 1],
-            DeviceMessage::Response(Response {
-                seq,
-                reply: Reply::Nack(NackReason::HandshakeRequired)
-            })
+            reply(&replies[i + 1]),
+            (seq, Reply::Nack(NackReason::HandshakeRequired))
         );
     }
-    assert!(
-        device.forwarded.is_empty(),
-        "nothing reached the controller"
-    );
+    assert!(!device.fc.is_armed(), "nothing reached the controller");
 }
 
 #[test]
@@ -163,24 +143,13 @@ fn an_invalid_profile_is_refused_with_the_reason() {
     let mut host = FrameDecoder::new();
     let mut profile = initial_design().profile;
     profile.segments[0].amplitude_rad = 50f32.to_radians();
-    let mut wire = encode_frame_vec(&Request {
-        seq: 1,
-        command: Command::Handshake(Hello::THIS),
-    })
-    .unwrap();
-    wire.extend(
-        encode_frame_vec(&Request {
-            seq: 9,
-            command: Command::UploadProfile(profile),
-        })
-        .unwrap(),
-    );
-    let replies = host_receive(&mut host, &device.exchange(&wire, controller));
-    match &replies[1] {
-        DeviceMessage::Response(Response {
-            seq: 9,
-            reply: Reply::Nack(NackReason::InvalidProfile(e)),
-        }) => {
+    let wire = frames(&[
+        (1, Command::Handshake(Hello::THIS)),
+        (9, Command::UploadProfile(profile)),
+    ]);
+    let replies = host_receive(&mut host, &device.exchange(&wire, 1_000));
+    match reply(&replies[1]) {
+        (9, Reply::Nack(NackReason::InvalidProfile(e))) => {
             assert!(matches!(
                 e,
                 ProfileError::AmplitudeOutOfRange { segment: 0, .. }
