@@ -6,8 +6,10 @@
 //! controller uses them for feedforward. The defaults are for the fwav
 //! reference vehicle (~15 cm span, ~1 g wing, resonance near 11 Hz):
 //! wing inertia ~ m L^2 / 3 = 1e-3 * 0.15^2 / 3 = 7.5e-6 kg m^2, spring
-//! k = J (2 pi 11)^2 = 3.6e-2 N m/rad, flat-plate quadratic damping
-//! 0.5 rho C_D c R^4 / 4 with C_D = 3 (~1.7e-5 N m s^2).
+//! k = J (2 pi 11)^2 = 3.6e-2 N m/rad, blade-element quadratic damping
+//! 0.5 rho C_D int c(r) r^3 dr = 1.05e-5 N m s^2 (rho 1.225 kg/m^3,
+//! C_D 3.0, 0.15 m span, chord 0.075 m tapering to half at the tip): the
+//! values of hil-sim's default plant (`hil-sim/plant.toml`).
 
 use postcard_schema::Schema;
 use serde::{Deserialize, Serialize};
@@ -118,7 +120,7 @@ pub const PARAMS: [ParamInfo; 16] = [
         ParamId::AeroDamping,
         "aero_damping",
         "N m s^2/rad^2",
-        1.7e-5,
+        1.05e-5,
         0.0,
         1.0,
     ),
@@ -159,7 +161,7 @@ pub const PARAMS: [ParamInfo; 16] = [
     ),
     info(ParamId::PhaseGain, "phase_gain", "1/s", 1.0, 0.0, 100.0),
     info(ParamId::CurrentLimit, "current_limit", "A", 1.5, 0.0, 50.0),
-    info(ParamId::LinkTimeout, "link_timeout", "s", 0.5, 0.05, 60.0),
+    info(ParamId::LinkTimeout, "link_timeout", "s", 0.3, 0.05, 60.0),
     info(
         ParamId::OverCurrentTrip,
         "over_current_trip",

@@ -1,10 +1,12 @@
-//! Host profile file → frames → flight-controller core → frames → host, over
-//! a noisy in-process byte link. (The pseudo-terminal version against hil-sim
-//! belongs to the link-commands issue.)
+//! Host profile file → frames → flight-controller core (in hil-sim's virtual
+//! flight controller) → frames → host, over a noisy in-process byte link.
+//! (The pseudo-terminal version with the `fwav` link commands belongs to the
+//! link-commands issue.)
 
 use fwav::profile_file::ProfileFile;
-use fwav_e2e::DeviceEnd;
 use fwav_fc_core::flight::FlightController;
+use fwav_hil_sim::config::PlantParams;
+use fwav_hil_sim::sim::Simulator;
 use fwav_protocol::frame::encode_frame_vec;
 use fwav_protocol::*;
 
@@ -46,7 +48,7 @@ fn reply(message: &DeviceMessage) -> (u16, Reply) {
 #[test]
 fn profile_file_reaches_the_flight_controller_through_noise() {
     let file = initial_design();
-    let mut device = DeviceEnd::default();
+    let mut device = Simulator::new(&PlantParams::default());
     let mut host = FrameDecoder::new();
 
     // Line noise before the session, with zeros and a half frame in it.
@@ -63,7 +65,8 @@ fn profile_file_reaches_the_flight_controller_through_noise() {
     // The UART delivers whatever chunk sizes it likes.
     let mut replies = Vec::new();
     for chunk in wire.chunks(7) {
-        let back = device.exchange(chunk, 1_000);
+        device.receive(chunk);
+        let back = device.take_output();
         replies.extend(host_receive(&mut host, &back));
     }
 
@@ -100,7 +103,7 @@ fn profile_file_reaches_the_flight_controller_through_noise() {
 
 #[test]
 fn a_host_of_another_version_cannot_drive_the_motor() {
-    let mut device = DeviceEnd::default();
+    let mut device = Simulator::new(&PlantParams::default());
     let mut host = FrameDecoder::new();
     let stranger = Hello {
         protocol_version: PROTOCOL_VERSION + 1,
@@ -112,7 +115,8 @@ fn a_host_of_another_version_cannot_drive_the_motor() {
         (3, Command::Start),
     ]);
 
-    let replies = host_receive(&mut host, &device.exchange(&wire, 1_000));
+    device.receive(&wire);
+    let replies = host_receive(&mut host, &device.take_output());
     let DeviceMessage::Hello(h) = &replies[0] else {
         panic!("{:?}", replies[0])
     };
@@ -139,7 +143,7 @@ fn a_host_of_another_version_cannot_drive_the_motor() {
 
 #[test]
 fn an_invalid_profile_is_refused_with_the_reason() {
-    let mut device = DeviceEnd::default();
+    let mut device = Simulator::new(&PlantParams::default());
     let mut host = FrameDecoder::new();
     let mut profile = initial_design().profile;
     profile.segments[0].amplitude_rad = 50f32.to_radians();
@@ -147,7 +151,8 @@ fn an_invalid_profile_is_refused_with_the_reason() {
         (1, Command::Handshake(Hello::THIS)),
         (9, Command::UploadProfile(profile)),
     ]);
-    let replies = host_receive(&mut host, &device.exchange(&wire, 1_000));
+    device.receive(&wire);
+    let replies = host_receive(&mut host, &device.take_output());
     match reply(&replies[1]) {
         (9, Reply::Nack(NackReason::InvalidProfile(e))) => {
             assert!(matches!(

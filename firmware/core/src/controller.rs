@@ -128,11 +128,12 @@ impl FlappingController {
         let cycle_done = target.phase < self.last_phase;
         self.last_phase = target.phase;
         let (theta, _) = Waveform::theta(target.phase, target.kin.downstroke_fraction);
-        let reference = target.evaluate(0.0, 1.0).angle;
+        let sin_cos = libm::sincosf(theta);
         let mean = target.kin.mean_rad;
+        let reference = mean + target.kin.amplitude_rad * sin_cos.0;
         let stroke = self
             .stroke
-            .update(m.angle_rad, reference, mean, theta, dt, cycle_done);
+            .update(m.angle_rad, reference, mean, sin_cos, dt, cycle_done);
         if let Some(s) = stroke {
             self.last_stroke = Some(s);
             if correct && s.reference_amplitude > MIN_CORRECTED_AMPLITUDE {

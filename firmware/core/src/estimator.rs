@@ -114,14 +114,15 @@ impl StrokeEstimator {
         *self = Self::new();
     }
 
-    /// Adds one step; at a cycle boundary (`cycle_done`) returns the estimate
+    /// Adds one step, with `sin_cos` = (sin, cos) of the reference's warped
+    /// phase theta; at a cycle boundary (`cycle_done`) returns the estimate
     /// of the cycle that just ended.
     pub fn update(
         &mut self,
         measured: f32,
         reference: f32,
         mean: f32,
-        theta: f32,
+        sin_cos: (f32, f32),
         dt: f32,
         cycle_done: bool,
     ) -> Option<StrokeEstimate> {
@@ -145,7 +146,7 @@ impl StrokeEstimator {
                 ..Self::new()
             };
         }
-        let (s, c) = (libm::sinf(theta), libm::cosf(theta));
+        let (s, c) = sin_cos;
         self.sin_meas += (measured - mean) * s * dt;
         self.cos_meas += (measured - mean) * c * dt;
         self.sin_ref += (reference - mean) * s * dt;
@@ -266,7 +267,9 @@ mod tests {
                 let measured = 0.1 + 0.36 * libm::sinf(theta - 0.2);
                 let next = crate::reference::wrap(phase + f * dt);
                 let done = next < phase;
-                if let Some(e) = est.update(measured, reference, 0.1, theta, dt, done) {
+                if let Some(e) =
+                    est.update(measured, reference, 0.1, libm::sincosf(theta), dt, done)
+                {
                     last = Some(e);
                 }
                 phase = next;

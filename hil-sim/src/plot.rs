@@ -1,0 +1,111 @@
+//! Pictures of a run: target and measured angle, motor current and duty
+//! over the last second, as a PNG.
+
+use std::path::Path;
+
+use plotters::prelude::*;
+
+use crate::metrics::TracePoint;
+
+/// The picture could not be drawn (font, file or backend error).
+#[derive(Debug, thiserror::Error)]
+#[error("{0}")]
+pub struct PlotError(String);
+
+/// Draws the last second of `trace` to `png`.
+pub fn draw(trace: &[TracePoint], png: &Path) -> Result<(), PlotError> {
+    draw_panels(trace, png).map_err(|e| PlotError(e.to_string()))
+}
+
+fn draw_panels(trace: &[TracePoint], png: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    let end = trace.last().map_or(0.0, |p| p.sample.time_s);
+    let shown: Vec<&TracePoint> = trace
+        .iter()
+        .filter(|p| p.sample.time_s >= end - 1.0)
+        .collect();
+    let (t0, t1) = (
+        shown.first().map_or(0.0, |p| p.sample.time_s),
+        end.max(1e-3),
+    );
+    let root = BitMapBackend::new(png, (1200, 900)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let panels = root.split_evenly((3, 1));
+
+    let max_angle = shown
+        .iter()
+        .map(|p| p.sample.angle_rad.abs().max(p.target_rad.abs()))
+        .fold(0.1, f64::max)
+        .to_degrees()
+        * 1.1;
+    let mut chart = ChartBuilder::on(&panels[0])
+        .caption("flapping angle", ("sans-serif", 20))
+        .margin(8)
+        .x_label_area_size(30)
+        .y_label_area_size(60)
+        .build_cartesian_2d(t0..t1, -max_angle..max_angle)?;
+    chart
+        .configure_mesh()
+        .x_desc("time (s)")
+        .y_desc("angle (deg)")
+        .draw()?;
+    chart
+        .draw_series(LineSeries::new(
+            shown
+                .iter()
+                .map(|p| (p.sample.time_s, p.target_rad.to_degrees())),
+            &BLUE,
+        ))?
+        .label("target")
+        .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], BLUE));
+    chart
+        .draw_series(LineSeries::new(
+            shown
+                .iter()
+                .map(|p| (p.sample.time_s, p.sample.angle_rad.to_degrees())),
+            &RED,
+        ))?
+        .label("wing")
+        .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], RED));
+    chart.configure_series_labels().border_style(BLACK).draw()?;
+
+    let max_i = shown
+        .iter()
+        .map(|p| p.sample.current_a.abs())
+        .fold(0.1, f64::max)
+        * 1.1;
+    let mut chart = ChartBuilder::on(&panels[1])
+        .caption("motor current", ("sans-serif", 20))
+        .margin(8)
+        .x_label_area_size(30)
+        .y_label_area_size(60)
+        .build_cartesian_2d(t0..t1, -max_i..max_i)?;
+    chart
+        .configure_mesh()
+        .x_desc("time (s)")
+        .y_desc("current (A)")
+        .draw()?;
+    chart.draw_series(LineSeries::new(
+        shown.iter().map(|p| (p.sample.time_s, p.sample.current_a)),
+        &MAGENTA,
+    ))?;
+
+    let mut chart = ChartBuilder::on(&panels[2])
+        .caption("H-bridge duty", ("sans-serif", 20))
+        .margin(8)
+        .x_label_area_size(30)
+        .y_label_area_size(60)
+        .build_cartesian_2d(t0..t1, -1.05f64..1.05)?;
+    chart
+        .configure_mesh()
+        .x_desc("time (s)")
+        .y_desc("duty")
+        .draw()?;
+    chart.draw_series(LineSeries::new(
+        shown
+            .iter()
+            .map(|p| (p.sample.time_s, f64::from(p.sample.duty))),
+        &GREEN,
+    ))?;
+    root.present()?;
+    Ok(())
+}

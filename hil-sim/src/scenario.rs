@@ -1,0 +1,254 @@
+//! Scripted runs: a host that handshakes, uploads a profile, arms, starts
+//! and keeps a heartbeat, over the framed link, while faults are injected at
+//! given times; the trace goes to [`crate::metrics`].
+//!
+//! ```toml
+//! duration_s = 4.0
+//! on_end = "hold"
+//! [[segments]]
+//! frequency_hz = 11.0
+//! amplitude_deg = 30.0
+//! duration_s = 100.0
+//! ramp_s = 1.0
+//! [[faults]]
+//! at_s = 3.0
+//! kind = "link_silence"     # or encoder_loss, stall, supply_drop (with battery_v)
+//! ```
+
+use fwav_fc_core::reference::ReferenceGenerator;
+use fwav_protocol::document::{ProfileDocument, SegmentDocument, FORMAT, FORMAT_VERSION};
+use fwav_protocol::frame::encode_frame_vec;
+use fwav_protocol::{
+    Command, DeviceMessage, EndAction, FrameDecoder, Hello, Limits, Profile, Reply, Request,
+    Response,
+};
+use serde::{Deserialize, Serialize};
+
+use crate::config::PlantParams;
+use crate::metrics::{Report, TracePoint};
+use crate::sim::{InjectedFaults, Simulator};
+
+/// A fault injected at a time.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FaultEvent {
+    /// When, s from the start of the run.
+    pub at_s: f64,
+    /// What.
+    pub kind: FaultKind,
+    /// New battery voltage for `supply_drop`, V.
+    #[serde(default)]
+    pub battery_v: Option<f64>,
+}
+
+/// Kinds of injected faults.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FaultKind {
+    /// The host stops sending (no heartbeat).
+    LinkSilence,
+    /// The encoder stops counting.
+    EncoderLoss,
+    /// The rotor locks.
+    Stall,
+    /// The battery voltage drops to `battery_v`.
+    SupplyDrop,
+}
+
+/// A scripted run.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scenario {
+    /// Simulated time, s.
+    pub duration_s: f64,
+    /// Host heartbeat period, s.
+    #[serde(default = "default_heartbeat")]
+    pub heartbeat_s: f64,
+    /// Steady-state metrics over this many final reference cycles.
+    #[serde(default = "default_cycles")]
+    pub measure_cycles: u32,
+    /// Profile end action.
+    #[serde(default)]
+    pub on_end: EndAction,
+    /// The profile's segments (same keys as the JSON profile file).
+    pub segments: Vec<SegmentDocument>,
+    /// Injected faults.
+    #[serde(default)]
+    pub faults: Vec<FaultEvent>,
+}
+
+fn default_heartbeat() -> f64 {
+    0.1
+}
+fn default_cycles() -> u32 {
+    10
+}
+
+/// Why a scenario could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum ScenarioError {
+    /// Not TOML or unknown keys.
+    #[error("{0}")]
+    Toml(#[from] toml::de::Error),
+    /// The profile is not a valid document.
+    #[error("profile: {0}")]
+    Document(#[from] fwav_protocol::document::DocumentError),
+    /// The simulated device refused a command (its answer, for people).
+    #[error("the flight controller refused {command}: {reply}")]
+    Refused {
+        /// The command.
+        command: &'static str,
+        /// Its answer.
+        reply: String,
+    },
+    /// A bad value.
+    #[error("{0}")]
+    Invalid(String),
+}
+
+impl Scenario {
+    /// Parses a TOML text.
+    pub fn from_toml(text: &str) -> Result<Self, ScenarioError> {
+        let s: Self = toml::from_str(text)?;
+        // Written so that NaN fails.
+        let ok = s.duration_s > 0.0 && s.duration_s < 1e5 && s.heartbeat_s > 0.0;
+        if !ok {
+            return Err(ScenarioError::Invalid(format!(
+                "duration_s = {} and heartbeat_s = {} must be positive",
+                s.duration_s, s.heartbeat_s
+            )));
+        }
+        Ok(s)
+    }
+
+    /// The profile in wire form.
+    pub fn profile(&self) -> Result<Profile, ScenarioError> {
+        let doc = ProfileDocument {
+            format: FORMAT.to_owned(),
+            format_version: FORMAT_VERSION,
+            description: String::new(),
+            on_end: self.on_end,
+            segments: self.segments.clone(),
+        };
+        Ok(doc.to_profile()?)
+    }
+}
+
+/// An in-process host on the simulator's byte link.
+pub struct HostLink {
+    decoder: FrameDecoder,
+    seq: u16,
+}
+
+impl Default for HostLink {
+    fn default() -> Self {
+        Self {
+            decoder: FrameDecoder::new(),
+            seq: 0,
+        }
+    }
+}
+
+impl HostLink {
+    /// Sends one command and returns the device's reply to it.
+    pub fn request(&mut self, sim: &mut Simulator, command: Command) -> Option<Reply> {
+        self.seq = self.seq.wrapping_add(1);
+        let request = Request {
+            seq: self.seq,
+            command,
+        };
+        sim.receive(&encode_frame_vec(&request).ok()?);
+        let bytes = sim.take_output();
+        let seq = self.seq;
+        self.decoder
+            .feed::<DeviceMessage>(&bytes)
+            .filter_map(Result::ok)
+            .find_map(|m| match m {
+                DeviceMessage::Response(Response { seq: s, reply }) if s == seq => Some(reply),
+                DeviceMessage::Hello(h) if h.seq == seq && h.accepted => Some(Reply::Ack),
+                _ => None,
+            })
+    }
+
+    fn expect_ack(
+        &mut self,
+        sim: &mut Simulator,
+        name: &'static str,
+        command: Command,
+    ) -> Result<(), ScenarioError> {
+        match self.request(sim, command) {
+            Some(Reply::Ack) => Ok(()),
+            Some(Reply::Nack(reason)) => Err(ScenarioError::Refused {
+                command: name,
+                reply: reason.to_string(),
+            }),
+            Some(other) => Err(ScenarioError::Refused {
+                command: name,
+                reply: format!("{other:?}"),
+            }),
+            None => Err(ScenarioError::Refused {
+                command: name,
+                reply: "no answer".to_owned(),
+            }),
+        }
+    }
+}
+
+/// Runs `scenario` on a plant; returns the metrics report.
+pub fn run(scenario: &Scenario, plant: &PlantParams) -> Result<Report, ScenarioError> {
+    let (report, _) = run_with_trace(scenario, plant)?;
+    Ok(report)
+}
+
+/// Runs `scenario`; returns the report and the trace (one point per control
+/// period from the start command on).
+pub fn run_with_trace(
+    scenario: &Scenario,
+    plant: &PlantParams,
+) -> Result<(Report, Vec<TracePoint>), ScenarioError> {
+    let profile = scenario.profile()?;
+    let mut sim = Simulator::new(plant);
+    let mut host = HostLink::default();
+    host.expect_ack(&mut sim, "handshake", Command::Handshake(Hello::THIS))?;
+    host.expect_ack(&mut sim, "upload", Command::UploadProfile(profile.clone()))?;
+    host.expect_ack(&mut sim, "arm", Command::Arm)?;
+    host.expect_ack(&mut sim, "start", Command::Start)?;
+    let mut reference = ReferenceGenerator::new();
+    reference.start(&profile, &Limits::REFERENCE_FWAV);
+
+    let dt = plant.control_dt();
+    let steps = (scenario.duration_s / dt).round() as usize;
+    let heartbeat_every = ((scenario.heartbeat_s / dt).round() as usize).max(1);
+    let mut faults = InjectedFaults::default();
+    let mut silent = false;
+    let mut trace = Vec::with_capacity(steps);
+    let start_ledger = sim.plant.ledger;
+    let start_stored = sim.plant.stored_energy();
+    for k in 0..steps {
+        let t = k as f64 * dt;
+        for f in scenario
+            .faults
+            .iter()
+            .filter(|f| f.at_s <= t && f.at_s > t - dt)
+        {
+            match f.kind {
+                FaultKind::LinkSilence => silent = true,
+                FaultKind::EncoderLoss => faults.encoder_lost = true,
+                FaultKind::Stall => faults.stalled = true,
+                FaultKind::SupplyDrop => faults.battery_v = f.battery_v,
+            }
+            sim.set_faults(faults);
+        }
+        if !silent && k % heartbeat_every == 0 && k > 0 {
+            host.request(&mut sim, Command::Ping { nonce: k as u32 });
+        }
+        let target = reference.waveform();
+        let segment = reference.active_segment();
+        let sample = sim.step();
+        reference.advance(dt as f32);
+        trace.push(TracePoint::new(&sample, &target, segment));
+    }
+    sim.take_output();
+    let report = Report::from_trace(scenario, plant, &trace, &sim, &start_ledger, start_stored);
+    Ok((report, trace))
+}

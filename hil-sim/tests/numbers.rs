@@ -1,0 +1,262 @@
+//! The numbers the hil-sim issue asks of the default plant with the
+//! firmware core in the loop. Each run is a scenario through the framed link.
+
+use fwav_hil_sim::config::{PlantParams, PwmModel};
+use fwav_hil_sim::metrics::Report;
+use fwav_hil_sim::scenario::{run, FaultEvent, FaultKind, Scenario};
+use fwav_protocol::document::SegmentDocument;
+use fwav_protocol::EndAction;
+
+fn segment(frequency_hz: f64, amplitude_deg: f64, duration_s: f64, ramp_s: f64) -> SegmentDocument {
+    SegmentDocument {
+        frequency_hz,
+        amplitude_deg,
+        mean_deg: 0.0,
+        duration_s,
+        ramp_s,
+        downstroke_fraction: 0.5,
+    }
+}
+
+/// 11 Hz, +-30 deg, 1 s ramp (the seed paper's initial kinematics).
+fn cruise(duration_s: f64) -> Scenario {
+    Scenario {
+        duration_s,
+        heartbeat_s: 0.1,
+        measure_cycles: 10,
+        on_end: EndAction::Hold,
+        segments: vec![segment(11.0, 30.0, 100.0, 1.0)],
+        faults: vec![],
+    }
+}
+
+fn fly(scenario: &Scenario, plant: &PlantParams) -> Report {
+    run(scenario, plant).expect("the scenario runs")
+}
+
+#[test]
+fn cruise_tracks_amplitude_frequency_and_shape() {
+    // The ramp ends at 1 s (11 cycles); the window is the last 10 cycles of
+    // 3 s, i.e. after more than 10 cycles at the target.
+    let r = fly(&cruise(3.0), &PlantParams::default());
+    println!("{r:#?}");
+    assert_eq!(r.measured_cycles, 10);
+    assert!(
+        r.amplitude_error_pct.abs() < 2.0,
+        "amplitude error {} %",
+        r.amplitude_error_pct
+    );
+    assert!(
+        r.frequency_error_pct.abs() < 0.1,
+        "frequency error {} %",
+        r.frequency_error_pct
+    );
+    assert!(
+        r.rms_tracking_error_pct < 3.0,
+        "RMS tracking error {} %",
+        r.rms_tracking_error_pct
+    );
+    assert!(r.peak_current_a <= r.current_limit_a);
+    assert!(
+        r.energy_balance_residual_pct.abs() < 1.0,
+        "energy residual {} %",
+        r.energy_balance_residual_pct
+    );
+    assert!(r.armed_at_end && r.faults_at_end == "none");
+}
+
+/// Each plant parameter the controller's model uses, 20% off in each
+/// direction (the controller keeps its defaults): amplitude error < 3%.
+#[test]
+fn cruise_with_every_modelled_parameter_20_percent_off() {
+    type Edit = fn(&mut PlantParams, f64);
+    let edits: [(&str, Edit); 8] = [
+        ("inertia", |p, k| {
+            p.wing.inertia_kg_m2 *= k;
+            p.motor.rotor_inertia_kg_m2 *= k;
+        }),
+        ("spring", |p, k| p.transmission.spring_nm_per_rad *= k),
+        ("viscous friction", |p, k| {
+            p.motor.viscous_friction_nms_per_rad *= k
+        }),
+        ("aerodynamic drag", |p, k| p.wing.drag_coefficient *= k),
+        ("torque constant", |p, k| {
+            p.motor.torque_constant_nm_per_a *= k
+        }),
+        ("winding resistance", |p, k| p.motor.resistance_ohm *= k),
+        ("gear ratio", |p, k| p.transmission.gear_ratio *= k),
+        ("battery voltage", |p, k| p.supply.battery_v *= k),
+    ];
+    let mut worst = (0.0f64, "");
+    for (name, edit) in edits {
+        for k in [0.8, 1.2] {
+            let mut plant = PlantParams::default();
+            edit(&mut plant, k);
+            let r = fly(&cruise(3.0), &plant);
+            println!(
+                "{name} x {k}: amplitude {:+.3} %, lag {:+.2} deg",
+                r.amplitude_error_pct, r.phase_lag_deg
+            );
+            assert!(
+                r.amplitude_error_pct.abs() < 3.0,
+                "{name} x {k}: amplitude error {} %",
+                r.amplitude_error_pct
+            );
+            if r.amplitude_error_pct.abs() > worst.0.abs() {
+                worst = (r.amplitude_error_pct, name);
+            }
+        }
+    }
+    println!("worst: {:+.3} % ({})", worst.0, worst.1);
+}
+
+#[test]
+fn segment_change_settles_within_5_cycles_inside_the_current_limit() {
+    let scenario = Scenario {
+        duration_s: 3.5,
+        heartbeat_s: 0.1,
+        measure_cycles: 10,
+        on_end: EndAction::Hold,
+        // 11 -> 14 Hz and 30 -> 20 deg in 0.5 s: peak slews 9 Hz/s and
+        // 30 deg/s, within the reference vehicle's limits.
+        segments: vec![
+            segment(11.0, 30.0, 2.0, 1.0),
+            segment(14.0, 20.0, 100.0, 0.5),
+        ],
+        faults: vec![],
+    };
+    let r = fly(&scenario, &PlantParams::default());
+    println!("{r:#?}");
+    assert_eq!(r.settle_cycles.len(), 1);
+    let cycles = r.settle_cycles[0].expect("settles");
+    assert!(cycles <= 5, "settled after {cycles} cycles");
+    assert!(
+        r.peak_current_a <= r.current_limit_a,
+        "peak {} A",
+        r.peak_current_a
+    );
+    assert!((r.target_frequency_hz - 14.0).abs() < 1e-6);
+    assert!(r.amplitude_error_pct.abs() < 2.0);
+}
+
+#[test]
+fn link_silence_brings_the_wing_to_rest_within_half_a_second() {
+    // Worst case: the silence starts just after a heartbeat (pings go out
+    // every 0.1 s, the last one at 2.4 s), so the device waits the whole
+    // link timeout (0.3 s) and then ramps down within a wingbeat.
+    let mut s = cruise(3.5);
+    s.faults.push(FaultEvent {
+        at_s: 2.4001,
+        kind: FaultKind::LinkSilence,
+        battery_v: None,
+    });
+    let r = fly(&s, &PlantParams::default());
+    let t = r.time_to_rest_after_link_silence_s.expect("comes to rest");
+    println!("at rest {t:.3} s after the link went silent");
+    assert!(t < 0.5, "{t} s");
+    assert!(!r.armed_at_end);
+    assert!(r.faults_at_end.contains("link-loss"));
+}
+
+#[test]
+fn encoder_loss_disarms_within_50_ms() {
+    let mut s = cruise(2.5);
+    s.faults.push(FaultEvent {
+        at_s: 2.0,
+        kind: FaultKind::EncoderLoss,
+        battery_v: None,
+    });
+    let r = fly(&s, &PlantParams::default());
+    let t = r.time_to_disarm_after_fault_s.expect("disarms");
+    println!("disarmed {:.1} ms after the encoder stopped", t * 1e3);
+    assert!(t < 0.05, "{t} s");
+    assert!(r.faults_at_end.contains("encoder"));
+}
+
+#[test]
+fn a_stalled_motor_is_caught_by_the_encoder_check() {
+    let mut s = cruise(2.5);
+    s.faults.push(FaultEvent {
+        at_s: 2.0,
+        kind: FaultKind::Stall,
+        battery_v: None,
+    });
+    let r = fly(&s, &PlantParams::default());
+    let t = r.time_to_disarm_after_fault_s.expect("disarms");
+    assert!(t < 0.05, "{t} s");
+}
+
+#[test]
+fn a_supply_drop_is_absorbed_by_the_controller() {
+    let mut s = cruise(4.0);
+    s.faults.push(FaultEvent {
+        at_s: 2.0,
+        kind: FaultKind::SupplyDrop,
+        battery_v: Some(6.0),
+    });
+    // Steady-state metrics stop at the first fault; measure the end instead.
+    let r = fly(&s, &PlantParams::default());
+    assert!(r.armed_at_end, "{}", r.faults_at_end);
+    let mut after = cruise(4.0);
+    after.faults.clear();
+    let mut plant = PlantParams::default();
+    plant.supply.battery_v = 6.0;
+    let r = fly(&after, &plant);
+    assert!(
+        r.amplitude_error_pct.abs() < 2.0,
+        "{} %",
+        r.amplitude_error_pct
+    );
+}
+
+/// The energy ledger closes with the switching bridge model too (each PWM
+/// period resolved: 100 substeps of 1 us per 100 us control period).
+#[test]
+fn energy_balances_with_switching_pwm() {
+    let mut plant = PlantParams::default();
+    plant.supply.pwm = PwmModel::Switching;
+    plant.simulation.substeps = 100;
+    let r = fly(&cruise(0.6), &plant);
+    assert!(
+        r.energy_balance_residual_pct.abs() < 1.0,
+        "{} %",
+        r.energy_balance_residual_pct
+    );
+}
+
+#[test]
+fn shipped_files_parse() {
+    let plant = PlantParams::from_toml(fwav_hil_sim::config::DEFAULT_PLANT_TOML).unwrap();
+    // The controller's default model is this plant (fwav-protocol ParamId).
+    let sim = fwav_hil_sim::sim::Simulator::new(&plant);
+    let inertia = sim.plant.inertia();
+    assert!((inertia - 7.5e-6).abs() < 1e-9, "{inertia}");
+    assert!(
+        (sim.plant.aero_damping() - 1.0465e-5).abs() < 1e-8,
+        "{}",
+        sim.plant.aero_damping()
+    );
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenarios/cruise-11hz.toml"
+    ))
+    .unwrap();
+    Scenario::from_toml(&text).unwrap();
+}
+
+#[test]
+fn bad_parameters_name_the_field() {
+    let text = fwav_hil_sim::config::DEFAULT_PLANT_TOML
+        .replace("resistance_ohm = 5.0", "resistance_ohm = -5.0");
+    let e = PlantParams::from_toml(&text).unwrap_err().to_string();
+    assert!(
+        e.contains("motor.resistance_ohm") && e.contains("-5"),
+        "{e}"
+    );
+    let text = fwav_hil_sim::config::DEFAULT_PLANT_TOML.replace("gear_ratio", "gear_ration");
+    let e = PlantParams::from_toml(&text).unwrap_err().to_string();
+    assert!(e.contains("gear_ration"), "{e}");
+    let text = fwav_hil_sim::config::DEFAULT_PLANT_TOML.replace("substeps = 10", "substeps = 4");
+    let e = PlantParams::from_toml(&text).unwrap_err().to_string();
+    assert!(e.contains("simulation.substeps"), "{e}");
+}
