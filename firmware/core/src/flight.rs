@@ -90,6 +90,9 @@ pub struct FlightController {
     limits: Limits,
     params: ParamSet,
     sessions: [Session; 2],
+    /// Per link, the last request's sequence number and answer: a retry
+    /// (same seq) gets the same answer without being executed twice.
+    last_reply: [Option<(u16, DeviceMessage)>; 2],
     profile: Option<Profile>,
     generator: ReferenceGenerator,
     controller: FlappingController,
@@ -117,6 +120,7 @@ impl FlightController {
             limits,
             params: ParamSet::DEFAULT,
             sessions: [Session::new(); 2],
+            last_reply: [None, None],
             profile: None,
             generator: ReferenceGenerator::new(),
             controller: FlappingController::new(),
@@ -211,6 +215,10 @@ impl FlightController {
 
     /// Handles one request from `link` at time `now_us` (µs since boot).
     /// `stats` are that link decoder's counters (for the status reply).
+    ///
+    /// A request with the same sequence number as the previous one on the
+    /// link is a retry (its answer was lost): it gets the cached answer and
+    /// is not executed again. A handshake starts afresh.
     pub fn handle(
         &mut self,
         link: LinkId,
@@ -218,13 +226,24 @@ impl FlightController {
         now_us: u64,
         stats: LinkStats,
     ) -> Handled {
-        let session = &mut self.sessions[link.index()];
+        let index = link.index();
+        let handshake = matches!(request.command, Command::Handshake(_));
+        if handshake {
+            self.last_reply[index] = None;
+        } else if let Some((seq, answer)) = &self.last_reply[index] {
+            if *seq == request.seq && self.sessions[index].is_open() {
+                self.last_frame_us = now_us;
+                return Handled::Reply(answer.clone());
+            }
+        }
+        let seq = request.seq;
+        let session = &mut self.sessions[index];
         let dispatch = session.receive(request);
         if session.is_open() {
             // Any frame from an open session is a heartbeat.
             self.last_frame_us = now_us;
         }
-        match dispatch {
+        let handled = match dispatch {
             Dispatch::Reply(message) => Handled::Reply(message),
             Dispatch::Forward { seq, command } => {
                 if let Command::SaveProfile = command {
@@ -233,7 +252,11 @@ impl FlightController {
                 let reply = self.command(link, command, stats);
                 Handled::Reply(DeviceMessage::Response(Response { seq, reply }))
             }
+        };
+        if let (Handled::Reply(answer), false) = (&handled, handshake) {
+            self.last_reply[index] = Some((seq, answer.clone()));
         }
+        handled
     }
 
     fn command(&mut self, link: LinkId, command: Command, stats: LinkStats) -> Reply {

@@ -503,3 +503,51 @@ proptest! {
         }
     }
 }
+
+/// A retried request (same seq, its answer lost) is answered from the cache
+/// and not executed twice: a second Start would otherwise be refused.
+#[test]
+fn retries_by_sequence_number_are_not_executed_twice() {
+    let mut b = Bench::new();
+    b.connect();
+    assert_eq!(b.ask(Command::UploadProfile(cruise())), Reply::Ack);
+    assert_eq!(b.ask(Command::Arm), Reply::Ack);
+    assert_eq!(b.ask(Command::Start), Reply::Ack);
+    let seq = b.seq;
+    let again = b.fc.handle(
+        LinkId::Uart,
+        Request {
+            seq,
+            command: Command::Start,
+        },
+        b.now_us,
+        LinkStats::default(),
+    );
+    assert_eq!(
+        again,
+        Handled::Reply(DeviceMessage::Response(Response {
+            seq,
+            reply: Reply::Ack
+        }))
+    );
+    // A new request with a new seq is executed.
+    assert_eq!(nack(b.ask(Command::Start)), NackReason::Running);
+    // After a handshake the same seq is a new request again.
+    b.connect();
+    let fresh = b.fc.handle(
+        LinkId::Uart,
+        Request {
+            seq: b.seq,
+            command: Command::GetLimits,
+        },
+        b.now_us,
+        LinkStats::default(),
+    );
+    assert!(matches!(
+        fresh,
+        Handled::Reply(DeviceMessage::Response(Response {
+            reply: Reply::Limits(_),
+            ..
+        }))
+    ));
+}
