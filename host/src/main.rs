@@ -5,6 +5,10 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+
+mod cli {
+    pub mod fly;
+}
 use fwav::profile_file::ProfileFile;
 use fwav_protocol::document::ProfileDocument;
 use fwav_protocol::{Limits, MAX_FRAME_LEN, MAX_SEGMENTS, PROTOCOL_VERSION, SCHEMA_HASH};
@@ -32,6 +36,63 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// List serial ports, marking those where an fwav device answers.
+    Ports {
+        /// Machine-readable output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Upload a profile to a flight controller (or hil-sim): handshake, check
+    /// against the device's limits, send, read back and compare.
+    Upload {
+        /// Serial port (e.g. /dev/ttyACM0, or the path hil-sim serve prints).
+        #[arg(long)]
+        port: String,
+        /// The profile file (JSON).
+        file: PathBuf,
+        /// Then arm, start and fly, keeping the link, until Ctrl-C.
+        #[arg(long)]
+        start: bool,
+        /// Store the profile in the device's flash.
+        #[arg(long)]
+        save: bool,
+        /// With --start: fly this many seconds, then stop.
+        #[arg(long)]
+        duration: Option<f64>,
+        /// Machine-readable output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Flight-controller commands: status, arm, disarm, start, stop,
+    /// clear-faults, save, params [--set name=value ...].
+    Fc {
+        /// Serial port.
+        #[arg(long)]
+        port: String,
+        /// What to do.
+        action: String,
+        /// With params: set name=value (repeatable).
+        #[arg(long = "set")]
+        sets: Vec<String>,
+        /// Machine-readable output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Live telemetry until Ctrl-C, optionally logged to CSV.
+    Monitor {
+        /// Serial port.
+        #[arg(long)]
+        port: String,
+        /// Log every sample to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// One sample every N control steps (100 = 100 Hz at 10 kHz).
+        #[arg(long, default_value_t = 100)]
+        decimation: u16,
+        /// Stop after this many seconds.
+        #[arg(long)]
+        duration: Option<f64>,
+    },
 }
 
 #[derive(Subcommand)]
@@ -49,6 +110,46 @@ enum ProfileCommand {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    let link_result = match &cli.command {
+        Command::Ports { json } => Some(cli::fly::ports(*json)),
+        Command::Upload {
+            port,
+            file,
+            start,
+            save,
+            duration,
+            json,
+        } => Some(cli::fly::upload(
+            port, file, *start, *save, *duration, *json,
+        )),
+        Command::Fc {
+            port,
+            action,
+            sets,
+            json,
+        } => Some(cli::fly::fc(port, action, sets, *json)),
+        Command::Monitor {
+            port,
+            csv,
+            decimation,
+            duration,
+        } => Some(cli::fly::monitor(
+            port,
+            csv.as_deref(),
+            *decimation,
+            *duration,
+        )),
+        _ => None,
+    };
+    if let Some(result) = link_result {
+        return match result {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("error: {e:#}");
+                ExitCode::from(1)
+            }
+        };
+    }
     match cli.command {
         Command::Profile(ProfileCommand::Check { file, json }) => check_profile(&file, json),
         Command::Protocol { json } => {
@@ -68,6 +169,10 @@ fn main() -> ExitCode {
             }
             ExitCode::SUCCESS
         }
+        Command::Ports { .. }
+        | Command::Upload { .. }
+        | Command::Fc { .. }
+        | Command::Monitor { .. } => ExitCode::SUCCESS,
     }
 }
 

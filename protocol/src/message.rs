@@ -19,6 +19,9 @@ use crate::{PROTOCOL_VERSION, SCHEMA_HASH};
 /// Capacity of [`DeviceHello::firmware`], bytes.
 pub const FIRMWARE_NAME_LEN: usize = 32;
 
+/// The type of [`DeviceHello::firmware`].
+pub type DeviceHelloName = String<FIRMWARE_NAME_LEN>;
+
 /// Host → device: one command with its sequence number. **Frozen layout.**
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize, Schema)]
 pub struct Request {
@@ -139,7 +142,7 @@ pub struct DeviceHello {
     /// True if the device accepted the host's version.
     pub accepted: bool,
     /// Firmware name and version, for people.
-    pub firmware: String<FIRMWARE_NAME_LEN>,
+    pub firmware: DeviceHelloName,
 }
 
 /// Answer to a command other than the handshake.

@@ -51,6 +51,8 @@ pub struct ControlOutput {
 const AMPLITUDE_SCALE_RANGE: (f32, f32) = (0.5, 2.0);
 /// Largest phase lead, cycles.
 const MAX_PHASE_LEAD: f32 = 0.25;
+/// Smallest hysteresis of the frequency estimator's crossings, rad (0.57 deg).
+const MIN_CROSSING_HYSTERESIS: f32 = 0.01;
 /// Below this reference amplitude the per-stroke loop holds (rad, ~1 deg).
 const MIN_CORRECTED_AMPLITUDE: f32 = 0.017;
 
@@ -140,9 +142,10 @@ impl FlappingController {
                 self.correct(&s, p);
             }
         }
-        let hysteresis = 0.1 * target.kin.amplitude_rad;
-        self.frequency
-            .update(m.angle_rad - mean, hysteresis.max(1e-3), dt);
+        // At least ~6 encoder counts, so quantization chatter at rest is
+        // never counted as crossings.
+        let hysteresis = (0.1 * target.kin.amplitude_rad).max(MIN_CROSSING_HYSTERESIS);
+        self.frequency.update(m.angle_rad - mean, hysteresis, dt);
 
         let duty = feedforward(&command, m, p)
             + p.get(ParamId::AngleGain) * (command.angle - angle)

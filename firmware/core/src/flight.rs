@@ -474,14 +474,17 @@ impl FlightController {
         self.telemetry_countdown = decimation - 1;
         let seq = self.telemetry_seq;
         self.telemetry_seq = seq.wrapping_add(1);
-        let (commanded, amplitude) = match self.last_output {
-            Some(out) => (
-                out.command.angle,
+        let commanded = self.last_output.map_or(0.0, |out| out.command.angle);
+        // Estimates describe flapping; at rest there is none to report.
+        let (amplitude, frequency) = if self.is_running() {
+            (
                 self.controller
                     .last_stroke()
                     .map_or(0.0, |s| s.measured_amplitude),
-            ),
-            None => (0.0, 0.0),
+                self.controller.frequency_estimate(),
+            )
+        } else {
+            (0.0, 0.0)
         };
         Some((
             link,
@@ -493,7 +496,7 @@ impl FlightController {
                 duty: self.last_duty,
                 current_a: m.current_a,
                 amplitude_est_rad: amplitude,
-                frequency_est_hz: self.controller.frequency_estimate(),
+                frequency_est_hz: frequency,
             },
         ))
     }

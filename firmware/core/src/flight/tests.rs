@@ -344,6 +344,16 @@ fn telemetry_is_decimated_on_the_asking_link() {
     assert!(samples
         .windows(2)
         .all(|w| w[1].1.time_us - w[0].1.time_us == 50 * DT_US));
+    assert!((samples.last().unwrap().1.frequency_est_hz - 11.0).abs() < 0.05);
+    // At rest (stopped, still armed) there is no flapping to estimate.
+    assert_eq!(b.ask(Command::Stop), Reply::Ack);
+    let rest: Vec<_> = b
+        .run_with_heartbeat(1.0)
+        .iter()
+        .filter_map(|a| a.telemetry)
+        .collect();
+    let last = rest.last().unwrap().1;
+    assert_eq!((last.amplitude_est_rad, last.frequency_est_hz), (0.0, 0.0));
     let off = TelemetryConfig {
         enabled: false,
         decimation: 1,
