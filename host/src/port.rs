@@ -44,7 +44,11 @@ pub fn open(path: &str) -> Result<Box<dyn serialport::SerialPort>, PortError> {
 fn classify(path: &str, e: &serialport::Error) -> PortError {
     let message = e.to_string();
     let lower = message.to_lowercase();
+    let exists = std::path::Path::new(path).exists();
     match e.kind() {
+        // serialport reports EBUSY (another program holds the port
+        // exclusively) and lock failures as NoDevice.
+        serialport::ErrorKind::NoDevice if exists => PortError::Busy(path.to_owned()),
         serialport::ErrorKind::NoDevice => PortError::NoSuchPort(path.to_owned()),
         serialport::ErrorKind::Io(std::io::ErrorKind::NotFound) => {
             PortError::NoSuchPort(path.to_owned())

@@ -204,3 +204,13 @@ fn a_missing_port_says_so() {
     let e = port::open("/dev/fwav-no-such-port").err().unwrap();
     assert!(e.to_string().contains("no such port"), "{e}");
 }
+
+#[test]
+fn a_port_held_by_another_program_is_busy() {
+    let served = Served::start();
+    let _first = port::open(&served.path).unwrap();
+    let e = port::open(&served.path)
+        .err()
+        .expect("the second open fails");
+    assert!(e.to_string().contains("busy"), "{e}");
+}
