@@ -209,8 +209,8 @@ fn a_missing_port_says_so() {
 fn a_port_held_by_another_program_is_busy() {
     let served = Served::start();
     let _first = port::open(&served.path).unwrap();
-    let e = port::open(&served.path)
-        .err()
-        .expect("the second open fails");
+    let Err(e) = port::open(&served.path) else {
+        panic!("the second open must fail");
+    };
     assert!(e.to_string().contains("busy"), "{e}");
 }
