@@ -109,9 +109,15 @@ enum ProfileCommand {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    let link_result = match &cli.command {
-        Command::Ports { json } => Some(cli::fly::ports(*json)),
+    let result = match Cli::parse().command {
+        Command::Profile(ProfileCommand::Check { file, json }) => {
+            return check_profile(&file, json)
+        }
+        Command::Protocol { json } => {
+            protocol_info(json);
+            Ok(())
+        }
+        Command::Ports { json } => cli::fly::ports(json),
         Command::Upload {
             port,
             file,
@@ -119,60 +125,41 @@ fn main() -> ExitCode {
             save,
             duration,
             json,
-        } => Some(cli::fly::upload(
-            port, file, *start, *save, *duration, *json,
-        )),
+        } => cli::fly::upload(&port, &file, start, save, duration, json),
         Command::Fc {
             port,
             action,
             sets,
             json,
-        } => Some(cli::fly::fc(port, action, sets, *json)),
+        } => cli::fly::fc(&port, &action, &sets, json),
         Command::Monitor {
             port,
             csv,
             decimation,
             duration,
-        } => Some(cli::fly::monitor(
-            port,
-            csv.as_deref(),
-            *decimation,
-            *duration,
-        )),
-        _ => None,
+        } => cli::fly::monitor(&port, csv.as_deref(), decimation, duration),
     };
-    if let Some(result) = link_result {
-        return match result {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(e) => {
-                eprintln!("error: {e:#}");
-                ExitCode::from(1)
-            }
-        };
-    }
-    match cli.command {
-        Command::Profile(ProfileCommand::Check { file, json }) => check_profile(&file, json),
-        Command::Protocol { json } => {
-            if json {
-                let info = serde_json::json!({
-                    "protocol_version": PROTOCOL_VERSION,
-                    "schema_hash": format!("{SCHEMA_HASH:016x}"),
-                    "max_frame_len_bytes": MAX_FRAME_LEN,
-                    "max_segments": MAX_SEGMENTS,
-                });
-                println!("{info:#}");
-            } else {
-                println!("fwav link protocol v{PROTOCOL_VERSION}, schema {SCHEMA_HASH:016x}");
-                println!(
-                    "frames up to {MAX_FRAME_LEN} bytes, profiles up to {MAX_SEGMENTS} segments"
-                );
-            }
-            ExitCode::SUCCESS
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::from(1)
         }
-        Command::Ports { .. }
-        | Command::Upload { .. }
-        | Command::Fc { .. }
-        | Command::Monitor { .. } => ExitCode::SUCCESS,
+    }
+}
+
+fn protocol_info(json: bool) {
+    if json {
+        let info = serde_json::json!({
+            "protocol_version": PROTOCOL_VERSION,
+            "schema_hash": format!("{SCHEMA_HASH:016x}"),
+            "max_frame_len_bytes": MAX_FRAME_LEN,
+            "max_segments": MAX_SEGMENTS,
+        });
+        println!("{info:#}");
+    } else {
+        println!("fwav link protocol v{PROTOCOL_VERSION}, schema {SCHEMA_HASH:016x}");
+        println!("frames up to {MAX_FRAME_LEN} bytes, profiles up to {MAX_SEGMENTS} segments");
     }
 }
 
