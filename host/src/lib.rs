@@ -15,6 +15,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod aero2d;
 pub mod device;
 pub mod link;
 pub mod port;
