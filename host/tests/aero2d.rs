@@ -48,10 +48,10 @@ fn garrick_thrust_within_10_percent() {
     }
 }
 
-/// Garrick efficiency within 10% at k = 0.5 and 1.
+/// Garrick efficiency within 10% at k = 0.5, 1 and 2.
 #[test]
-fn garrick_efficiency_within_10_percent_at_k_up_to_1() {
-    for k in [0.5, 1.0] {
+fn garrick_efficiency_within_10_percent() {
+    for k in [0.5, 1.0, 2.0] {
         let (_, _, eta) = garrick_case(k);
         let (_, _, reference) = garrick_plunge(k, 0.05);
         let error = eta / reference - 1.0;
@@ -65,19 +65,6 @@ fn garrick_efficiency_within_10_percent_at_k_up_to_1() {
             100.0 * error
         );
     }
-}
-
-#[test]
-#[ignore = "not met yet: at k = 2 the input power from the impulse derivative is ~15% high \
-            (efficiency 0.463 vs Garrick 0.519, -10.8%); it converges only slowly with dt. \
-            The LDVM's analytic load formulas are the planned fix (aero2d issue)."]
-fn garrick_efficiency_within_10_percent_at_k_2() {
-    let (_, _, eta) = garrick_case(2.0);
-    let (_, _, reference) = garrick_plunge(2.0, 0.05);
-    assert!(
-        (eta / reference - 1.0).abs() < 0.10,
-        "efficiency {eta:.3} vs {reference:.3}"
-    );
 }
 
 /// Lift after a sudden start at alpha = 0.05 rad over the steady thin-plate
@@ -128,7 +115,8 @@ fn wagner_lift_within_3_percent_from_5_semichords() {
 #[test]
 #[ignore = "not met yet: early lift is high, +6.5% at s = 1 and +4.0% at s = 2 (dt 0.01), \
             +4.9% / +3.0% at dt 0.005; it converges slowly with dt and not with chord \
-            resolution, pointing at the impulse-derivative loads near the nascent vortex."]
+            resolution, and pressure and impulse loads agree: the early circulation \
+            history (shedding of the nascent vortex) is off, not the load integration."]
 fn wagner_lift_within_3_percent_at_1_and_2_semichords() {
     for (s, e) in [1.0, 2.0].iter().zip(wagner_errors(0.005, &[1.0, 2.0])) {
         assert!(e.abs() < 0.03, "s = {s}: {:+.2}%", 100.0 * e);
@@ -162,7 +150,7 @@ fn circulation_is_conserved() {
 
 #[test]
 #[ignore = "not met yet: cutting the wake 8 chords downstream changes the mean CT by \
-            -3.2% at k = 1 (0.00956 vs 0.00988); amalgamation or a tree code is needed for < 1%."]
+            -3.3% at k = 1 (0.00975 vs 0.01007); amalgamation or a tree code is needed for < 1%."]
 fn far_wake_cut_changes_ct_by_less_than_1_percent() {
     let k = 1.0;
     let period = PI / k;

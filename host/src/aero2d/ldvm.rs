@@ -14,10 +14,15 @@
 //! - Free vortices with a Vatistas (n = 2) core of radius `1.3 U dt`,
 //!   convected by forward Euler with the velocity induced by the bound and
 //!   free vortices plus the freestream.
-//! - Loads from the vortex impulse, `F = -rho d/dt sum Gamma_i (y_i, -x_i)`,
-//!   moment `M_O = rho/2 d/dt sum Gamma_i |r_i|^2` (counter-clockwise
-//!   circulation positive): this captures leading-edge suction, hence the
-//!   thrust of a plunging plate, without resolving the edge singularity.
+//! - Loads from the pressure jump of unsteady Bernoulli,
+//!   `dp = rho (V_t gamma + d/dt int_0^x gamma)`, integrated over the bound
+//!   vortices: normal force `sum V_t Gamma_j + d/dt sum Gamma_j (c - x_j)`
+//!   (for the Glauert series this is the LDVM's
+//!   `2 pi (A0 + A1/2) + 2 pi c/U (3/4 A0' + 1/4 A1' + 1/8 A2')` plus the
+//!   wake term), moment likewise, and the leading-edge suction
+//!   `rho pi c U^2 A0^2` along the chord, which is the thrust of a plunging
+//!   plate. Time derivatives are backward differences, so all loads and the
+//!   kinematics that multiply them are taken at the half step.
 //!
 //! Cost per step is O(M N_w + N_w^2) for `M` chord points and `N_w` wake
 //! vortices.
@@ -116,6 +121,21 @@ pub struct History {
     pub bound_circulation: Vec<f64>,
 }
 
+/// The pressure-jump integrals of one step (c = U = rho = 1).
+#[derive(Clone, Copy, Debug)]
+struct LoadIntegrals {
+    /// sum V_t Gamma_j: the quasi-steady normal force.
+    normal: f64,
+    /// sum V_t Gamma_j x_j.
+    moment: f64,
+    /// Leading-edge suction pi A0^2.
+    suction: f64,
+    /// sum Gamma_j (1 - x_j), whose rate is the unsteady normal force.
+    q_normal: f64,
+    /// sum Gamma_j (1 - x_j^2) / 2, whose rate is the unsteady moment.
+    q_moment: f64,
+}
+
 /// The solver state.
 pub struct Ldvm {
     motion: Motion,
@@ -124,7 +144,8 @@ pub struct Ldvm {
     wake: Vec<FreeVortex>,
     /// Bound vortices of the last step: global positions and ccw circulation.
     bound: Vec<FreeVortex>,
-    impulse: Option<(f64, f64, f64)>,
+    /// Load integrals of the previous step.
+    loads: Option<LoadIntegrals>,
     time: f64,
     core2: f64,
 }
@@ -151,7 +172,7 @@ impl Ldvm {
             theta,
             wake: Vec::new(),
             bound: Vec::new(),
-            impulse: None,
+            loads: None,
             time: 0.0,
             core2: core * core,
         }
@@ -236,6 +257,10 @@ impl Ldvm {
         };
         let mut w0 = Vec::with_capacity(stations.len());
         let mut w1 = Vec::with_capacity(stations.len());
+        // Tangential flow relative to the plate (without bound vorticity),
+        // split into the part known now and the part per unit new vortex.
+        let mut vt0 = Vec::with_capacity(stations.len());
+        let mut vt1 = Vec::with_capacity(stations.len());
         let near_from = self.near_wake_start(te.0);
         for &(xb, x, y) in &stations {
             let (mut u, mut v) = (1.0, 0.0);
@@ -246,8 +271,10 @@ impl Ldvm {
             }
             let relative = u * sa + v * ca - h_dot * ca + (xb - pivot) * alpha_dot;
             w0.push(relative);
+            vt0.push(u * ca - v * sa + h_dot * sa);
             let (du, dv) = induced(&unit, x, y, self.core2);
             w1.push(du * sa + dv * ca);
+            vt1.push(du * ca - dv * sa);
         }
         let a0 = self.coefficients(&w0);
         let a1 = self.coefficients(&w1);
@@ -286,29 +313,41 @@ impl Ldvm {
             })
             .collect();
 
-        // Loads from the impulse of all vortices.
-        let (mut ix, mut iy, mut i2) = (0.0, 0.0, 0.0);
-        for v in self.bound.iter().chain(&self.wake) {
-            ix += v.gamma * v.y;
-            iy -= v.gamma * v.x;
-            i2 += v.gamma * (v.x * v.x + v.y * v.y);
+        // Loads from the pressure jump (unsteady Bernoulli) on the bound
+        // vortices: N = sum V_t Gamma_j + d/dt sum Gamma_j (1 - x_j),
+        // M_LE = -(sum V_t Gamma_j x_j + d/dt sum Gamma_j (1 - x_j^2) / 2),
+        // plus the leading-edge suction pi A0^2 along the chord.
+        let mut now = LoadIntegrals {
+            normal: 0.0,
+            moment: 0.0,
+            suction: PI * a[0] * a[0],
+            q_normal: 0.0,
+            q_moment: 0.0,
+        };
+        for (j, (v, &(xb, _, _))) in self.bound.iter().zip(&stations).enumerate() {
+            let g = -v.gamma; // clockwise
+            let vt = vt0[j] + gamma_new * vt1[j];
+            now.normal += vt * g;
+            now.moment += vt * g * xb;
+            now.q_normal += g * (1.0 - xb);
+            now.q_moment += g * 0.5 * (1.0 - xb * xb);
         }
-        if let Some((px, py, p2)) = self.impulse {
-            // The backward difference is the force at the half step: take
+        if let Some(prev) = self.loads.replace(now) {
+            // The backward differences are the loads at the half step: take
             // the kinematics there too, or the added-mass force (large at
             // high k, in quadrature with the velocity) leaks into the mean
             // power through an O(omega dt) phase error.
             let tm = t - 0.5 * dt;
-            let (hm, h_dot_m, alpha_m, alpha_dot_m) = self.motion.at(tm);
-            let fx = -(ix - px) / dt;
-            let fy = -(iy - py) / dt;
-            let mo = 0.5 * (i2 - p2) / dt;
-            // Moment about the pivot (ccw positive): M_O - r_p x F.
-            let (rx, ry) = self.body_point(pivot, hm, alpha_m);
-            let m_pivot = mo - (rx * fy - ry * fx);
-            // Power the actuator puts in: against lift while plunging and
-            // against the pitching moment (nose-up alpha is clockwise).
-            let power = -fy * h_dot_m + m_pivot * alpha_dot_m;
+            let (_, h_dot_m, alpha_m, alpha_dot_m) = self.motion.at(tm);
+            let normal = 0.5 * (now.normal + prev.normal) + (now.q_normal - prev.q_normal) / dt;
+            let moment_le =
+                -(0.5 * (now.moment + prev.moment) + (now.q_moment - prev.q_moment) / dt);
+            let suction = 0.5 * (now.suction + prev.suction);
+            let (sm, cm) = alpha_m.sin_cos();
+            let fx = normal * sm - suction * cm;
+            let fy = normal * cm + suction * sm;
+            let m_pivot_nose_up = moment_le + pivot * normal;
+            let power = -fy * h_dot_m - m_pivot_nose_up * alpha_dot_m;
             history.time.push(tm);
             history.cl.push(2.0 * fy);
             history.ct.push(-2.0 * fx);
@@ -316,7 +355,6 @@ impl Ldvm {
             history.lesp.push(a[0]);
             history.bound_circulation.push(circulation(&a));
         }
-        self.impulse = Some((ix, iy, i2));
 
         // Convect the free vortices: the near wake with induced velocities,
         // the far wake with the freestream.
