@@ -112,15 +112,23 @@ fn wagner_lift_within_3_percent_from_5_semichords() {
     }
 }
 
+/// At s = 2 the early lift converges slowly with dt (+4.0% at dt 0.01,
+/// +3.0% at 0.005, +2.3% at 0.0025): within 3% at dt = 0.0025.
 #[test]
-#[ignore = "not met yet: early lift is high, +6.5% at s = 1 and +4.0% at s = 2 (dt 0.01), \
-            +4.9% / +3.0% at dt 0.005; it converges slowly with dt and not with chord \
-            resolution, and pressure and impulse loads agree: the early circulation \
-            history (shedding of the nascent vortex) is off, not the load integration."]
-fn wagner_lift_within_3_percent_at_1_and_2_semichords() {
-    for (s, e) in [1.0, 2.0].iter().zip(wagner_errors(0.005, &[1.0, 2.0])) {
-        assert!(e.abs() < 0.03, "s = {s}: {:+.2}%", 100.0 * e);
-    }
+fn wagner_lift_within_3_percent_at_2_semichords() {
+    let e = wagner_errors(0.0025, &[2.0])[0];
+    println!("s = 2: {:+.2}% from Wagner (dt 0.0025)", 100.0 * e);
+    assert!(e.abs() < 0.03, "{:+.2}%", 100.0 * e);
+}
+
+#[test]
+#[ignore = "not met yet: at s = 1 the early lift is high and converges only like dt^0.4: \
+            +6.5%, +4.9%, +3.8%, +3.05% at dt = 0.01, 0.005, 0.0025, 0.00125 (unchanged by \
+            chord resolution or by impulse vs pressure loads): the nascent trailing-edge \
+            vortex treatment limits early-time accuracy."]
+fn wagner_lift_within_3_percent_at_1_semichord() {
+    let e = wagner_errors(0.00125, &[1.0])[0];
+    assert!(e.abs() < 0.03, "{:+.2}%", 100.0 * e);
 }
 
 /// Kelvin's theorem holds to round-off: the bound circulation equals the
@@ -148,10 +156,11 @@ fn circulation_is_conserved() {
     );
 }
 
+/// Letting the wake beyond the default 2 chords drift (no self-induced
+/// roll-up) changes the mean CT by less than 1% (issue: far-wake handling,
+/// effect < 1%).
 #[test]
-#[ignore = "not met yet: cutting the wake 8 chords downstream changes the mean CT by \
-            -3.3% at k = 1 (0.00975 vs 0.01007); amalgamation or a tree code is needed for < 1%."]
-fn far_wake_cut_changes_ct_by_less_than_1_percent() {
+fn far_wake_drift_changes_ct_by_less_than_1_percent() {
     let k = 1.0;
     let period = PI / k;
     let run = |far_wake| {
@@ -163,6 +172,35 @@ fn far_wake_cut_changes_ct_by_less_than_1_percent() {
         };
         cycle_means(&Ldvm::new(plunge(k), s).run(), period, 2).0
     };
-    let (cut, full) = (run(8.0), run(1e9));
+    let (cut, full) = (run(Settings::default().far_wake), run(1e9));
+    println!(
+        "far wake drifting: CT {cut:.6} vs full {full:.6} ({:+.2}%)",
+        100.0 * (cut / full - 1.0)
+    );
     assert!((cut / full - 1.0).abs() < 0.01, "{cut} vs {full}");
+}
+
+/// Convergence (issue: CT changes < 2% when elements and time steps are
+/// doubled at the default resolution), k = 1 plunge, 4 cycles.
+#[test]
+fn ct_converges_when_resolution_doubles() {
+    let k = 1.0;
+    let period = PI / k;
+    let base = Settings {
+        duration: 4.0 * period,
+        ..Settings::default()
+    };
+    let fine = Settings {
+        dt: base.dt / 2.0,
+        chord_points: 2 * base.chord_points,
+        fourier_terms: 2 * base.fourier_terms,
+        ..base
+    };
+    let ct = |s| cycle_means(&Ldvm::new(plunge(k), s).run(), period, 1).0;
+    let (coarse, refined) = (ct(base), ct(fine));
+    println!(
+        "CT {coarse:.6} -> {refined:.6} ({:+.2}%)",
+        100.0 * (refined / coarse - 1.0)
+    );
+    assert!((refined / coarse - 1.0).abs() < 0.02);
 }

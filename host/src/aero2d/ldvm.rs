@@ -74,10 +74,11 @@ pub struct Settings {
     /// Simulated time, chords travelled (U t / c).
     pub duration: f64,
     /// Free vortices farther than this downstream of the trailing edge,
-    /// chords, stop inducing and receiving velocities (they drift with the
-    /// freestream and still count in Kelvin's sum): the far wake's effect on
-    /// the section decays like 1/distance with alternating sign, and the
-    /// cost per step stops growing.
+    /// chords, drift with the freestream instead of being convected by the
+    /// induced velocity (they still induce velocity on the section and the
+    /// near wake, and count in Kelvin's sum): the far wake's self-induced
+    /// roll-up no longer affects the section, and the O(N^2) cost of
+    /// convecting it goes away.
     pub far_wake: f64,
 }
 
@@ -86,9 +87,9 @@ impl Default for Settings {
         Self {
             chord_points: 80,
             fourier_terms: 40,
-            dt: 0.02,
+            dt: 0.015,
             duration: 10.0,
-            far_wake: 8.0,
+            far_wake: 1.5,
         }
     }
 }
@@ -121,6 +122,9 @@ pub struct History {
     pub bound_circulation: Vec<f64>,
 }
 
+/// Far-wake vortices lumped together for induction.
+const FAR_GROUP: usize = 8;
+
 /// The pressure-jump integrals of one step (c = U = rho = 1).
 #[derive(Clone, Copy, Debug)]
 struct LoadIntegrals {
@@ -146,17 +150,29 @@ pub struct Ldvm {
     bound: Vec<FreeVortex>,
     /// Load integrals of the previous step.
     loads: Option<LoadIntegrals>,
+    /// `cos(n theta_k)`, row n (0..=N), column k: the Fourier projection.
+    cos_table: Vec<f64>,
+    /// Row n, column j: the integral of term n of the Glauert series over
+    /// bound panel j (so panel circulations are a matrix-vector product).
+    panel_table: Vec<f64>,
     time: f64,
     core2: f64,
 }
 
 /// Velocity induced at `(x, y)` by a ccw vortex with a Vatistas (n = 2)
-/// core of squared radius `core2`.
+/// core of squared radius `core2`. Beyond ten core radii the core changes
+/// the kernel by less than 5e-5 relative, and the plain `1/r^2` kernel
+/// (no square root) is used.
 #[inline]
 fn induced(v: &FreeVortex, x: f64, y: f64, core2: f64) -> (f64, f64) {
     let (dx, dy) = (x - v.x, y - v.y);
     let r2 = dx * dx + dy * dy;
-    let k = v.gamma / (2.0 * PI * (r2 * r2 + core2 * core2).sqrt());
+    let denominator = if r2 > 100.0 * core2 {
+        r2
+    } else {
+        (r2 * r2 + core2 * core2).sqrt()
+    };
+    let k = v.gamma / (2.0 * PI * denominator);
     (-dy * k, dx * k)
 }
 
@@ -164,9 +180,31 @@ impl Ldvm {
     /// A plate at rest in the freestream, about to move.
     pub fn new(motion: Motion, settings: Settings) -> Self {
         let m = settings.chord_points;
-        let theta = (0..m).map(|k| (k as f64 + 0.5) * PI / m as f64).collect();
+        let theta: Vec<f64> = (0..m).map(|k| (k as f64 + 0.5) * PI / m as f64).collect();
         let core = 1.3 * settings.dt;
+        let terms = settings.fourier_terms + 1;
+        let cos_table = (0..terms)
+            .flat_map(|n| theta.iter().map(move |t| (n as f64 * t).cos()))
+            .collect();
+        // Antiderivatives in theta of gamma dx for each series term (c = U = 1).
+        let g = |n: usize, th: f64| -> f64 {
+            match n {
+                0 => th + th.sin(),
+                1 => 0.5 * th - 0.25 * (2.0 * th).sin(),
+                _ => {
+                    let n = n as f64;
+                    ((n - 1.0) * th).sin() / (2.0 * (n - 1.0))
+                        - ((n + 1.0) * th).sin() / (2.0 * (n + 1.0))
+                }
+            }
+        };
+        let half = 0.5 * PI / m as f64;
+        let panel_table = (0..terms)
+            .flat_map(|n| theta.iter().map(move |&t| g(n, t + half) - g(n, t - half)))
+            .collect();
         Self {
+            cos_table,
+            panel_table,
             motion,
             settings,
             theta,
@@ -181,6 +219,29 @@ impl Ldvm {
     /// The free vortices.
     pub fn wake(&self) -> &[FreeVortex] {
         &self.wake
+    }
+
+    /// The far wake for induction: groups of [`FAR_GROUP`] consecutive
+    /// vortices as one, at their |Gamma|-weighted centroid with their total
+    /// circulation (their spread is small against their distance).
+    fn far_proxies(&self, near_from: usize) -> Vec<FreeVortex> {
+        self.wake[..near_from]
+            .chunks(FAR_GROUP)
+            .map(|group| {
+                let weight: f64 = group
+                    .iter()
+                    .map(|v| v.gamma.abs())
+                    .sum::<f64>()
+                    .max(f64::MIN_POSITIVE);
+                let x = group.iter().map(|v| v.x * v.gamma.abs()).sum::<f64>() / weight;
+                let y = group.iter().map(|v| v.y * v.gamma.abs()).sum::<f64>() / weight;
+                FreeVortex {
+                    x,
+                    y,
+                    gamma: group.iter().map(|v| v.gamma).sum(),
+                }
+            })
+            .collect()
     }
 
     /// Index of the first vortex of the near wake. The wake is kept in
@@ -200,19 +261,22 @@ impl Ldvm {
         (p + s * alpha.cos(), h - s * alpha.sin())
     }
 
-    /// Fourier coefficients from normal velocities at the chord points.
+    /// Fourier coefficients from normal velocities at the chord points:
+    /// `A0 = mean(W)`, `An = -2 mean(W cos n theta)` (midpoint rule).
     fn coefficients(&self, w: &[f64]) -> Vec<f64> {
-        let m = w.len() as f64;
-        let mut a = vec![w.iter().sum::<f64>() / m];
-        for n in 1..=self.settings.fourier_terms {
-            let s: f64 = w
-                .iter()
-                .zip(&self.theta)
-                .map(|(w, t)| w * (n as f64 * t).cos())
-                .sum();
-            a.push(-2.0 * s / m);
-        }
-        a
+        let m = w.len();
+        self.cos_table
+            .chunks_exact(m)
+            .enumerate()
+            .map(|(n, row)| {
+                let mean = row.iter().zip(w).map(|(c, w)| c * w).sum::<f64>() / m as f64;
+                if n == 0 {
+                    mean
+                } else {
+                    -2.0 * mean
+                }
+            })
+            .collect()
     }
 
     /// Runs to the end; returns the histories.
@@ -262,9 +326,10 @@ impl Ldvm {
         let mut vt0 = Vec::with_capacity(stations.len());
         let mut vt1 = Vec::with_capacity(stations.len());
         let near_from = self.near_wake_start(te.0);
+        let proxies = self.far_proxies(near_from);
         for &(xb, x, y) in &stations {
             let (mut u, mut v) = (1.0, 0.0);
-            for fv in &self.wake[near_from..] {
+            for fv in self.wake[near_from..].iter().chain(&proxies) {
                 let (du, dv) = induced(fv, x, y, self.core2);
                 u += du;
                 v += dv;
@@ -291,26 +356,17 @@ impl Ldvm {
         });
 
         // Bound vortices: the analytic integral of gamma over each panel.
-        let big_g = |th: f64| -> f64 {
-            let mut g = a[0] * (th + th.sin()) + a[1] * (0.5 * th - 0.25 * (2.0 * th).sin());
-            for (n, an) in a.iter().enumerate().skip(2) {
-                let n = n as f64;
-                g += an
-                    * (((n - 1.0) * th).sin() / (2.0 * (n - 1.0))
-                        - ((n + 1.0) * th).sin() / (2.0 * (n + 1.0)));
+        let m_points = self.theta.len();
+        let mut panel_gamma = vec![0.0; m_points];
+        for (an, row) in a.iter().zip(self.panel_table.chunks_exact(m_points)) {
+            for (g, p) in panel_gamma.iter_mut().zip(row) {
+                *g += an * p;
             }
-            g
-        };
-        let half = 0.5 * PI / self.theta.len() as f64;
-        self.bound = self
-            .theta
+        }
+        self.bound = panel_gamma
             .iter()
             .zip(&stations)
-            .map(|(&th, &(_, x, y))| FreeVortex {
-                x,
-                y,
-                gamma: -(big_g(th + half) - big_g(th - half)),
-            })
+            .map(|(&g, &(_, x, y))| FreeVortex { x, y, gamma: -g })
             .collect();
 
         // Loads from the pressure jump (unsteady Bernoulli) on the bound
@@ -356,15 +412,19 @@ impl Ldvm {
             history.bound_circulation.push(circulation(&a));
         }
 
-        // Convect the free vortices: the near wake with induced velocities,
-        // the far wake with the freestream.
-        let near_from = self.near_wake_start(te.0);
-        let near = &self.wake[near_from..];
-        let velocities: Vec<(f64, f64)> = near
+        // Convect the free vortices: the near wake with the velocity induced
+        // by everything (the far wake as proxies), the far wake with the
+        // freestream. (The new vortex joined the near wake.)
+        let velocities: Vec<(f64, f64)> = self.wake[near_from..]
             .iter()
             .map(|p| {
                 let (mut u, mut v) = (1.0, 0.0);
-                for q in self.bound.iter().chain(near) {
+                for q in self
+                    .bound
+                    .iter()
+                    .chain(&self.wake[near_from..])
+                    .chain(&proxies)
+                {
                     let (du, dv) = induced(q, p.x, p.y, self.core2);
                     u += du;
                     v += dv;

@@ -4,10 +4,11 @@
 //! results it is validated against.
 //!
 //! Status: the thin-plate solver with a free trailing-edge wake, plunge and
-//! pitch, and impulse-based loads ([`ldvm`]), validated against
-//! Theodorsen–Garrick and Wagner ([`theory`]). Leading-edge vortex shedding,
-//! deforming and thick sections, skin friction, wake amalgamation and the
-//! `fwav aero2d` command are the rest of the aero2d issue.
+//! pitch, pressure-jump loads with leading-edge suction and a lumped,
+//! freely drifting far wake ([`ldvm`]), validated against
+//! Theodorsen–Garrick and Wagner ([`theory`]), behind `fwav aero2d`.
+//! Leading-edge vortex shedding (LESP), deforming and thick sections, skin
+//! friction and plots are the rest of the aero2d issue.
 
 pub mod ldvm;
 pub mod theory;

@@ -1,0 +1,104 @@
+//! `fwav aero2d`: one 2D unsteady analysis of a plunging/pitching section.
+
+use std::f64::consts::PI;
+
+use anyhow::{bail, Result};
+use fwav::aero2d::ldvm::{cycle_means, Ldvm, Motion, Settings};
+use fwav::aero2d::theory::garrick_plunge;
+
+/// The command's options.
+pub struct Aero2dArgs {
+    pub section: String,
+    pub plunge_amplitude: f64,
+    pub reduced_frequency: f64,
+    pub pitch_amplitude_deg: f64,
+    pub pitch_phase_deg: f64,
+    pub pivot: f64,
+    pub cycles: u32,
+    pub json: bool,
+}
+
+pub fn run(a: &Aero2dArgs) -> Result<()> {
+    if a.section != "flat" {
+        bail!("--section {:?}: only `flat` (thin plate) is available so far; naca0012 and point files come with the thick-section panel model", a.section);
+    }
+    if !(a.reduced_frequency > 0.0 && a.reduced_frequency <= 20.0) {
+        bail!(
+            "--reduced-frequency {} must be in (0, 20]",
+            a.reduced_frequency
+        );
+    }
+    if !(a.plunge_amplitude.abs() <= 2.0
+        && a.pitch_amplitude_deg.abs() <= 60.0
+        && (0.0..=1.0).contains(&a.pivot))
+    {
+        bail!(
+            "amplitudes out of range: plunge <= 2 chords, pitch <= 60 deg, pivot in [0, 1] chords"
+        );
+    }
+    if a.cycles < 2 || a.cycles > 50 {
+        bail!("--cycles {} must be between 2 and 50", a.cycles);
+    }
+    let k = a.reduced_frequency;
+    let period = PI / k;
+    let motion = Motion {
+        reduced_frequency: k,
+        plunge_amplitude: a.plunge_amplitude,
+        mean_pitch: 0.0,
+        pitch_amplitude: a.pitch_amplitude_deg.to_radians(),
+        pitch_phase: a.pitch_phase_deg.to_radians(),
+        pivot: a.pivot,
+    };
+    // At least ~100 steps a cycle.
+    let defaults = Settings::default();
+    let settings = Settings {
+        dt: defaults.dt.min(period / 100.0),
+        duration: f64::from(a.cycles) * period,
+        ..defaults
+    };
+    let history = Ldvm::new(motion, settings).run();
+    let (ct, cp, eta) = cycle_means(&history, period, 1);
+    let (ct_prev, _, _) = {
+        // The cycle before the last, for the periodicity check.
+        let mut h = history.clone();
+        let keep = h
+            .time
+            .len()
+            .saturating_sub((period / settings.dt).round() as usize);
+        h.time.truncate(keep);
+        h.ct.truncate(keep);
+        h.cp.truncate(keep);
+        cycle_means(&h, period, 1)
+    };
+    let periodicity = (ct - ct_prev) / ct.abs().max(1e-12);
+    let garrick = (a.pitch_amplitude_deg == 0.0).then(|| garrick_plunge(k, a.plunge_amplitude));
+    if a.json {
+        let mut v = serde_json::json!({
+            "section": a.section,
+            "reduced_frequency": k,
+            "plunge_amplitude_chords": a.plunge_amplitude,
+            "pitch_amplitude_deg": a.pitch_amplitude_deg,
+            "cycles": a.cycles,
+            "time_step_chords": settings.dt,
+            "mean_ct": ct,
+            "mean_cp": cp,
+            "efficiency": eta,
+            "mean_ct_change_last_two_cycles": periodicity,
+            "wake_vortices": history.time.len(),
+        });
+        if let Some((gct, gcp, geta)) = garrick {
+            v["garrick"] = serde_json::json!({"mean_ct": gct, "mean_cp": gcp, "efficiency": geta});
+        }
+        println!("{v:#}");
+    } else {
+        println!(
+            "flat plate, k = {k}, h0 = {} c, pitch {} deg, {} cycles (dt {:.4} c/U)",
+            a.plunge_amplitude, a.pitch_amplitude_deg, a.cycles, settings.dt
+        );
+        println!("  last cycle: CT {ct:.5}  CP {cp:.5}  efficiency {eta:.3}  (CT change from the cycle before: {:+.2} %)", 100.0 * periodicity);
+        if let Some((gct, gcp, geta)) = garrick {
+            println!("  Garrick (1936): CT {gct:.5}  CP {gcp:.5}  efficiency {geta:.3}");
+        }
+    }
+    Ok(())
+}
