@@ -204,3 +204,96 @@ fn ct_converges_when_resolution_doubles() {
     );
     assert!((refined / coarse - 1.0).abs() < 0.02);
 }
+
+/// Thin-airfoil theory: a parabolic camber line `eta = 4 m x (1 - x)` at
+/// angle alpha has `A0 = alpha`, `A1 = 4 m`, so the steady lift is
+/// `2 pi (alpha + 2 m)`; after a sudden start it follows Wagner's function
+/// towards that value like the flat plate (within 3% at s = 5, 10).
+#[test]
+fn steady_camber_lifts_as_thin_airfoil_theory_says() {
+    use fwav::aero2d::camber::CamberHistory;
+    let (alpha, m) = (0.03, 0.02);
+    let stations: Vec<f64> = (0..=40).map(|i| i as f64 / 40.0).collect();
+    let offsets = stations.iter().map(|x| 4.0 * m * x * (1.0 - x)).collect();
+    let camber = CamberHistory::steady(stations, offsets).unwrap();
+    let motion = Motion {
+        reduced_frequency: 0.0,
+        plunge_amplitude: 0.0,
+        mean_pitch: alpha,
+        pitch_amplitude: 0.0,
+        pitch_phase: 0.0,
+        pivot: 0.25,
+    };
+    let history = Ldvm::new(
+        motion,
+        Settings {
+            dt: 0.01,
+            duration: 5.2,
+            ..Settings::default()
+        },
+    )
+    .with_camber(camber)
+    .run();
+    let steady = 2.0 * PI * (alpha + 2.0 * m);
+    for s in [5.0, 10.0] {
+        let i = history
+            .time
+            .iter()
+            .position(|&t| t >= s / 2.0 - 1e-9)
+            .unwrap();
+        let e = history.cl[i] / steady / wagner(s) - 1.0;
+        println!(
+            "cambered plate s = {s}: {:+.2}% from 2 pi (alpha + 2m) phi(s)",
+            100.0 * e
+        );
+        assert!(e.abs() < 0.03, "s = {s}: {:+.2}%", 100.0 * e);
+    }
+}
+
+/// The deformation machinery against rigid motion: a camber line that is a
+/// rigid rotation about the pivot, `eta = -(x - x_p) delta(t)`, must give the
+/// lift of the plate pitching by `delta(t)` (to first order in delta).
+#[test]
+fn camber_that_is_a_rotation_lifts_like_pitch() {
+    use fwav::aero2d::camber::CamberHistory;
+    let (k, amplitude, pivot) = (1.0, 2f64.to_radians(), 0.25);
+    let period = PI / k;
+    let pitching = Motion {
+        reduced_frequency: k,
+        plunge_amplitude: 0.0,
+        mean_pitch: 0.0,
+        pitch_amplitude: amplitude,
+        pitch_phase: 0.0,
+        pivot,
+    };
+    let settings = Settings {
+        duration: 3.0 * period,
+        ..Settings::default()
+    };
+    let pitch = Ldvm::new(pitching, settings).run();
+    let stations: Vec<f64> = (0..=20).map(|i| i as f64 / 20.0).collect();
+    let samples: Vec<Vec<f64>> = (0..200)
+        .map(|i| {
+            let delta = amplitude * (2.0 * PI * i as f64 / 200.0).sin();
+            stations.iter().map(|x| -(x - pivot) * delta).collect()
+        })
+        .collect();
+    let camber = CamberHistory::new(stations, samples, period).unwrap();
+    let still = Motion {
+        pitch_amplitude: 0.0,
+        ..pitching
+    };
+    let flex = Ldvm::new(still, settings).with_camber(camber).run();
+    let last = |h: &fwav::aero2d::ldvm::History| {
+        let n = (period / settings.dt) as usize;
+        h.cl[h.cl.len() - n..]
+            .iter()
+            .fold(0.0f64, |a, b| a.max(b.abs()))
+    };
+    let (a, b) = (last(&pitch), last(&flex));
+    println!(
+        "lift amplitude: pitching {a:.5}, rotating camber {b:.5} ({:+.2}%)",
+        100.0 * (b / a - 1.0)
+    );
+    assert!((b / a - 1.0).abs() < 0.02, "{a} vs {b}");
+}

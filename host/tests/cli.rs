@@ -84,3 +84,35 @@ fn protocol_info_is_json() {
         format!("{:016x}", fwav_protocol::SCHEMA_HASH)
     );
 }
+
+#[test]
+fn aero2d_reports_thrust_beside_garrick() {
+    let out = fwav(&[
+        "aero2d",
+        "--plunge-amplitude",
+        "0.05",
+        "--reduced-frequency",
+        "1.0",
+        "--cycles",
+        "4",
+        "--json",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let (ct, garrick) = (
+        v["mean_ct"].as_f64().unwrap(),
+        v["garrick"]["mean_ct"].as_f64().unwrap(),
+    );
+    assert!((ct / garrick - 1.0).abs() < 0.10, "{ct} vs {garrick}");
+    assert!(v["mean_ct_change_last_two_cycles"].as_f64().unwrap().abs() < 0.02);
+
+    let bad = fwav(&["aero2d", "--section", "naca0012"]);
+    assert_eq!(bad.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("only `flat`"));
+    let bad = fwav(&["aero2d", "--reduced-frequency", "-1"]);
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("--reduced-frequency"));
+}

@@ -29,6 +29,8 @@
 
 use std::f64::consts::PI;
 
+use super::camber::CamberHistory;
+
 /// Prescribed motion of the section (all amplitudes in chords / radians).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Motion {
@@ -143,6 +145,7 @@ struct LoadIntegrals {
 /// The solver state.
 pub struct Ldvm {
     motion: Motion,
+    camber: Option<CamberHistory>,
     settings: Settings,
     theta: Vec<f64>,
     wake: Vec<FreeVortex>,
@@ -205,6 +208,7 @@ impl Ldvm {
         Self {
             cos_table,
             panel_table,
+            camber: None,
             motion,
             settings,
             theta,
@@ -214,6 +218,14 @@ impl Ldvm {
             time: 0.0,
             core2: core * core,
         }
+    }
+
+    /// A deforming section: the camber line follows `camber` (small-camber
+    /// thin-airfoil treatment: the normal tilts by `-d eta/dx` and moves
+    /// with `d eta/dt`; loads are integrated along the chord).
+    pub fn with_camber(mut self, camber: CamberHistory) -> Self {
+        self.camber = Some(camber);
+        self
     }
 
     /// The free vortices.
@@ -297,18 +309,31 @@ impl Ldvm {
         let (h, h_dot, alpha, alpha_dot) = self.motion.at(t);
         let (sa, ca) = alpha.sin_cos();
         let pivot = self.motion.pivot;
+        let shape = |xb: f64| {
+            self.camber
+                .as_ref()
+                .map_or((0.0, 0.0, 0.0), |c| c.at(xb, t))
+        };
+        let mut slopes = Vec::with_capacity(self.theta.len());
         let stations: Vec<(f64, f64, f64)> = self
             .theta
             .iter()
             .map(|&th| {
                 let xb = 0.5 * (1.0 - th.cos());
+                let (eta, slope, rate) = shape(xb);
+                slopes.push((slope, rate));
                 let (x, y) = self.body_point(xb, h, alpha);
-                (xb, x, y)
+                // Offset along the normal (sin alpha, cos alpha).
+                (xb, x + eta * sa, y + eta * ca)
             })
             .collect();
 
         // The new trailing-edge vortex.
-        let te = self.body_point(1.0, h, alpha);
+        let te = {
+            let (x, y) = self.body_point(1.0, h, alpha);
+            let eta = shape(1.0).0;
+            (x + eta * sa, y + eta * ca)
+        };
         let (nx, ny) = match self.wake.last() {
             Some(last) => (te.0 + (last.x - te.0) / 3.0, te.1 + (last.y - te.1) / 3.0),
             None => (te.0 + 0.5 * dt, te.1),
@@ -327,7 +352,7 @@ impl Ldvm {
         let mut vt1 = Vec::with_capacity(stations.len());
         let near_from = self.near_wake_start(te.0);
         let proxies = self.far_proxies(near_from);
-        for &(xb, x, y) in &stations {
+        for (&(xb, x, y), &(slope, rate)) in stations.iter().zip(&slopes) {
             let (mut u, mut v) = (1.0, 0.0);
             for fv in self.wake[near_from..].iter().chain(&proxies) {
                 let (du, dv) = induced(fv, x, y, self.core2);
@@ -335,11 +360,14 @@ impl Ldvm {
                 v += dv;
             }
             let relative = u * sa + v * ca - h_dot * ca + (xb - pivot) * alpha_dot;
-            w0.push(relative);
-            vt0.push(u * ca - v * sa + h_dot * sa);
+            let tangential = u * ca - v * sa + h_dot * sa;
+            // Camber: the normal tilts by -slope and moves at `rate`.
+            w0.push(relative - slope * tangential - rate);
+            vt0.push(tangential);
             let (du, dv) = induced(&unit, x, y, self.core2);
-            w1.push(du * sa + dv * ca);
-            vt1.push(du * ca - dv * sa);
+            let unit_tangential = du * ca - dv * sa;
+            w1.push(du * sa + dv * ca - slope * unit_tangential);
+            vt1.push(unit_tangential);
         }
         let a0 = self.coefficients(&w0);
         let a1 = self.coefficients(&w1);

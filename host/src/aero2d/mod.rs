@@ -10,5 +10,6 @@
 //! Leading-edge vortex shedding (LESP), deforming and thick sections, skin
 //! friction and plots are the rest of the aero2d issue.
 
+pub mod camber;
 pub mod ldvm;
 pub mod theory;

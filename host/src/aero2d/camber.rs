@@ -1,0 +1,182 @@
+//! A deforming thin section: the camber line `eta(x, t)` (normal offset
+//! from the chord, chords, positive up) as periodic samples, interpolated
+//! linearly in `x` and by a periodic Catmull-Rom cubic in `t`, so that the
+//! deformation rate is continuous (a rate that jumps between samples would
+//! put spikes into the unsteady loads). This is how the section deformation history from
+//! the system analysis (mid-span section x, y over a period) enters the 2D
+//! analysis, after it is expressed in the chord frame.
+
+/// Why a camber history is refused.
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum CamberError {
+    /// Stations must rise strictly from 0 to 1.
+    #[error("chord stations must rise strictly from 0 to 1 (got {0} stations)")]
+    Stations(usize),
+    /// Every sample needs one offset per station.
+    #[error("sample {sample} has {got} offsets for {expected} stations")]
+    SampleLength {
+        /// Sample index.
+        sample: usize,
+        /// Offsets given.
+        got: usize,
+        /// Stations.
+        expected: usize,
+    },
+    /// A period and at least one sample are needed.
+    #[error("the period must be positive and there must be at least one sample")]
+    Period,
+    /// A value is not finite.
+    #[error("a camber offset or station is not finite")]
+    NotFinite,
+}
+
+/// A periodic camber-line history.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CamberHistory {
+    stations: Vec<f64>,
+    samples: Vec<Vec<f64>>,
+    period: f64,
+}
+
+impl CamberHistory {
+    /// `samples[i][j]`: offset at station `stations[j]` at time
+    /// `i * period / samples.len()` (chords, time in chords travelled).
+    pub fn new(
+        stations: Vec<f64>,
+        samples: Vec<Vec<f64>>,
+        period: f64,
+    ) -> Result<Self, CamberError> {
+        let n = stations.len();
+        let rising = stations.windows(2).all(|w| w[1] > w[0]);
+        if n < 2 || !rising || stations[0] != 0.0 || stations[n - 1] != 1.0 {
+            return Err(CamberError::Stations(n));
+        }
+        // Written so that a NaN period fails.
+        let period_ok = period > 0.0;
+        if !period_ok || samples.is_empty() {
+            return Err(CamberError::Period);
+        }
+        for (i, s) in samples.iter().enumerate() {
+            if s.len() != n {
+                return Err(CamberError::SampleLength {
+                    sample: i,
+                    got: s.len(),
+                    expected: n,
+                });
+            }
+        }
+        if !stations
+            .iter()
+            .chain(samples.iter().flatten())
+            .all(|v| v.is_finite())
+        {
+            return Err(CamberError::NotFinite);
+        }
+        Ok(Self {
+            stations,
+            samples,
+            period,
+        })
+    }
+
+    /// A camber line that does not change.
+    pub fn steady(stations: Vec<f64>, offsets: Vec<f64>) -> Result<Self, CamberError> {
+        Self::new(stations, vec![offsets], 1.0)
+    }
+
+    fn at_sample(&self, i: usize, x: f64) -> (f64, f64) {
+        let s = &self.stations;
+        let j = s.partition_point(|&v| v <= x).clamp(1, s.len() - 1);
+        let (x0, x1) = (s[j - 1], s[j]);
+        let (e0, e1) = (self.samples[i][j - 1], self.samples[i][j]);
+        let slope = (e1 - e0) / (x1 - x0);
+        (e0 + slope * (x - x0), slope)
+    }
+
+    /// `(eta, d eta/dx, d eta/dt)` at station `x` and time `t`.
+    pub fn at(&self, x: f64, t: f64) -> (f64, f64, f64) {
+        let n = self.samples.len();
+        if n == 1 {
+            let (e, s) = self.at_sample(0, x);
+            return (e, s, 0.0);
+        }
+        let dt = self.period / n as f64;
+        let phase = (t / dt).rem_euclid(n as f64);
+        let i = (phase.floor() as usize).min(n - 1);
+        let w = phase - i as f64;
+        let [p0, p1, p2, p3] = [i + n - 1, i, i + 1, i + 2].map(|j| self.at_sample(j % n, x));
+        // Catmull-Rom: C1 through p1 (w = 0) and p2 (w = 1).
+        let cubic = |a: f64, b: f64, c: f64, d: f64| -> (f64, f64) {
+            let (c1, c2, c3) = (
+                0.5 * (c - a),
+                a - 2.5 * b + 2.0 * c - 0.5 * d,
+                0.5 * (d - a) + 1.5 * (b - c),
+            );
+            (
+                b + w * (c1 + w * (c2 + w * c3)),
+                c1 + w * (2.0 * c2 + 3.0 * w * c3),
+            )
+        };
+        let (eta, deta_dw) = cubic(p0.0, p1.0, p2.0, p3.0);
+        let (slope, _) = cubic(p0.1, p1.1, p2.1, p3.1);
+        (eta, slope, deta_dw / dt)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A sinusoidal history sampled 64 times a period is reproduced, with its
+    /// rate, to the accuracy of a cubic.
+    #[test]
+    fn periodic_cubic_reproduces_a_sinusoid_and_its_rate() {
+        let (period, n) = (2.0, 64);
+        let stations = vec![0.0, 1.0];
+        let shape = |t: f64| 0.01 * (2.0 * std::f64::consts::PI * t / period).sin();
+        let samples = (0..n)
+            .map(|i| vec![0.0, shape(i as f64 * period / n as f64)])
+            .collect();
+        let c = CamberHistory::new(stations, samples, period).unwrap();
+        let omega = 2.0 * std::f64::consts::PI / period;
+        let h = period / n as f64;
+        // At the nodes the Catmull-Rom rate is the central difference, whose
+        // truncation error is A omega^3 h^2 / 6 (5.0e-5 here); in between the
+        // cubic is closer.
+        let rate_bound = 0.01 * omega.powi(3) * h * h / 6.0 * 1.05;
+        for k in 0..200 {
+            let t = k as f64 * 0.0137;
+            let (eta, slope, rate) = c.at(1.0, t);
+            assert!((eta - shape(t)).abs() < 1e-6, "{t}");
+            assert!((slope - shape(t)).abs() < 1e-6, "{t}"); // eta(1) - eta(0) over 1
+            assert!(
+                (rate - 0.01 * omega * (omega * t).cos()).abs() < rate_bound,
+                "{t}: {rate}"
+            );
+        }
+    }
+
+    #[test]
+    fn bad_histories_are_refused() {
+        assert_eq!(
+            CamberHistory::steady(vec![0.0, 0.5], vec![0.0, 0.0]),
+            Err(CamberError::Stations(2))
+        );
+        assert!(matches!(
+            CamberHistory::new(vec![0.0, 1.0], vec![vec![0.0]], 1.0),
+            Err(CamberError::SampleLength {
+                sample: 0,
+                got: 1,
+                expected: 2
+            })
+        ));
+        assert_eq!(
+            CamberHistory::new(vec![0.0, 1.0], vec![vec![0.0, f64::NAN]], 1.0),
+            Err(CamberError::NotFinite)
+        );
+        assert_eq!(
+            CamberHistory::new(vec![0.0, 1.0], vec![vec![0.0, 0.0]], 0.0),
+            Err(CamberError::Period)
+        );
+    }
+}
