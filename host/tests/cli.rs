@@ -113,6 +113,6 @@ fn aero2d_reports_thrust_beside_garrick() {
     let bad = fwav(&["aero2d", "--section", "naca0012"]);
     assert_eq!(bad.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("only `flat`"));
-    let bad = fwav(&["aero2d", "--reduced-frequency", "-1"]);
+    let bad = fwav(&["aero2d", "--reduced-frequency=-1"]);
     assert!(String::from_utf8_lossy(&bad.stderr).contains("--reduced-frequency"));
 }
