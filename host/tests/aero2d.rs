@@ -296,4 +296,15 @@ fn camber_that_is_a_rotation_lifts_like_pitch() {
         100.0 * (b / a - 1.0)
     );
     assert!((b / a - 1.0).abs() < 0.02, "{a} vs {b}");
+    // And the same mean input power: pitch work = deformation work.
+    let (_, cp_pitch, _) = cycle_means(&pitch, period, 1);
+    let (_, cp_flex, _) = cycle_means(&flex, period, 1);
+    println!(
+        "mean power: pitching {cp_pitch:.6}, rotating camber {cp_flex:.6} ({:+.2}%)",
+        100.0 * (cp_flex / cp_pitch - 1.0)
+    );
+    assert!(
+        (cp_flex / cp_pitch - 1.0).abs() < 0.02,
+        "{cp_pitch} vs {cp_flex}"
+    );
 }

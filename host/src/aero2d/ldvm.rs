@@ -140,6 +140,8 @@ struct LoadIntegrals {
     q_normal: f64,
     /// sum Gamma_j (1 - x_j^2) / 2, whose rate is the unsteady moment.
     q_moment: f64,
+    /// Quasi-steady work rate against the camber motion, sum V_t Gamma_j eta_t,j.
+    deform_quasi: f64,
 }
 
 /// The solver state.
@@ -153,6 +155,9 @@ pub struct Ldvm {
     bound: Vec<FreeVortex>,
     /// Load integrals of the previous step.
     loads: Option<LoadIntegrals>,
+    /// Running bound circulation from the leading edge to each station, of
+    /// the previous step (for the unsteady pressure on a deforming section).
+    running_previous: Vec<f64>,
     /// `cos(n theta_k)`, row n (0..=N), column k: the Fourier projection.
     cos_table: Vec<f64>,
     /// Row n, column j: the integral of term n of the Glauert series over
@@ -209,6 +214,7 @@ impl Ldvm {
             cos_table,
             panel_table,
             camber: None,
+            running_previous: Vec::new(),
             motion,
             settings,
             theta,
@@ -222,7 +228,8 @@ impl Ldvm {
 
     /// A deforming section: the camber line follows `camber` (small-camber
     /// thin-airfoil treatment: the normal tilts by `-d eta/dx` and moves
-    /// with `d eta/dt`; loads are integrated along the chord).
+    /// with `d eta/dt`; loads are integrated along the chord, and the input
+    /// power includes the work of the deformation, `-int dp eta_t dx`).
     pub fn with_camber(mut self, camber: CamberHistory) -> Self {
         self.camber = Some(camber);
         self
@@ -407,6 +414,7 @@ impl Ldvm {
             suction: PI * a[0] * a[0],
             q_normal: 0.0,
             q_moment: 0.0,
+            deform_quasi: 0.0,
         };
         for (j, (v, &(xb, _, _))) in self.bound.iter().zip(&stations).enumerate() {
             let g = -v.gamma; // clockwise
@@ -415,7 +423,30 @@ impl Ldvm {
             now.moment += vt * g * xb;
             now.q_normal += g * (1.0 - xb);
             now.q_moment += g * 0.5 * (1.0 - xb * xb);
+            now.deform_quasi += vt * g * slopes[j].1;
         }
+        // Deformation work: -int dp eta_t dx, with the unsteady part of the
+        // pressure jump per station, dx_j dPhi_j/dt (Phi: running bound
+        // circulation to the station's centre).
+        let mut running = Vec::with_capacity(self.bound.len());
+        let mut sum = 0.0;
+        for v in &self.bound {
+            let g = -v.gamma;
+            running.push(sum + 0.5 * g);
+            sum += g;
+        }
+        let unsteady_deform: f64 = if self.running_previous.len() == running.len() {
+            let dtheta = PI / self.theta.len() as f64;
+            running
+                .iter()
+                .zip(&self.running_previous)
+                .zip(self.theta.iter().zip(&slopes))
+                .map(|((p, q), (th, &(_, rate)))| 0.5 * th.sin() * dtheta * (p - q) / dt * rate)
+                .sum()
+        } else {
+            0.0
+        };
+        self.running_previous = running;
         if let Some(prev) = self.loads.replace(now) {
             // The backward differences are the loads at the half step: take
             // the kinematics there too, or the added-mass force (large at
@@ -431,7 +462,8 @@ impl Ldvm {
             let fx = normal * sm - suction * cm;
             let fy = normal * cm + suction * sm;
             let m_pivot_nose_up = moment_le + pivot * normal;
-            let power = -fy * h_dot_m - m_pivot_nose_up * alpha_dot_m;
+            let deformation = 0.5 * (now.deform_quasi + prev.deform_quasi) + unsteady_deform;
+            let power = -fy * h_dot_m - m_pivot_nose_up * alpha_dot_m - deformation;
             history.time.push(tm);
             history.cl.push(2.0 * fy);
             history.ct.push(-2.0 * fx);
