@@ -2,7 +2,7 @@
 //! controller, drive the bridge, queue telemetry, pet the watchdog. It runs
 //! on the high-priority executor so link traffic never delays it.
 
-use embassy_time::{Duration, Ticker};
+use embassy_time::{Duration, Instant, Ticker};
 use fwav_fc_core::controller::Measurement;
 use fwav_protocol::DeviceMessage;
 
@@ -15,10 +15,20 @@ use crate::watchdog;
 /// The control task.
 #[embassy_executor::task]
 pub async fn run(mut bridge: HBridge, mut encoder: Encoder, mut analog: Analog) {
-    let mut ticker = Ticker::every(Duration::from_hz(board::CONTROL_HZ));
+    let period = Duration::from_hz(board::CONTROL_HZ);
+    let mut ticker = Ticker::every(period);
     let dt = 1.0 / board::CONTROL_HZ as f32;
+    let mut last = Instant::now();
     loop {
         ticker.next().await;
+        // After a stall (a flash erase halts the CPU for seconds, only while
+        // disarmed) the ticker would fire once per missed period back to
+        // back; start afresh instead.
+        let now = Instant::now();
+        if now - last > period * 10 {
+            ticker.reset();
+        }
+        last = now;
         let m = Measurement {
             angle_rad: encoder.angle(),
             current_a: analog.current_a(),

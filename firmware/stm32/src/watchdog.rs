@@ -24,14 +24,21 @@ pub fn start() {
 }
 
 /// Changes the timeout; takes effect after the register update completes.
+///
+/// Runs in a critical section: a pet from the control loop (a higher
+/// priority) between the unlock and the writes would re-lock PR/RLR and the
+/// new timeout would be silently lost, so a flash erase would then outlast
+/// the short timeout. It only runs around a save, while disarmed.
 pub fn set_reload(counts: u16) {
-    IWDG.kr().write(|w| w.set_key(Key::ENABLE));
-    // A previous update must finish before PR/RLR accept a new value.
-    while IWDG.sr().read().pvu() || IWDG.sr().read().rvu() {}
-    IWDG.pr().write(|w| w.set_pr(Pr::DIVIDE_BY64));
-    IWDG.rlr().write(|w| w.set_rl(counts));
-    while IWDG.sr().read().pvu() || IWDG.sr().read().rvu() {}
-    pet();
+    critical_section::with(|_| {
+        IWDG.kr().write(|w| w.set_key(Key::ENABLE));
+        // A previous update must finish before PR/RLR accept a new value.
+        while IWDG.sr().read().pvu() || IWDG.sr().read().rvu() {}
+        IWDG.pr().write(|w| w.set_pr(Pr::DIVIDE_BY64));
+        IWDG.rlr().write(|w| w.set_rl(counts));
+        while IWDG.sr().read().pvu() || IWDG.sr().read().rvu() {}
+        pet();
+    });
 }
 
 /// Reloads the counter (called by the control loop every period).
