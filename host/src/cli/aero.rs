@@ -56,7 +56,8 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         duration: f64::from(a.cycles) * period,
         ..defaults
     };
-    let history = Ldvm::new(motion, settings).run();
+    let mut solver = Ldvm::new(motion, settings);
+    let history = solver.run();
     let (ct, cp, eta) = cycle_means(&history, period, 1);
     let (ct_prev, _, _) = {
         // The cycle before the last, for the periodicity check.
@@ -84,7 +85,7 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
             "mean_cp": cp,
             "efficiency": eta,
             "mean_ct_change_last_two_cycles": periodicity,
-            "wake_vortices": history.time.len(),
+            "wake_vortices": solver.wake().len(),
         });
         if let Some((gct, gcp, geta)) = garrick {
             v["garrick"] = serde_json::json!({"mean_ct": gct, "mean_cp": gcp, "efficiency": geta});
