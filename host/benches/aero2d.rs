@@ -6,14 +6,7 @@ use fwav::aero2d::ldvm::{Ldvm, Motion, Settings};
 
 fn four_cycles(c: &mut Criterion) {
     let k = 1.0;
-    let motion = Motion {
-        reduced_frequency: k,
-        plunge_amplitude: 0.05,
-        mean_pitch: 0.0,
-        pitch_amplitude: 0.0,
-        pitch_phase: 0.0,
-        pivot: 0.25,
-    };
+    let motion = Motion::plunge(k, 0.05);
     let settings = Settings {
         duration: 4.0 * std::f64::consts::PI / k,
         ..Settings::default()

@@ -39,32 +39,7 @@ enum Command {
     },
     /// 2D unsteady aerodynamics of a plunging/pitching section (cycle-mean
     /// thrust, power, efficiency; Garrick's values for pure plunge).
-    Aero2d {
-        /// Section: flat (thin plate).
-        #[arg(long, default_value = "flat")]
-        section: String,
-        /// Plunge amplitude, chords.
-        #[arg(long, default_value_t = 0.05)]
-        plunge_amplitude: f64,
-        /// Reduced frequency k = omega c / (2 U).
-        #[arg(long, default_value_t = 1.0)]
-        reduced_frequency: f64,
-        /// Pitch amplitude, degrees.
-        #[arg(long, default_value_t = 0.0)]
-        pitch_amplitude_deg: f64,
-        /// Phase by which pitch leads plunge, degrees.
-        #[arg(long, default_value_t = 90.0)]
-        pitch_phase_deg: f64,
-        /// Pitch axis, chords from the leading edge.
-        #[arg(long, default_value_t = 0.25)]
-        pivot: f64,
-        /// Cycles to simulate.
-        #[arg(long, default_value_t = 5)]
-        cycles: u32,
-        /// Machine-readable output.
-        #[arg(long)]
-        json: bool,
-    },
+    Aero2d(cli::aero::Aero2dArgs),
     /// List serial ports, marking those where an fwav device answers.
     Ports {
         /// Machine-readable output.
@@ -146,25 +121,7 @@ fn main() -> ExitCode {
             protocol_info(json);
             Ok(())
         }
-        Command::Aero2d {
-            section,
-            plunge_amplitude,
-            reduced_frequency,
-            pitch_amplitude_deg,
-            pitch_phase_deg,
-            pivot,
-            cycles,
-            json,
-        } => cli::aero::run(&cli::aero::Aero2dArgs {
-            section,
-            plunge_amplitude,
-            reduced_frequency,
-            pitch_amplitude_deg,
-            pitch_phase_deg,
-            pivot,
-            cycles,
-            json,
-        }),
+        Command::Aero2d(args) => cli::aero::run(&args),
         Command::Ports { json } => cli::fly::ports(json),
         Command::Upload {
             port,

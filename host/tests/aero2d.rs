@@ -7,14 +7,7 @@ use fwav::aero2d::ldvm::{cycle_means, Ldvm, Motion, Settings};
 use fwav::aero2d::theory::{garrick_plunge, wagner};
 
 fn plunge(k: f64) -> Motion {
-    Motion {
-        reduced_frequency: k,
-        plunge_amplitude: 0.05,
-        mean_pitch: 0.0,
-        pitch_amplitude: 0.0,
-        pitch_phase: 0.0,
-        pivot: 0.25,
-    }
+    Motion::plunge(k, 0.05)
 }
 
 /// (CT, CP, efficiency) over the last 2 of 5 cycles; 100+ steps a cycle.
@@ -70,14 +63,7 @@ fn garrick_efficiency_within_10_percent() {
 /// Lift after a sudden start at alpha = 0.05 rad over the steady thin-plate
 /// lift 2 pi sin(alpha), against Wagner's function (Jones' approximation).
 fn wagner_errors(dt: f64, s_values: &[f64]) -> Vec<f64> {
-    let motion = Motion {
-        reduced_frequency: 0.0,
-        plunge_amplitude: 0.0,
-        mean_pitch: 0.05,
-        pitch_amplitude: 0.0,
-        pitch_phase: 0.0,
-        pivot: 0.25,
-    };
+    let motion = Motion::steady(0.05);
     let duration = s_values.iter().fold(0.0f64, |a, &b| a.max(b)) / 2.0 + 0.1;
     let history = Ldvm::new(
         motion,
@@ -216,14 +202,7 @@ fn steady_camber_lifts_as_thin_airfoil_theory_says() {
     let stations: Vec<f64> = (0..=40).map(|i| i as f64 / 40.0).collect();
     let offsets = stations.iter().map(|x| 4.0 * m * x * (1.0 - x)).collect();
     let camber = CamberHistory::steady(stations, offsets).unwrap();
-    let motion = Motion {
-        reduced_frequency: 0.0,
-        plunge_amplitude: 0.0,
-        mean_pitch: alpha,
-        pitch_amplitude: 0.0,
-        pitch_phase: 0.0,
-        pivot: 0.25,
-    };
+    let motion = Motion::steady(alpha);
     let history = Ldvm::new(
         motion,
         Settings {

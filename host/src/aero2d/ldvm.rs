@@ -50,6 +50,26 @@ pub struct Motion {
 }
 
 impl Motion {
+    /// Pure plunge `h = h0 sin(omega t)` at reduced frequency `k`, no pitch.
+    pub fn plunge(reduced_frequency: f64, plunge_amplitude: f64) -> Self {
+        Self {
+            reduced_frequency,
+            plunge_amplitude,
+            mean_pitch: 0.0,
+            pitch_amplitude: 0.0,
+            pitch_phase: 0.0,
+            pivot: 0.25,
+        }
+    }
+
+    /// A steady plate at `alpha` (rad), started impulsively at t = 0.
+    pub fn steady(alpha: f64) -> Self {
+        Self {
+            mean_pitch: alpha,
+            ..Self::plunge(0.0, 0.0)
+        }
+    }
+
     /// `(h, h', alpha, alpha')` at time `t`.
     fn at(&self, t: f64) -> (f64, f64, f64, f64) {
         let w = 2.0 * self.reduced_frequency;

@@ -7,14 +7,31 @@ use fwav::aero2d::ldvm::{cycle_means, Ldvm, Motion, Settings};
 use fwav::aero2d::theory::garrick_plunge;
 
 /// The command's options.
+#[derive(clap::Args)]
 pub struct Aero2dArgs {
+    /// Section: flat (thin plate).
+    #[arg(long, default_value = "flat")]
     pub section: String,
+    /// Plunge amplitude, chords.
+    #[arg(long, default_value_t = 0.05)]
     pub plunge_amplitude: f64,
+    /// Reduced frequency k = omega c / (2 U).
+    #[arg(long, default_value_t = 1.0)]
     pub reduced_frequency: f64,
+    /// Pitch amplitude, degrees.
+    #[arg(long, default_value_t = 0.0)]
     pub pitch_amplitude_deg: f64,
+    /// Phase by which pitch leads plunge, degrees.
+    #[arg(long, default_value_t = 90.0)]
     pub pitch_phase_deg: f64,
+    /// Pitch axis, chords from the leading edge.
+    #[arg(long, default_value_t = 0.25)]
     pub pivot: f64,
+    /// Cycles to simulate.
+    #[arg(long, default_value_t = 5)]
     pub cycles: u32,
+    /// Machine-readable output.
+    #[arg(long)]
     pub json: bool,
 }
 
