@@ -525,11 +525,26 @@ impl Ldvm {
 /// Cycle means over the last `cycles` whole periods of a periodic history:
 /// `(CT, CP, efficiency)`.
 pub fn cycle_means(history: &History, period: f64, cycles: usize) -> (f64, f64, f64) {
-    let end = *history.time.last().unwrap_or(&0.0);
+    cycle_means_until(
+        history,
+        period,
+        cycles,
+        *history.time.last().unwrap_or(&0.0),
+    )
+}
+
+/// [`cycle_means`] over the `cycles` periods ending at time `end` (e.g. one
+/// period before the last sample, for a periodicity check).
+pub fn cycle_means_until(
+    history: &History,
+    period: f64,
+    cycles: usize,
+    end: f64,
+) -> (f64, f64, f64) {
     let start = end - period * cycles as f64;
     let (mut ct, mut cp, mut n) = (0.0, 0.0, 0usize);
     for ((t, a), b) in history.time.iter().zip(&history.ct).zip(&history.cp) {
-        if *t > start {
+        if *t > start && *t <= end {
             ct += a;
             cp += b;
             n += 1;

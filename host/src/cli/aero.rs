@@ -3,7 +3,7 @@
 use std::f64::consts::PI;
 
 use anyhow::{bail, Result};
-use fwav::aero2d::ldvm::{cycle_means, Ldvm, Motion, Settings};
+use fwav::aero2d::ldvm::{cycle_means, cycle_means_until, Ldvm, Motion, Settings};
 use fwav::aero2d::theory::garrick_plunge;
 
 /// The command's options.
@@ -76,18 +76,15 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
     let mut solver = Ldvm::new(motion, settings);
     let history = solver.run();
     let (ct, cp, eta) = cycle_means(&history, period, 1);
-    let (ct_prev, _, _) = {
-        // The cycle before the last, for the periodicity check.
-        let mut h = history.clone();
-        let keep = h
-            .time
-            .len()
-            .saturating_sub((period / settings.dt).round() as usize);
-        h.time.truncate(keep);
-        h.ct.truncate(keep);
-        h.cp.truncate(keep);
-        cycle_means(&h, period, 1)
-    };
+    // The cycle before the last, for the periodicity check: the window ends
+    // one period's worth of steps before the last sample.
+    let steps_per_period = (period / settings.dt).round() as usize;
+    let end_previous = history
+        .time
+        .len()
+        .checked_sub(steps_per_period + 1)
+        .map_or(0.0, |i| history.time[i]);
+    let (ct_prev, _, _) = cycle_means_until(&history, period, 1, end_previous);
     let periodicity = (ct - ct_prev) / ct.abs().max(1e-12);
     let garrick = (a.pitch_amplitude_deg == 0.0).then(|| garrick_plunge(k, a.plunge_amplitude));
     if a.json {
