@@ -1,6 +1,7 @@
-//! The discrete-vortex thin-plate solver (LDVM class, Ramesh et al. 2014,
-//! without leading-edge shedding yet), in units of chord, freestream speed
-//! and air density (`c = U = rho = 1`).
+//! The LESP-modulated discrete-vortex method (LDVM, Ramesh, Gopalarathnam,
+//! Granlund, Ol & Edwards 2014, J. Fluid Mech. 751) for a thin, possibly
+//! cambered and deforming section, in units of chord, freestream speed and
+//! air density (`c = U = rho = 1`).
 //!
 //! - Bound vorticity as a Glauert series
 //!   `gamma(theta) = 2 U [A0 (1 + cos theta)/sin theta + sum An sin n theta]`,
@@ -11,6 +12,12 @@
 //! - One trailing-edge vortex shed per step, placed a third of the way from
 //!   the trailing edge to the previous one (Ramesh et al.), its strength set
 //!   by Kelvin's theorem; since `W` is linear in it, solved exactly.
+//! - Leading-edge vortices (switched on by [`Settings::lesp_critical`]): when
+//!   the leading-edge suction parameter `|A0|` would exceed its critical
+//!   value, a vortex is also shed at the leading edge (half a step
+//!   downstream with the relative flow, or a third of the way to the last
+//!   one while shedding continues) and both new strengths follow from
+//!   Kelvin and `A0 = +-LESP_crit`, two linear equations.
 //! - Free vortices with a Vatistas (n = 2) core of radius `1.3 U dt`,
 //!   convected by forward Euler with the velocity induced by the bound and
 //!   free vortices plus the freestream.
@@ -21,7 +28,9 @@
 //!   `2 pi (A0 + A1/2) + 2 pi c/U (3/4 A0' + 1/4 A1' + 1/8 A2')` plus the
 //!   wake term), moment likewise, and the leading-edge suction
 //!   `rho pi c U^2 A0^2` along the chord, which is the thrust of a plunging
-//!   plate. Time derivatives are backward differences, so all loads and the
+//!   plate. The leading-edge vortices are fed through a sheet from the
+//!   leading edge, so the potential jump along the plate starts from their
+//!   total circulation. Time derivatives are backward differences, so all loads and the
 //!   kinematics that multiply them are taken at the half step.
 //!
 //! Cost per step is O(M N_w + N_w^2) for `M` chord points and `N_w` wake
@@ -30,59 +39,8 @@
 use std::f64::consts::PI;
 
 use super::camber::CamberHistory;
-
-/// Prescribed motion of the section (all amplitudes in chords / radians).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Motion {
-    /// Reduced frequency `k = omega c / (2 U)`; 0 for a steady (impulsively
-    /// started) motion.
-    pub reduced_frequency: f64,
-    /// Plunge `h = h0 sin(omega t)`, positive up, chords.
-    pub plunge_amplitude: f64,
-    /// Mean pitch angle (nose up), rad.
-    pub mean_pitch: f64,
-    /// Pitch amplitude, rad: `alpha = mean + a sin(omega t + phase)`.
-    pub pitch_amplitude: f64,
-    /// Phase by which pitch leads plunge, rad.
-    pub pitch_phase: f64,
-    /// Pitch axis, chords from the leading edge.
-    pub pivot: f64,
-}
-
-impl Motion {
-    /// Pure plunge `h = h0 sin(omega t)` at reduced frequency `k`, no pitch.
-    pub fn plunge(reduced_frequency: f64, plunge_amplitude: f64) -> Self {
-        Self {
-            reduced_frequency,
-            plunge_amplitude,
-            mean_pitch: 0.0,
-            pitch_amplitude: 0.0,
-            pitch_phase: 0.0,
-            pivot: 0.25,
-        }
-    }
-
-    /// A steady plate at `alpha` (rad), started impulsively at t = 0.
-    pub fn steady(alpha: f64) -> Self {
-        Self {
-            mean_pitch: alpha,
-            ..Self::plunge(0.0, 0.0)
-        }
-    }
-
-    /// `(h, h', alpha, alpha')` at time `t`.
-    fn at(&self, t: f64) -> (f64, f64, f64, f64) {
-        let w = 2.0 * self.reduced_frequency;
-        let (s, c) = (w * t).sin_cos();
-        let (sp, cp) = (w * t + self.pitch_phase).sin_cos();
-        (
-            self.plunge_amplitude * s,
-            self.plunge_amplitude * w * c,
-            self.mean_pitch + self.pitch_amplitude * sp,
-            self.pitch_amplitude * w * cp,
-        )
-    }
-}
+pub use super::history::{cycle_means, cycle_means_until, History};
+pub use super::motion::{Motion, PitchRamp};
 
 /// Numerical settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -102,6 +60,11 @@ pub struct Settings {
     /// roll-up no longer affects the section, and the O(N^2) cost of
     /// convecting it goes away.
     pub far_wake: f64,
+    /// Critical leading-edge suction parameter (LESP, `|A0|`) beyond which
+    /// a leading-edge vortex is shed each step so that `|A0|` stays at the
+    /// critical value (Ramesh et al. 2014); `None` switches shedding off
+    /// (the attached-flow, Garrick limit).
+    pub lesp_critical: Option<f64>,
 }
 
 impl Default for Settings {
@@ -112,6 +75,7 @@ impl Default for Settings {
             dt: 0.015,
             duration: 10.0,
             far_wake: 1.5,
+            lesp_critical: None,
         }
     }
 }
@@ -125,23 +89,6 @@ pub struct FreeVortex {
     pub y: f64,
     /// Circulation, U c.
     pub gamma: f64,
-}
-
-/// Time histories of a run (coefficients on `1/2 rho U^2 c`).
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct History {
-    /// Time, chords travelled.
-    pub time: Vec<f64>,
-    /// Lift coefficient (force up).
-    pub cl: Vec<f64>,
-    /// Thrust coefficient (force upstream).
-    pub ct: Vec<f64>,
-    /// Input power coefficient (on `1/2 rho U^3 c`).
-    pub cp: Vec<f64>,
-    /// Leading-edge suction parameter A0.
-    pub lesp: Vec<f64>,
-    /// Bound circulation (clockwise positive), U c.
-    pub bound_circulation: Vec<f64>,
 }
 
 /// Far-wake vortices lumped together for induction.
@@ -175,6 +122,15 @@ pub struct Ldvm {
     bound: Vec<FreeVortex>,
     /// Load integrals of the previous step.
     loads: Option<LoadIntegrals>,
+    /// Leading-edge vortices, in shedding order.
+    leading: Vec<FreeVortex>,
+    /// Whether the last step shed a leading-edge vortex (the next one is
+    /// then placed a third of the way towards it).
+    shedding: bool,
+    /// A pitch ramp replacing the harmonic pitch of `motion`.
+    ramp: Option<PitchRamp>,
+    /// The vertical vortex impulse of the previous step.
+    impulse_prev: f64,
     /// Running bound circulation from the leading edge to each station, of
     /// the previous step (for the unsteady pressure on a deforming section).
     running_previous: Vec<f64>,
@@ -192,7 +148,7 @@ pub struct Ldvm {
 /// the kernel by less than 5e-5 relative, and the plain `1/r^2` kernel
 /// (no square root) is used.
 #[inline]
-fn induced(v: &FreeVortex, x: f64, y: f64, core2: f64) -> (f64, f64) {
+pub(crate) fn induced(v: &FreeVortex, x: f64, y: f64, core2: f64) -> (f64, f64) {
     let (dx, dy) = (x - v.x, y - v.y);
     let r2 = dx * dx + dy * dy;
     let denominator = if r2 > 100.0 * core2 {
@@ -202,6 +158,36 @@ fn induced(v: &FreeVortex, x: f64, y: f64, core2: f64) -> (f64, f64) {
     };
     let k = v.gamma / (2.0 * PI * denominator);
     (-dy * k, dx * k)
+}
+
+/// The far wake for induction: groups of [`FAR_GROUP`] consecutive
+/// vortices as one, at their |Gamma|-weighted centroid with their total
+/// circulation (their spread is small against their distance).
+fn far_proxies(far: &[FreeVortex]) -> impl Iterator<Item = FreeVortex> + '_ {
+    far.chunks(FAR_GROUP).map(|group| {
+        let weight: f64 = group
+            .iter()
+            .map(|v| v.gamma.abs())
+            .sum::<f64>()
+            .max(f64::MIN_POSITIVE);
+        let x = group.iter().map(|v| v.x * v.gamma.abs()).sum::<f64>() / weight;
+        let y = group.iter().map(|v| v.y * v.gamma.abs()).sum::<f64>() / weight;
+        FreeVortex {
+            x,
+            y,
+            gamma: group.iter().map(|v| v.gamma).sum(),
+        }
+    })
+}
+
+/// Index of the first vortex of the near wake: vortices are kept in
+/// shedding order and drift downstream, so the far wake (beyond `limit`) is
+/// a prefix.
+fn near_start(vortices: &[FreeVortex], limit: f64) -> usize {
+    vortices
+        .iter()
+        .position(|v| v.x <= limit)
+        .unwrap_or(vortices.len())
 }
 
 impl Ldvm {
@@ -241,6 +227,10 @@ impl Ldvm {
             wake: Vec::new(),
             bound: Vec::new(),
             loads: None,
+            leading: Vec::new(),
+            shedding: false,
+            ramp: None,
+            impulse_prev: 0.0,
             time: 0.0,
             core2: core * core,
         }
@@ -255,42 +245,33 @@ impl Ldvm {
         self
     }
 
-    /// The free vortices.
+    /// Pitch by Eldredge's ramp instead of the harmonic pitch of the motion
+    /// (plunge and pivot still from the motion).
+    pub fn with_pitch_ramp(mut self, ramp: PitchRamp) -> Self {
+        self.ramp = Some(ramp);
+        self
+    }
+
+    /// The trailing-edge vortices, in shedding order.
     pub fn wake(&self) -> &[FreeVortex] {
         &self.wake
     }
 
-    /// The far wake for induction: groups of [`FAR_GROUP`] consecutive
-    /// vortices as one, at their |Gamma|-weighted centroid with their total
-    /// circulation (their spread is small against their distance).
-    fn far_proxies(&self, near_from: usize) -> Vec<FreeVortex> {
-        self.wake[..near_from]
-            .chunks(FAR_GROUP)
-            .map(|group| {
-                let weight: f64 = group
-                    .iter()
-                    .map(|v| v.gamma.abs())
-                    .sum::<f64>()
-                    .max(f64::MIN_POSITIVE);
-                let x = group.iter().map(|v| v.x * v.gamma.abs()).sum::<f64>() / weight;
-                let y = group.iter().map(|v| v.y * v.gamma.abs()).sum::<f64>() / weight;
-                FreeVortex {
-                    x,
-                    y,
-                    gamma: group.iter().map(|v| v.gamma).sum(),
-                }
-            })
-            .collect()
+    /// The leading-edge vortices, in shedding order.
+    pub fn leading_edge_vortices(&self) -> &[FreeVortex] {
+        &self.leading
     }
 
-    /// Index of the first vortex of the near wake. The wake is kept in
-    /// shedding order and drifts downstream, so the far wake is a prefix.
-    fn near_wake_start(&self, x_te: f64) -> usize {
-        let limit = x_te + self.settings.far_wake;
-        self.wake
-            .iter()
-            .position(|v| v.x <= limit)
-            .unwrap_or(self.wake.len())
+    /// `(h, h', alpha, alpha')` at time `t`.
+    fn kinematics(&self, t: f64) -> (f64, f64, f64, f64) {
+        let (h, h_dot, alpha, alpha_dot) = self.motion.at(t);
+        match &self.ramp {
+            Some(r) => {
+                let (a, a_dot) = r.at(t);
+                (h, h_dot, a, a_dot)
+            }
+            None => (h, h_dot, alpha, alpha_dot),
+        }
     }
 
     /// Global position of chordwise station `xb` (chords from the LE).
@@ -333,7 +314,7 @@ impl Ldvm {
         let dt = self.settings.dt;
         self.time += dt;
         let t = self.time;
-        let (h, h_dot, alpha, alpha_dot) = self.motion.at(t);
+        let (h, h_dot, alpha, alpha_dot) = self.kinematics(t);
         let (sa, ca) = alpha.sin_cos();
         let pivot = self.motion.pivot;
         let shape = |xb: f64| {
@@ -354,61 +335,134 @@ impl Ldvm {
                 (xb, x + eta * sa, y + eta * ca)
             })
             .collect();
-
-        // The new trailing-edge vortex.
-        let te = {
-            let (x, y) = self.body_point(1.0, h, alpha);
-            let eta = shape(1.0).0;
+        let edge = |xb: f64| {
+            let (x, y) = self.body_point(xb, h, alpha);
+            let eta = shape(xb).0;
             (x + eta * sa, y + eta * ca)
         };
-        let (nx, ny) = match self.wake.last() {
-            Some(last) => (te.0 + (last.x - te.0) / 3.0, te.1 + (last.y - te.1) / 3.0),
-            None => (te.0 + 0.5 * dt, te.1),
-        };
-        // Normal velocities without and with a unit new vortex.
-        let unit = FreeVortex {
-            x: nx,
-            y: ny,
-            gamma: 1.0,
-        };
-        let mut w0 = Vec::with_capacity(stations.len());
-        let mut w1 = Vec::with_capacity(stations.len());
-        // Tangential flow relative to the plate (without bound vorticity),
-        // split into the part known now and the part per unit new vortex.
-        let mut vt0 = Vec::with_capacity(stations.len());
-        let mut vt1 = Vec::with_capacity(stations.len());
-        let near_from = self.near_wake_start(te.0);
-        let proxies = self.far_proxies(near_from);
-        for (&(xb, x, y), &(slope, rate)) in stations.iter().zip(&slopes) {
-            let (mut u, mut v) = (1.0, 0.0);
-            for fv in self.wake[near_from..].iter().chain(&proxies) {
+
+        // What induces velocity: the near wakes vortex by vortex, the far
+        // wakes as proxies.
+        let te = edge(1.0);
+        let limit = te.0 + self.settings.far_wake;
+        let near_from = near_start(&self.wake, limit);
+        let lev_near_from = near_start(&self.leading, limit);
+        let sources: Vec<FreeVortex> = self.wake[near_from..]
+            .iter()
+            .chain(&self.leading[lev_near_from..])
+            .copied()
+            .chain(far_proxies(&self.wake[..near_from]))
+            .chain(far_proxies(&self.leading[..lev_near_from]))
+            .collect();
+        let induced_by = |x: f64, y: f64, extra: &[FreeVortex]| {
+            let (mut u, mut v) = (0.0, 0.0);
+            for fv in sources.iter().chain(extra) {
                 let (du, dv) = induced(fv, x, y, self.core2);
                 u += du;
                 v += dv;
             }
+            (u, v)
+        };
+
+        // The new trailing-edge vortex, a third of the way to the last one.
+        let (nx, ny) = match self.wake.last() {
+            Some(last) => (te.0 + (last.x - te.0) / 3.0, te.1 + (last.y - te.1) / 3.0),
+            None => (te.0 + 0.5 * dt, te.1),
+        };
+        // A candidate leading-edge vortex: a third of the way to the last
+        // one while shedding goes on, else half a step downstream of the
+        // leading edge with the flow relative to it (Ramesh et al. 2014).
+        let lesp_critical = self.settings.lesp_critical;
+        let lev_at = lesp_critical.map(|_| {
+            let le = edge(0.0);
+            match (self.shedding, self.leading.last()) {
+                (true, Some(last)) => (le.0 + (last.x - le.0) / 3.0, le.1 + (last.y - le.1) / 3.0),
+                _ => {
+                    let (u, v) = induced_by(le.0, le.1, &[]);
+                    let relative = (
+                        1.0 + u - pivot * sa * alpha_dot,
+                        v - h_dot - pivot * ca * alpha_dot,
+                    );
+                    (le.0 + 0.5 * dt * relative.0, le.1 + 0.5 * dt * relative.1)
+                }
+            }
+        });
+        // Normal and tangential flow relative to the plate (without bound
+        // vorticity): the part known now, and per unit new vortex.
+        let unit = |(x, y): (f64, f64)| FreeVortex { x, y, gamma: 1.0 };
+        let news: Vec<FreeVortex> = std::iter::once(unit((nx, ny)))
+            .chain(lev_at.map(unit))
+            .collect();
+        let m = stations.len();
+        let mut w = vec![Vec::with_capacity(m); 1 + news.len()];
+        let mut vt = vec![Vec::with_capacity(m); 1 + news.len()];
+        for (&(xb, x, y), &(slope, rate)) in stations.iter().zip(&slopes) {
+            let (du, dv) = induced_by(x, y, &[]);
+            let (u, v) = (1.0 + du, dv);
             let relative = u * sa + v * ca - h_dot * ca + (xb - pivot) * alpha_dot;
             let tangential = u * ca - v * sa + h_dot * sa;
             // Camber: the normal tilts by -slope and moves at `rate`.
-            w0.push(relative - slope * tangential - rate);
-            vt0.push(tangential);
-            let (du, dv) = induced(&unit, x, y, self.core2);
-            let unit_tangential = du * ca - dv * sa;
-            w1.push(du * sa + dv * ca - slope * unit_tangential);
-            vt1.push(unit_tangential);
+            w[0].push(relative - slope * tangential - rate);
+            vt[0].push(tangential);
+            for (k, new) in news.iter().enumerate() {
+                let (du, dv) = induced(new, x, y, self.core2);
+                let unit_tangential = du * ca - dv * sa;
+                w[k + 1].push(du * sa + dv * ca - slope * unit_tangential);
+                vt[k + 1].push(unit_tangential);
+            }
         }
-        let a0 = self.coefficients(&w0);
-        let a1 = self.coefficients(&w1);
+        let coefficients: Vec<Vec<f64>> = w.iter().map(|w| self.coefficients(w)).collect();
         let circulation = |a: &[f64]| PI * (a[0] + 0.5 * a[1]);
-        let shed_so_far: f64 = self.wake.iter().map(|v| v.gamma).sum();
-        // Kelvin: sum of wake (ccw) = bound (clockwise), linear in the new one.
-        let m = circulation(&a1);
-        let gamma_new = (circulation(&a0) - shed_so_far) / (1.0 - m);
-        let a: Vec<f64> = a0.iter().zip(&a1).map(|(p, q)| p + gamma_new * q).collect();
+        let shed_so_far: f64 = self.wake.iter().chain(&self.leading).map(|v| v.gamma).sum();
+        // Kelvin: the shed (ccw) circulation equals the bound (clockwise)
+        // one; both are linear in the new vortices.
+        let [known, per_te] = [&coefficients[0], &coefficients[1]];
+        let kelvin_te = 1.0 - circulation(per_te);
+        let mut strengths = vec![(circulation(known) - shed_so_far) / kelvin_te];
+        if let (Some(critical), Some(per_le)) = (lesp_critical, coefficients.get(2)) {
+            let a0 = known[0] + strengths[0] * per_te[0];
+            if a0.abs() > critical {
+                // Kelvin and A0 = +-critical, two linear equations.
+                let kelvin_le = 1.0 - circulation(per_le);
+                let rhs = [
+                    circulation(known) - shed_so_far,
+                    critical.copysign(a0) - known[0],
+                ];
+                let det = kelvin_te * per_le[0] - kelvin_le * per_te[0];
+                strengths = vec![
+                    (rhs[0] * per_le[0] - kelvin_le * rhs[1]) / det,
+                    (kelvin_te * rhs[1] - per_te[0] * rhs[0]) / det,
+                ];
+            }
+        }
+        self.shedding = strengths.len() == 2;
+        let a: Vec<f64> = (0..known.len())
+            .map(|n| {
+                known[n]
+                    + strengths
+                        .iter()
+                        .zip(&coefficients[1..])
+                        .map(|(g, c)| g * c[n])
+                        .sum::<f64>()
+            })
+            .collect();
+        let tangential: Vec<f64> = (0..m)
+            .map(|j| {
+                vt[0][j]
+                    + strengths
+                        .iter()
+                        .zip(&vt[1..])
+                        .map(|(g, v)| g * v[j])
+                        .sum::<f64>()
+            })
+            .collect();
         self.wake.push(FreeVortex {
-            x: nx,
-            y: ny,
-            gamma: gamma_new,
+            gamma: strengths[0],
+            ..news[0]
         });
+        if let (Some(&gamma), Some(new)) = (strengths.get(1), news.get(1)) {
+            self.leading.push(FreeVortex { gamma, ..*new });
+        }
 
         // Bound vortices: the analytic integral of gamma over each panel.
         let m_points = self.theta.len();
@@ -428,17 +482,24 @@ impl Ldvm {
         // vortices: N = sum V_t Gamma_j + d/dt sum Gamma_j (1 - x_j),
         // M_LE = -(sum V_t Gamma_j x_j + d/dt sum Gamma_j (1 - x_j^2) / 2),
         // plus the leading-edge suction pi A0^2 along the chord.
+        // The leading-edge vortices are fed through a sheet from the
+        // leading edge, across which the potential jumps by their (clockwise)
+        // circulation: the jump along the plate starts from that value at
+        // x = 0 instead of 0. Without it, each shed vortex would take its
+        // circulation out of the bound sheet in one step and the unsteady
+        // term would read that as a large, spurious loss of normal force.
+        let edge_jump = -self.leading.iter().map(|v| v.gamma).sum::<f64>();
         let mut now = LoadIntegrals {
             normal: 0.0,
             moment: 0.0,
             suction: PI * a[0] * a[0],
-            q_normal: 0.0,
-            q_moment: 0.0,
+            q_normal: edge_jump,
+            q_moment: 0.5 * edge_jump,
             deform_quasi: 0.0,
         };
         for (j, (v, &(xb, _, _))) in self.bound.iter().zip(&stations).enumerate() {
             let g = -v.gamma; // clockwise
-            let vt = vt0[j] + gamma_new * vt1[j];
+            let vt = tangential[j];
             now.normal += vt * g;
             now.moment += vt * g * xb;
             now.q_normal += g * (1.0 - xb);
@@ -449,7 +510,7 @@ impl Ldvm {
         // pressure jump per station, dx_j dPhi_j/dt (Phi: running bound
         // circulation to the station's centre).
         let mut running = Vec::with_capacity(self.bound.len());
-        let mut sum = 0.0;
+        let mut sum = edge_jump;
         for v in &self.bound {
             let g = -v.gamma;
             running.push(sum + 0.5 * g);
@@ -467,13 +528,22 @@ impl Ldvm {
             0.0
         };
         self.running_previous = running;
+        // The vertical impulse of all the vorticity, bound and free (ccw
+        // circulation times x; frame-independent since it sums to zero).
+        let impulse_now: f64 = self
+            .bound
+            .iter()
+            .chain(&self.wake)
+            .chain(&self.leading)
+            .map(|v| v.gamma * v.x)
+            .sum();
         if let Some(prev) = self.loads.replace(now) {
             // The backward differences are the loads at the half step: take
             // the kinematics there too, or the added-mass force (large at
             // high k, in quadrature with the velocity) leaks into the mean
             // power through an O(omega dt) phase error.
             let tm = t - 0.5 * dt;
-            let (_, h_dot_m, alpha_m, alpha_dot_m) = self.motion.at(tm);
+            let (_, h_dot_m, alpha_m, alpha_dot_m) = self.kinematics(tm);
             let normal = 0.5 * (now.normal + prev.normal) + (now.q_normal - prev.q_normal) / dt;
             let moment_le =
                 -(0.5 * (now.moment + prev.moment) + (now.q_moment - prev.q_moment) / dt);
@@ -489,22 +559,29 @@ impl Ldvm {
             history.ct.push(-2.0 * fx);
             history.cp.push(2.0 * power);
             history.lesp.push(a[0]);
+            history
+                .cl_impulse
+                .push(2.0 * (impulse_now - self.impulse_prev) / dt);
             history.bound_circulation.push(circulation(&a));
         }
 
-        // Convect the free vortices: the near wake with the velocity induced
-        // by everything (the far wake as proxies), the far wake with the
-        // freestream. (The new vortex joined the near wake.)
-        let velocities: Vec<(f64, f64)> = self.wake[near_from..]
+        self.impulse_prev = impulse_now;
+        // Convect the free vortices: the near wakes with the velocity
+        // induced by everything (the far wakes as proxies), the far wakes
+        // with the freestream. (The new vortices joined the near wakes.)
+        let proxies: Vec<FreeVortex> = far_proxies(&self.wake[..near_from])
+            .chain(far_proxies(&self.leading[..lev_near_from]))
+            .collect();
+        let near: Vec<FreeVortex> = self.wake[near_from..]
+            .iter()
+            .chain(&self.leading[lev_near_from..])
+            .copied()
+            .collect();
+        let velocities: Vec<(f64, f64)> = near
             .iter()
             .map(|p| {
                 let (mut u, mut v) = (1.0, 0.0);
-                for q in self
-                    .bound
-                    .iter()
-                    .chain(&self.wake[near_from..])
-                    .chain(&proxies)
-                {
+                for q in self.bound.iter().chain(&near).chain(&proxies) {
                     let (du, dv) = induced(q, p.x, p.y, self.core2);
                     u += du;
                     v += dv;
@@ -512,44 +589,19 @@ impl Ldvm {
                 (u, v)
             })
             .collect();
-        for p in &mut self.wake[..near_from] {
+        for p in self.wake[..near_from]
+            .iter_mut()
+            .chain(&mut self.leading[..lev_near_from])
+        {
             p.x += dt;
         }
-        for (p, (u, v)) in self.wake[near_from..].iter_mut().zip(velocities) {
+        for (p, (u, v)) in self.wake[near_from..]
+            .iter_mut()
+            .chain(&mut self.leading[lev_near_from..])
+            .zip(velocities)
+        {
             p.x += u * dt;
             p.y += v * dt;
         }
     }
-}
-
-/// Cycle means over the last `cycles` whole periods of a periodic history:
-/// `(CT, CP, efficiency)`.
-pub fn cycle_means(history: &History, period: f64, cycles: usize) -> (f64, f64, f64) {
-    cycle_means_until(
-        history,
-        period,
-        cycles,
-        *history.time.last().unwrap_or(&0.0),
-    )
-}
-
-/// [`cycle_means`] over the `cycles` periods ending at time `end` (e.g. one
-/// period before the last sample, for a periodicity check).
-pub fn cycle_means_until(
-    history: &History,
-    period: f64,
-    cycles: usize,
-    end: f64,
-) -> (f64, f64, f64) {
-    let start = end - period * cycles as f64;
-    let (mut ct, mut cp, mut n) = (0.0, 0.0, 0usize);
-    for ((t, a), b) in history.time.iter().zip(&history.ct).zip(&history.cp) {
-        if *t > start && *t <= end {
-            ct += a;
-            cp += b;
-            n += 1;
-        }
-    }
-    let n = n.max(1) as f64;
-    (ct / n, cp / n, ct / cp)
 }
