@@ -28,6 +28,22 @@ pub enum CamberError {
     /// A value is not finite.
     #[error("a camber offset or station is not finite")]
     NotFinite,
+    /// Section points must run from the leading edge to the trailing edge.
+    #[error("sample {sample}: point {point} does not lie downstream of the one before (x must rise from the leading edge to the trailing edge)")]
+    PointOrder {
+        /// Sample index.
+        sample: usize,
+        /// Point index.
+        point: usize,
+    },
+    /// Too few points in a sample.
+    #[error("sample {sample} has {got} points; at least 2 are needed")]
+    TooFewPoints {
+        /// Sample index.
+        sample: usize,
+        /// Points given.
+        got: usize,
+    },
 }
 
 /// A periodic camber-line history.
@@ -77,6 +93,60 @@ impl CamberHistory {
             samples,
             period,
         })
+    }
+
+    /// The camber history of a deforming section given as the `(x, y)` of
+    /// its mid-line points over one period (the mid-span section history of
+    /// the system analysis), each sample in the section's kinematic frame:
+    /// chords, the undeformed leading edge at (0, 0) and trailing edge at
+    /// (1, 0), y normal to that chord; samples equally spaced over `period`
+    /// (chords travelled). Each sample is resampled linearly onto `stations`
+    /// equally spaced stations from 0 to 1, extending the end values
+    /// linearly where the deformed line is shorter: the offsets are the
+    /// camber (thin-airfoil theory keeps the normal offset; the small
+    /// chordwise motion of the points is neglected, second order in the
+    /// deflection).
+    pub fn from_section_points(
+        samples: &[Vec<(f64, f64)>],
+        period: f64,
+        stations: usize,
+    ) -> Result<Self, CamberError> {
+        if stations < 2 {
+            return Err(CamberError::Stations(stations));
+        }
+        let grid: Vec<f64> = (0..stations)
+            .map(|i| i as f64 / (stations - 1) as f64)
+            .collect();
+        let mut offsets = Vec::with_capacity(samples.len());
+        for (i, points) in samples.iter().enumerate() {
+            if points.len() < 2 {
+                return Err(CamberError::TooFewPoints {
+                    sample: i,
+                    got: points.len(),
+                });
+            }
+            if !points.iter().all(|(x, y)| x.is_finite() && y.is_finite()) {
+                return Err(CamberError::NotFinite);
+            }
+            if let Some(j) = points.windows(2).position(|w| w[1].0 <= w[0].0) {
+                return Err(CamberError::PointOrder {
+                    sample: i,
+                    point: j + 1,
+                });
+            }
+            let eta = grid
+                .iter()
+                .map(|&x| {
+                    let k = points
+                        .partition_point(|p| p.0 <= x)
+                        .clamp(1, points.len() - 1);
+                    let ((x0, y0), (x1, y1)) = (points[k - 1], points[k]);
+                    y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+                })
+                .collect();
+            offsets.push(eta);
+        }
+        Self::new(grid, offsets, period)
     }
 
     /// A camber line that does not change.
@@ -154,6 +224,41 @@ mod tests {
                 "{t}: {rate}"
             );
         }
+    }
+
+    /// A history given as section points gives back the camber of those
+    /// points at the stations, and refuses points out of order.
+    #[test]
+    fn section_points_become_camber() {
+        let line = |a: f64| -> Vec<(f64, f64)> {
+            (0..=10)
+                .map(|i| {
+                    let x = i as f64 / 10.0;
+                    (x, a * x * x)
+                })
+                .collect()
+        };
+        let c = CamberHistory::from_section_points(&[line(0.02), line(-0.02)], 2.0, 21).unwrap();
+        let (eta, slope, _) = c.at(0.5, 0.0);
+        // Exact at a given point; the slope is that of the station interval
+        // [0.5, 0.55], where 0.55 lies halfway between the points at 0.5 and
+        // 0.6: (0.02 (0.25 + 0.36) / 2 - 0.005) / 0.05 = 0.022.
+        assert!((eta - 0.005).abs() < 1e-12, "{eta}");
+        assert!((slope - 0.022).abs() < 1e-9, "{slope}");
+        assert!((c.at(0.5, 1.0).0 + 0.005).abs() < 1e-12);
+        let mut bad = line(0.0);
+        bad.swap(3, 4);
+        assert_eq!(
+            CamberHistory::from_section_points(&[bad], 1.0, 11),
+            Err(CamberError::PointOrder {
+                sample: 0,
+                point: 4
+            })
+        );
+        assert_eq!(
+            CamberHistory::from_section_points(&[vec![(0.0, 0.0)]], 1.0, 11),
+            Err(CamberError::TooFewPoints { sample: 0, got: 1 })
+        );
     }
 
     #[test]

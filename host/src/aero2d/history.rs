@@ -22,6 +22,9 @@ pub struct History {
     /// integration, a check of it (they differ by the time discretization
     /// of vortex motion only).
     pub cl_impulse: Vec<f64>,
+    /// Streamwise drag coefficient of the laminar skin-friction estimate
+    /// (empty without a Reynolds number): net thrust is `ct - cd_friction`.
+    pub cd_friction: Vec<f64>,
 }
 
 /// Cycle means over the last `cycles` whole periods of a periodic history:
@@ -54,4 +57,24 @@ pub fn cycle_means_until(
     }
     let n = n.max(1) as f64;
     (ct / n, cp / n, ct / cp)
+}
+
+/// Mean of `values` (sampled at `history.time`) over the `cycles` periods
+/// ending at the last sample, e.g. of [`History::cd_friction`]; 0 for an
+/// empty series.
+pub fn cycle_mean_of(history: &History, values: &[f64], period: f64, cycles: usize) -> f64 {
+    let end = *history.time.last().unwrap_or(&0.0);
+    let start = end - period * cycles as f64;
+    let window: Vec<f64> = history
+        .time
+        .iter()
+        .zip(values)
+        .filter(|(t, _)| **t > start && **t <= end)
+        .map(|(_, v)| *v)
+        .collect();
+    if window.is_empty() {
+        0.0
+    } else {
+        window.iter().sum::<f64>() / window.len() as f64
+    }
 }

@@ -39,7 +39,7 @@
 use std::f64::consts::PI;
 
 use super::camber::CamberHistory;
-pub use super::history::{cycle_means, cycle_means_until, History};
+pub use super::history::{cycle_mean_of, cycle_means, cycle_means_until, History};
 pub use super::motion::{Motion, PitchRamp};
 
 /// Numerical settings.
@@ -65,6 +65,9 @@ pub struct Settings {
     /// critical value (Ramesh et al. 2014); `None` switches shedding off
     /// (the attached-flow, Garrick limit).
     pub lesp_critical: Option<f64>,
+    /// Chord Reynolds number `U c / nu` for the laminar skin-friction
+    /// estimate ([`super::friction`]); `None` leaves it out.
+    pub reynolds: Option<f64>,
 }
 
 impl Default for Settings {
@@ -76,6 +79,7 @@ impl Default for Settings {
             duration: 10.0,
             far_wake: 1.5,
             lesp_critical: None,
+            reynolds: None,
         }
     }
 }
@@ -551,12 +555,20 @@ impl Ldvm {
             let (sm, cm) = alpha_m.sin_cos();
             let fx = normal * sm - suction * cm;
             let fy = normal * cm + suction * sm;
+            // Skin friction along the chord, with the relative flow there
+            // (freestream and plunge; pitch moves the chord along itself
+            // only at second order).
+            let friction = self.settings.reynolds.map_or(0.0, |re| {
+                super::friction::laminar_friction(re, cm + h_dot_m * sm)
+            });
             let m_pivot_nose_up = moment_le + pivot * normal;
             let deformation = 0.5 * (now.deform_quasi + prev.deform_quasi) + unsteady_deform;
             let power = -fy * h_dot_m - m_pivot_nose_up * alpha_dot_m - deformation;
             history.time.push(tm);
             history.cl.push(2.0 * fy);
             history.ct.push(-2.0 * fx);
+            // Friction coefficient acts along (cos alpha, -sin alpha).
+            history.cd_friction.push(friction * cm);
             history.cp.push(2.0 * power);
             history.lesp.push(a[0]);
             history

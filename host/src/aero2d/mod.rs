@@ -11,6 +11,7 @@
 //! friction and plots are the rest of the aero2d issue.
 
 pub mod camber;
+pub mod friction;
 pub mod history;
 pub mod ldvm;
 pub mod motion;

@@ -1,0 +1,37 @@
+//! Laminar skin-friction estimate of a thin section, so net thrust can be
+//! reported beside the inviscid thrust of the potential-flow solvers.
+//!
+//! Quasi-steady Blasius: each side of a flat plate in a laminar boundary
+//! layer carries `D = 0.664 rho V^2 c / sqrt(Re_V)` (Schlichting, Boundary
+//! Layer Theory, ch. 7), `Re_V = V c / nu`. With `V` the speed of the flow
+//! relative to the section along its chord, on `1/2 rho U^2 c` and with
+//! `Re = U c / nu`, both sides give `C_f = 2.656 |V/U|^(3/2) / sqrt(Re)`.
+//! It ignores the unsteadiness of the boundary layer, the pressure
+//! gradient, separation and transition: an estimate of the right size (the
+//! paper's 3D analysis is viscous), not a validated viscous model.
+
+/// Chordwise friction force coefficient (on `1/2 rho U^2 c`, both sides)
+/// for a relative chordwise flow speed `tangential` (in units of `U`, signed:
+/// the force follows the flow) at chord Reynolds number `reynolds`
+/// (`U c / nu`, > 0).
+pub fn laminar_friction(reynolds: f64, tangential: f64) -> f64 {
+    2.656 * tangential.abs().powf(1.5) / reynolds.sqrt() * tangential.signum()
+}
+
+/// Chord Reynolds number of the built-in FWAV's mid-span section in flight:
+/// 3 m/s, 0.075 m chord, air at sea level (nu = 1.5e-5 m^2/s).
+pub const FWAV_REYNOLDS: f64 = 3.0 * 0.075 / 1.5e-5;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Blasius (Schlichting): a plate aligned with the flow at Re = 10^4
+    /// has C_D = 1.328 / sqrt(Re) per side, 0.02656 for both.
+    #[test]
+    fn blasius_plate() {
+        assert!((laminar_friction(1e4, 1.0) - 0.02656).abs() < 1e-12);
+        // The force follows the relative flow and grows like V^1.5.
+        assert!((laminar_friction(1e4, -4.0) + 8.0 * 0.02656).abs() < 1e-12);
+    }
+}
