@@ -109,6 +109,22 @@ fn aero2d_reports_thrust_beside_garrick() {
     );
     assert!((ct / garrick - 1.0).abs() < 0.10, "{ct} vs {garrick}");
     assert!(v["mean_ct_change_last_two_cycles"].as_f64().unwrap().abs() < 0.02);
+    // Net thrust is the inviscid thrust less the skin-friction estimate.
+    let (net, friction) = (
+        v["mean_ct_net"].as_f64().unwrap(),
+        v["mean_cd_friction"].as_f64().unwrap(),
+    );
+    assert!(friction > 0.0 && (net - (ct - friction)).abs() < 1e-12);
+
+    // A deformation file that is not one is named in the error.
+    let dir = std::env::temp_dir().join(format!("fwav-aero2d-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("shape.json");
+    std::fs::write(&file, r#"{"samples": [[[0.0, 0.0], [0.5, 0.01], [0.4, 0.0]]]}"#).unwrap();
+    let bad = fwav(&["aero2d", "--deformation", file.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&bad.stderr);
+    assert_eq!(bad.status.code(), Some(1));
+    assert!(err.contains("shape.json") && err.contains("point 2"), "{err}");
 
     let bad = fwav(&["aero2d", "--section", "naca0012"]);
     assert_eq!(bad.status.code(), Some(1));

@@ -1,15 +1,21 @@
-//! `fwav aero2d`: one 2D unsteady analysis of a plunging/pitching section.
+//! `fwav aero2d`: one 2D unsteady analysis of a plunging/pitching,
+//! optionally deforming section.
 
 use std::f64::consts::PI;
+use std::path::{Path, PathBuf};
 
-use anyhow::{bail, Result};
-use fwav::aero2d::ldvm::{cycle_means, cycle_means_until, Ldvm, Motion, Settings};
+use anyhow::{bail, Context, Result};
+use fwav::aero2d::camber::CamberHistory;
+use fwav::aero2d::friction::FWAV_REYNOLDS;
+use fwav::aero2d::ldvm::{
+    cycle_mean_of, cycle_means, cycle_means_until, History, Ldvm, Motion, Settings,
+};
 use fwav::aero2d::theory::garrick_plunge;
 
 /// The command's options.
 #[derive(clap::Args)]
 pub struct Aero2dArgs {
-    /// Section: flat (thin plate).
+    /// Section: `flat` (thin line, LDVM).
     #[arg(long, default_value = "flat")]
     pub section: String,
     /// Plunge amplitude, chords.
@@ -24,20 +30,54 @@ pub struct Aero2dArgs {
     /// Phase by which pitch leads plunge, degrees.
     #[arg(long, default_value_t = 90.0)]
     pub pitch_phase_deg: f64,
+    /// Mean pitch angle, degrees.
+    #[arg(long, default_value_t = 0.0)]
+    pub mean_pitch_deg: f64,
     /// Pitch axis, chords from the leading edge.
     #[arg(long, default_value_t = 0.25)]
     pub pivot: f64,
     /// Cycles to simulate.
     #[arg(long, default_value_t = 5)]
     pub cycles: u32,
+    /// Critical leading-edge suction parameter: shed leading-edge vortices
+    /// beyond it (LDVM). Off when not given.
+    #[arg(long)]
+    pub lesp_critical: Option<f64>,
+    /// Chord Reynolds number for the laminar skin-friction estimate
+    /// (default: the built-in FWAV, 3 m/s, 0.075 m chord, sea-level air).
+    #[arg(long, default_value_t = FWAV_REYNOLDS)]
+    pub reynolds: f64,
+    /// Deformation history of the section over one period, JSON:
+    /// `{"samples": [[[x, y], ...], ...]}` (the mid-line points of each
+    /// sample in the section's kinematic frame, chords, leading edge at
+    /// (0, 0) and trailing edge at (1, 0), samples equally spaced in time).
+    #[arg(long)]
+    pub deformation: Option<PathBuf>,
     /// Machine-readable output.
     #[arg(long)]
     pub json: bool,
 }
 
-pub fn run(a: &Aero2dArgs) -> Result<()> {
+/// The deformation file's layout.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct DeformationFile {
+    samples: Vec<Vec<(f64, f64)>>,
+}
+
+fn read_deformation(path: &Path, period: f64) -> Result<CamberHistory> {
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    let file: DeformationFile = serde_json::from_str(&text)
+        .with_context(|| format!("{}: not a deformation history", path.display()))?;
+    let stations = file.samples.iter().map(Vec::len).max().unwrap_or(0).max(21);
+    CamberHistory::from_section_points(&file.samples, period, stations)
+        .with_context(|| format!("{}", path.display()))
+}
+
+fn check(a: &Aero2dArgs) -> Result<()> {
     if a.section != "flat" {
-        bail!("--section {:?}: only `flat` (thin plate) is available so far; naca0012 and point files come with the thick-section panel model", a.section);
+        bail!("--section {:?}: only `flat` (thin line) is available so far; naca0012 and point files come with the thick-section panel model", a.section);
     }
     if !(a.reduced_frequency > 0.0 && a.reduced_frequency <= 20.0) {
         bail!(
@@ -45,23 +85,76 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
             a.reduced_frequency
         );
     }
-    if !(a.plunge_amplitude.abs() <= 2.0
-        && a.pitch_amplitude_deg.abs() <= 60.0
-        && (0.0..=1.0).contains(&a.pivot))
-    {
+    if !(-2.0..=2.0).contains(&a.plunge_amplitude) {
         bail!(
-            "amplitudes out of range: plunge <= 2 chords, pitch <= 60 deg, pivot in [0, 1] chords"
+            "--plunge-amplitude {} must be within +-2 chords",
+            a.plunge_amplitude
+        );
+    }
+    if !((-60.0..=60.0).contains(&a.pitch_amplitude_deg)
+        && (-60.0..=60.0).contains(&a.mean_pitch_deg))
+    {
+        bail!("--pitch-amplitude-deg and --mean-pitch-deg must be within +-60 degrees");
+    }
+    if !(a.pitch_phase_deg.is_finite() && (0.0..=1.0).contains(&a.pivot)) {
+        bail!(
+            "--pivot {} must be in [0, 1] chords and --pitch-phase-deg finite",
+            a.pivot
         );
     }
     if a.cycles < 2 || a.cycles > 50 {
         bail!("--cycles {} must be between 2 and 50", a.cycles);
     }
+    if let Some(l) = a.lesp_critical {
+        if !(l > 0.0 && l < 10.0) {
+            bail!("--lesp-critical {l} must be in (0, 10)");
+        }
+    }
+    if !(100.0..=1e8).contains(&a.reynolds) {
+        bail!("--reynolds {} must be in [100, 1e8]", a.reynolds);
+    }
+    Ok(())
+}
+
+/// Cycle means of one run.
+struct Means {
+    ct: f64,
+    cp: f64,
+    efficiency: f64,
+    cd_friction: f64,
+    cl: f64,
+    periodicity: f64,
+}
+
+fn means(history: &History, period: f64, dt: f64) -> Means {
+    let (ct, cp, efficiency) = cycle_means(history, period, 1);
+    // The cycle before the last, for the periodicity check: the window ends
+    // one period's worth of steps before the last sample.
+    let steps_per_period = (period / dt).round() as usize;
+    let end_previous = history
+        .time
+        .len()
+        .checked_sub(steps_per_period + 1)
+        .map_or(0.0, |i| history.time[i]);
+    let (ct_prev, _, _) = cycle_means_until(history, period, 1, end_previous);
+    Means {
+        ct,
+        cp,
+        efficiency,
+        cd_friction: cycle_mean_of(history, &history.cd_friction, period, 1),
+        cl: cycle_mean_of(history, &history.cl, period, 1),
+        periodicity: (ct - ct_prev) / ct.abs().max(1e-12),
+    }
+}
+
+pub fn run(a: &Aero2dArgs) -> Result<()> {
+    check(a)?;
     let k = a.reduced_frequency;
     let period = PI / k;
     let motion = Motion {
         reduced_frequency: k,
         plunge_amplitude: a.plunge_amplitude,
-        mean_pitch: 0.0,
+        mean_pitch: a.mean_pitch_deg.to_radians(),
         pitch_amplitude: a.pitch_amplitude_deg.to_radians(),
         pitch_phase: a.pitch_phase_deg.to_radians(),
         pivot: a.pivot,
@@ -71,35 +164,46 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
     let settings = Settings {
         dt: defaults.dt.min(period / 100.0),
         duration: f64::from(a.cycles) * period,
+        lesp_critical: a.lesp_critical,
+        reynolds: Some(a.reynolds),
         ..defaults
     };
     let mut solver = Ldvm::new(motion, settings);
+    if let Some(path) = &a.deformation {
+        solver = solver.with_camber(read_deformation(path, period)?);
+    }
     let history = solver.run();
-    let (ct, cp, eta) = cycle_means(&history, period, 1);
-    // The cycle before the last, for the periodicity check: the window ends
-    // one period's worth of steps before the last sample.
-    let steps_per_period = (period / settings.dt).round() as usize;
-    let end_previous = history
-        .time
-        .len()
-        .checked_sub(steps_per_period + 1)
-        .map_or(0.0, |i| history.time[i]);
-    let (ct_prev, _, _) = cycle_means_until(&history, period, 1, end_previous);
-    let periodicity = (ct - ct_prev) / ct.abs().max(1e-12);
-    let garrick = (a.pitch_amplitude_deg == 0.0).then(|| garrick_plunge(k, a.plunge_amplitude));
+    let m = means(&history, period, settings.dt);
+    let net = m.ct - m.cd_friction;
+    let rigid_plunge = a.pitch_amplitude_deg == 0.0
+        && a.mean_pitch_deg == 0.0
+        && a.deformation.is_none()
+        && a.lesp_critical.is_none();
+    let garrick = rigid_plunge.then(|| garrick_plunge(k, a.plunge_amplitude));
     if a.json {
         let mut v = serde_json::json!({
             "section": a.section,
             "reduced_frequency": k,
             "plunge_amplitude_chords": a.plunge_amplitude,
             "pitch_amplitude_deg": a.pitch_amplitude_deg,
+            "mean_pitch_deg": a.mean_pitch_deg,
+            "pitch_phase_deg": a.pitch_phase_deg,
+            "pivot_chords": a.pivot,
+            "deforming": a.deformation.is_some(),
+            "lesp_critical": a.lesp_critical,
+            "reynolds": a.reynolds,
             "cycles": a.cycles,
             "time_step_chords": settings.dt,
-            "mean_ct": ct,
-            "mean_cp": cp,
-            "efficiency": eta,
-            "mean_ct_change_last_two_cycles": periodicity,
+            "mean_cl": m.cl,
+            "mean_ct": m.ct,
+            "mean_cd_friction": m.cd_friction,
+            "mean_ct_net": net,
+            "mean_cp": m.cp,
+            "efficiency": m.efficiency,
+            "net_efficiency": net / m.cp,
+            "mean_ct_change_last_two_cycles": m.periodicity,
             "wake_vortices": solver.wake().len(),
+            "leading_edge_vortices": solver.leading_edge_vortices().len(),
         });
         if let Some((gct, gcp, geta)) = garrick {
             v["garrick"] = serde_json::json!({"mean_ct": gct, "mean_cp": gcp, "efficiency": geta});
@@ -107,10 +211,28 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         println!("{v:#}");
     } else {
         println!(
-            "flat plate, k = {k}, h0 = {} c, pitch {} deg, {} cycles (dt {:.4} c/U)",
-            a.plunge_amplitude, a.pitch_amplitude_deg, a.cycles, settings.dt
+            "{} section, k = {k}, h0 = {} c, pitch {} +- {} deg, {} cycles (dt {:.4} c/U){}",
+            a.section,
+            a.plunge_amplitude,
+            a.mean_pitch_deg,
+            a.pitch_amplitude_deg,
+            a.cycles,
+            settings.dt,
+            if a.deformation.is_some() {
+                ", deforming"
+            } else {
+                ""
+            }
         );
-        println!("  last cycle: CT {ct:.5}  CP {cp:.5}  efficiency {eta:.3}  (CT change from the cycle before: {:+.2} %)", 100.0 * periodicity);
+        println!(
+            "  last cycle: CL {:.4}  CT {:.5} (net of friction {net:.5}, Re {:.0})  CP {:.5}  efficiency {:.3} (net {:.3})",
+            m.cl, m.ct, a.reynolds, m.cp, m.efficiency, net / m.cp
+        );
+        println!(
+            "  CT change from the cycle before: {:+.2} %; {} leading-edge vortices shed",
+            100.0 * m.periodicity,
+            solver.leading_edge_vortices().len()
+        );
         if let Some((gct, gcp, geta)) = garrick {
             println!("  Garrick (1936): CT {gct:.5}  CP {gcp:.5}  efficiency {geta:.3}");
         }
