@@ -20,3 +20,4 @@ pub mod device;
 pub mod link;
 pub mod port;
 pub mod profile_file;
+pub mod shell;

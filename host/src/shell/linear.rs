@@ -1,0 +1,90 @@
+//! Linear statics: one sparse Cholesky factorization of the stiffness over
+//! the free DOFs (faer's supernodal `LL^T` with its fill-reducing
+//! ordering), then any number of load vectors solved against it.
+
+use faer::linalg::solvers::Solve;
+use faer::sparse::linalg::solvers::Llt;
+use faer::sparse::SparseColMat;
+use faer::{Mat, Side};
+
+use super::assembly::{self, AssemblyError, DofMap};
+use super::material::Section;
+use super::mesh::ShellMesh;
+
+/// A factorized linear model.
+pub struct LinearStatic {
+    map: DofMap,
+    stiffness: SparseColMat<usize, f64>,
+    factor: Llt<usize, f64>,
+}
+
+impl LinearStatic {
+    /// Assembles and factorizes the stiffness of `mesh` with one section
+    /// per element and the global DOFs in `fixed` held at zero.
+    pub fn new(
+        mesh: &ShellMesh,
+        sections: &[Section],
+        fixed: &[usize],
+    ) -> Result<Self, AssemblyError> {
+        let map = DofMap::new(mesh.dofs(), fixed)?;
+        let stiffness = assembly::stiffness(mesh, sections, &map)?;
+        let factor = stiffness
+            .sp_cholesky(Side::Lower)
+            .map_err(|e| AssemblyError::Singular(format!("{e:?}")))?;
+        Ok(Self {
+            map,
+            stiffness,
+            factor,
+        })
+    }
+
+    /// The DOF map.
+    pub fn map(&self) -> &DofMap {
+        &self.map
+    }
+
+    /// The Cholesky factor of the free stiffness.
+    pub(crate) fn factor(&self) -> &Llt<usize, f64> {
+        &self.factor
+    }
+
+    /// The stiffness over the free DOFs.
+    pub fn stiffness(&self) -> &SparseColMat<usize, f64> {
+        &self.stiffness
+    }
+
+    /// Displacements (global, fixed DOFs zero) under global loads, one
+    /// vector per load case, all solved together.
+    pub fn solve(&self, loads: &[Vec<f64>]) -> Result<Vec<Vec<f64>>, AssemblyError> {
+        let n = self.map.free_count();
+        for f in loads {
+            if f.len() != self.map.dofs() {
+                return Err(AssemblyError::Length {
+                    got: f.len(),
+                    expected: self.map.dofs(),
+                });
+            }
+        }
+        let restricted: Vec<Vec<f64>> = loads.iter().map(|f| self.map.restrict(f)).collect();
+        let rhs = Mat::from_fn(n, loads.len(), |i, j| restricted[j][i]);
+        let x = self.factor.solve(&rhs);
+        Ok((0..loads.len())
+            .map(|j| {
+                let free: Vec<f64> = (0..n).map(|i| x[(i, j)]).collect();
+                self.map.expand(&free)
+            })
+            .collect())
+    }
+
+    /// `K u` over the free DOFs for a free-DOF vector.
+    pub fn apply(&self, free: &[f64]) -> Vec<f64> {
+        let mut out = vec![0.0; free.len()];
+        let k = self.stiffness.as_ref();
+        for (j, &xj) in free.iter().enumerate() {
+            for (i, v) in k.row_idx_of_col(j).zip(k.val_of_col(j)) {
+                out[i] += v * xj;
+            }
+        }
+        out
+    }
+}

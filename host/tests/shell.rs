@@ -1,0 +1,192 @@
+//! Shell finite elements against classical plate and shell solutions
+//! (formulas and values: ../shared/REFERENCES.md).
+
+use fwav::shell::assembly::pressure_loads;
+use fwav::shell::linear::LinearStatic;
+use fwav::shell::material::{Layer, Section};
+use fwav::shell::mesh::ShellMesh;
+use fwav::shell::modal::modes;
+use nalgebra::Vector3;
+
+const E: f64 = 1.0e9;
+const NU: f64 = 0.3;
+
+fn plate_layer(thickness: f64) -> Layer {
+    Layer {
+        young: E,
+        poisson: NU,
+        density: 1000.0,
+        thickness,
+    }
+}
+
+fn flexural_rigidity(t: f64) -> f64 {
+    E * t.powi(3) / (12.0 * (1.0 - NU * NU))
+}
+
+#[derive(Clone, Copy)]
+enum Support {
+    Clamped,
+    /// Hard simple support: w and the rotation along the edge held.
+    Simple,
+}
+
+/// Centre deflection of a unit square plate (side a = 1 m, a/t = 100)
+/// under uniform pressure q, as `w D / (q a^4)`.
+fn square_plate(n: usize, support: Support) -> f64 {
+    let (a, t, q) = (1.0, 0.01, 1.0e3);
+    let mesh = ShellMesh::rectangle(a, a, n, n).unwrap();
+    let sections = vec![Section::single(&plate_layer(t)); mesh.elements.len()];
+    let mut fixed = Vec::new();
+    for node in 0..mesh.nodes.len() {
+        let p = mesh.nodes[node];
+        let on_x_edge = p.x.abs() < 1e-9 || (p.x - a).abs() < 1e-9;
+        let on_y_edge = p.y.abs() < 1e-9 || (p.y - a).abs() < 1e-9;
+        if !(on_x_edge || on_y_edge) {
+            continue;
+        }
+        let held: &[usize] = match support {
+            Support::Clamped => &[0, 1, 2, 3, 4, 5],
+            // Edges x = const keep theta_x (dw/dy = 0 along them), edges
+            // y = const keep theta_y.
+            Support::Simple => match (on_x_edge, on_y_edge) {
+                (true, true) => &[0, 1, 2, 3, 4],
+                (true, false) => &[0, 1, 2, 3],
+                _ => &[0, 1, 2, 4],
+            },
+        };
+        fixed.extend(held.iter().map(|c| 6 * node + c));
+    }
+    let model = LinearStatic::new(&mesh, &sections, &fixed).unwrap();
+    let f = pressure_loads(&mesh, &vec![q; mesh.elements.len()]).unwrap();
+    let u = &model.solve(&[f]).unwrap()[0];
+    let centre = mesh.nodes_where(|p| (p.x - 0.5).abs() < 1e-9 && (p.y - 0.5).abs() < 1e-9)[0];
+    u[6 * centre + 2] * flexural_rigidity(t) / (q * a.powi(4))
+}
+
+/// Timoshenko & Woinowsky-Krieger, Theory of Plates and Shells (1959),
+/// tables 8 and 35 (nu = 0.3): centre deflection 0.00126 q a^4 / D clamped,
+/// 0.00406 q a^4 / D simply supported; within 2% on a 16 x 16 mesh, and
+/// the error falls as the mesh is refined (4, 8, 16).
+#[test]
+fn square_plates_under_pressure() {
+    for (support, reference, name) in [
+        (Support::Clamped, 0.00126, "clamped"),
+        (Support::Simple, 0.00406, "simply supported"),
+    ] {
+        let errors: Vec<f64> = [4, 8, 16]
+            .iter()
+            .map(|&n| {
+                let w = square_plate(n, support);
+                let e = w / reference - 1.0;
+                println!("{name} {n}x{n}: w D/(q a^4) = {w:.6} ({:+.2}%)", 100.0 * e);
+                e
+            })
+            .collect();
+        assert!(errors[2].abs() < 0.02, "{name}: {:+.2}%", 100.0 * errors[2]);
+        assert!(errors[2].abs() < errors[0].abs(), "{name}: no convergence");
+    }
+}
+
+/// Leissa, Vibration of Plates (NASA SP-160, 1969), table 4.30: a square
+/// cantilever plate (clamped at x = 0, free elsewhere), nu = 0.3, has
+/// `omega a^2 sqrt(rho t / D)` = 3.492, 8.525, 21.43 for its first three
+/// modes (1st bending, 1st torsion, 2nd bending); within 2% on 20 x 20.
+#[test]
+fn cantilever_plate_frequencies() {
+    let (a, t) = (1.0, 0.01);
+    let layer = plate_layer(t);
+    let mesh = ShellMesh::rectangle(a, a, 20, 20).unwrap();
+    let sections = vec![Section::single(&layer); mesh.elements.len()];
+    let fixed: Vec<usize> = mesh
+        .nodes_where(|p| p.x.abs() < 1e-9)
+        .into_iter()
+        .flat_map(|n| (0..6).map(move |c| 6 * n + c))
+        .collect();
+    // In-plane modes are far higher; ask for a few more and keep the
+    // bending ones (out-of-plane shapes).
+    let found = modes(&mesh, &sections, &fixed, 5).unwrap();
+    let scale = a * a * (layer.density * t / flexural_rigidity(t)).sqrt();
+    let bending: Vec<f64> = found
+        .iter()
+        .filter(|m| {
+            let w: f64 = m.shape.iter().skip(2).step_by(6).map(|v| v * v).sum();
+            let u: f64 = m.shape.iter().step_by(6).map(|v| v * v).sum();
+            w > u
+        })
+        .map(|m| 2.0 * std::f64::consts::PI * m.frequency * scale)
+        .collect();
+    for (got, reference) in bending.iter().zip([3.492, 8.525, 21.43]) {
+        println!(
+            "cantilever plate: {got:.4} vs Leissa {reference} ({:+.2}%)",
+            100.0 * (got / reference - 1.0)
+        );
+        assert!((got / reference - 1.0).abs() < 0.02, "{got} vs {reference}");
+    }
+    assert!(bending.len() >= 3);
+}
+
+/// Scordelis–Lo roof (MacNeal & Harder 1985 benchmark set): cylindrical
+/// shell R = 25, L = 50, 80 deg arc, t = 0.25, E = 4.32e8, nu = 0, gravity
+/// 90 per unit area, rigid diaphragms at the curved ends. Vertical
+/// displacement at the midside of the free edge: 0.3024 (the deep-shell
+/// value, REFERENCES.md), within 2% on a 16 x 16 quarter model.
+#[test]
+fn scordelis_lo_roof() {
+    let (r, half_length, half_angle) = (25.0, 25.0, 40f64.to_radians());
+    let n = 16;
+    // Quarter: x in [0, L/2] from the diaphragm to the midspan, phi from
+    // the crown (0) to the free edge (40 deg); y across, z up.
+    let mesh = ShellMesh::mapped(n, n, |s, tt| {
+        let phi = tt * half_angle;
+        Vector3::new(s * half_length, r * phi.sin(), r * phi.cos())
+    })
+    .unwrap();
+    let layer = Layer {
+        young: 4.32e8,
+        poisson: 0.0,
+        density: 1.0,
+        thickness: 0.25,
+    };
+    let sections = vec![Section::single(&layer); mesh.elements.len()];
+    let mut fixed = Vec::new();
+    for (node, p) in mesh.nodes.iter().enumerate() {
+        let d = |c: usize| 6 * node + c;
+        if p.x.abs() < 1e-9 {
+            // Diaphragm: rigid in its own plane.
+            fixed.extend([d(1), d(2)]);
+        }
+        if (p.x - half_length).abs() < 1e-9 {
+            // Symmetry about x = L/2.
+            fixed.extend([d(0), d(4), d(5)]);
+        }
+        if p.y.abs() < 1e-9 {
+            // Symmetry about the crown plane y = 0.
+            fixed.extend([d(1), d(3), d(5)]);
+        }
+    }
+    fixed.sort_unstable();
+    fixed.dedup();
+    let model = LinearStatic::new(&mesh, &sections, &fixed).unwrap();
+    // Gravity: 90 per unit area, lumped by the consistent rule (a quarter
+    // of each element's area to each corner for a bilinear element's
+    // average), downward.
+    let mut f = vec![0.0; mesh.dofs()];
+    for e in 0..mesh.elements.len() {
+        let x = mesh.corners(e);
+        let area = 0.5 * (x[2] - x[0]).cross(&(x[3] - x[1])).norm();
+        for &node in &mesh.elements[e] {
+            f[6 * node + 2] -= 90.0 * area / 4.0;
+        }
+    }
+    let u = &model.solve(&[f]).unwrap()[0];
+    let corner = mesh.nodes_where(|p| {
+        (p.x - half_length).abs() < 1e-9 && (p.y - r * half_angle.sin()).abs() < 1e-9
+    })[0];
+    let w = -u[6 * corner + 2];
+    println!(
+        "Scordelis-Lo: {w:.4} vs 0.3024 ({:+.2}%)",
+        100.0 * (w / 0.3024 - 1.0)
+    );
+    assert!((w / 0.3024 - 1.0).abs() < 0.02, "{w}");
+}
