@@ -2,7 +2,6 @@
 //! into a sparse matrix over the free degrees of freedom (faer), and the
 //! map between global and free DOFs.
 
-use faer::sparse::{SparseColMat, Triplet};
 use rayon::prelude::*;
 
 use super::element;
@@ -120,7 +119,7 @@ pub fn element_dofs(mesh: &ShellMesh, e: usize) -> [usize; 24] {
     d
 }
 
-fn check_sections(mesh: &ShellMesh, sections: &[Section]) -> Result<(), AssemblyError> {
+pub(crate) fn check_sections(mesh: &ShellMesh, sections: &[Section]) -> Result<(), AssemblyError> {
     if sections.len() != mesh.elements.len() {
         return Err(AssemblyError::Sections {
             sections: sections.len(),
@@ -128,38 +127,6 @@ fn check_sections(mesh: &ShellMesh, sections: &[Section]) -> Result<(), Assembly
         });
     }
     Ok(())
-}
-
-/// The stiffness over the free DOFs (both triangles stored). Element
-/// matrices in parallel; `O(elements)` work plus the sparse sort.
-pub fn stiffness(
-    mesh: &ShellMesh,
-    sections: &[Section],
-    map: &DofMap,
-) -> Result<SparseColMat<usize, f64>, AssemblyError> {
-    check_sections(mesh, sections)?;
-    let triplets: Vec<Triplet<usize, usize, f64>> = (0..mesh.elements.len())
-        .into_par_iter()
-        .flat_map_iter(|e| {
-            let k = element::stiffness(&mesh.corners(e), &sections[e]);
-            let dofs = element_dofs(mesh, e);
-            let free: Vec<(usize, usize)> = dofs
-                .iter()
-                .enumerate()
-                .filter_map(|(local, &g)| map.free(g).map(|f| (local, f)))
-                .collect();
-            let mut out = Vec::with_capacity(free.len() * free.len());
-            for &(a, fa) in &free {
-                for &(b, fb) in &free {
-                    out.push(Triplet::new(fa, fb, k[(a, b)]));
-                }
-            }
-            out
-        })
-        .collect();
-    let n = map.free_count();
-    SparseColMat::try_new_from_triplets(n, n, &triplets)
-        .map_err(|e| AssemblyError::Sparse(format!("{e:?}")))
 }
 
 /// The lumped (diagonal) mass over all global DOFs, kg and kg m^2.

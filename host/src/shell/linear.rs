@@ -5,15 +5,18 @@
 use faer::linalg::solvers::Solve;
 use faer::sparse::linalg::solvers::Llt;
 use faer::sparse::SparseColMat;
-use faer::{Mat, Side};
+use faer::Mat;
 
-use super::assembly::{self, AssemblyError, DofMap};
+use std::sync::Arc;
+
+use super::assembly::{AssemblyError, DofMap};
 use super::material::Section;
 use super::mesh::ShellMesh;
+use super::structure::Structure;
 
 /// A factorized linear model.
 pub struct LinearStatic {
-    map: DofMap,
+    structure: Arc<Structure>,
     stiffness: SparseColMat<usize, f64>,
     factor: Llt<usize, f64>,
 }
@@ -26,21 +29,34 @@ impl LinearStatic {
         sections: &[Section],
         fixed: &[usize],
     ) -> Result<Self, AssemblyError> {
-        let map = DofMap::new(mesh.dofs(), fixed)?;
-        let stiffness = assembly::stiffness(mesh, sections, &map)?;
-        let factor = stiffness
-            .sp_cholesky(Side::Lower)
-            .map_err(|e| AssemblyError::Singular(format!("{e:?}")))?;
+        Self::with_structure(Arc::new(Structure::new(mesh, fixed)?), mesh, sections)
+    }
+
+    /// Assembles and factorizes on an existing structure (same mesh and
+    /// supports, new sections): value-only work, the symbolic analysis is
+    /// reused.
+    pub fn with_structure(
+        structure: Arc<Structure>,
+        mesh: &ShellMesh,
+        sections: &[Section],
+    ) -> Result<Self, AssemblyError> {
+        let stiffness = structure.stiffness(mesh, sections)?;
+        let factor = structure.factorize(&stiffness)?;
         Ok(Self {
-            map,
+            structure,
             stiffness,
             factor,
         })
     }
 
+    /// The structure (pattern and symbolic factorization).
+    pub fn structure(&self) -> &Arc<Structure> {
+        &self.structure
+    }
+
     /// The DOF map.
     pub fn map(&self) -> &DofMap {
-        &self.map
+        self.structure.map()
     }
 
     /// The Cholesky factor of the free stiffness.
@@ -56,22 +72,22 @@ impl LinearStatic {
     /// Displacements (global, fixed DOFs zero) under global loads, one
     /// vector per load case, all solved together.
     pub fn solve(&self, loads: &[Vec<f64>]) -> Result<Vec<Vec<f64>>, AssemblyError> {
-        let n = self.map.free_count();
+        let n = self.map().free_count();
         for f in loads {
-            if f.len() != self.map.dofs() {
+            if f.len() != self.map().dofs() {
                 return Err(AssemblyError::Length {
                     got: f.len(),
-                    expected: self.map.dofs(),
+                    expected: self.map().dofs(),
                 });
             }
         }
-        let restricted: Vec<Vec<f64>> = loads.iter().map(|f| self.map.restrict(f)).collect();
+        let restricted: Vec<Vec<f64>> = loads.iter().map(|f| self.map().restrict(f)).collect();
         let rhs = Mat::from_fn(n, loads.len(), |i, j| restricted[j][i]);
         let x = self.factor.solve(&rhs);
         Ok((0..loads.len())
             .map(|j| {
                 let free: Vec<f64> = (0..n).map(|i| x[(i, j)]).collect();
-                self.map.expand(&free)
+                self.map().expand(&free)
             })
             .collect())
     }

@@ -5,9 +5,12 @@
 //!   SIMP-scaled.
 //! - [`mesh`]: quadrilateral meshes and generators.
 //! - [`element`]: the flat MITC4 + QM6 shell element (six DOFs a node).
-//! - [`assembly`]: global sparse matrices (rayon, faer), DOF maps, loads.
+//! - [`assembly`]: DOF maps, mass, loads, element energies.
+//! - [`structure`]: the sparse pattern and symbolic factorization of a
+//!   mesh, reused for every new stiffness on it.
 //! - [`linear`]: linear statics, one factorization for many load cases.
 //! - [`modal`]: lowest natural frequencies and shapes.
+//! - [`wing`]: the planform, its mesh, spar and root attachment.
 //!
 //! SI units throughout (m, N, Pa, kg, s).
 
@@ -17,3 +20,5 @@ pub mod linear;
 pub mod material;
 pub mod mesh;
 pub mod modal;
+pub mod structure;
+pub mod wing;
