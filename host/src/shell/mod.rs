@@ -10,15 +10,19 @@
 //!   mesh, reused for every new stiffness on it.
 //! - [`linear`]: linear statics, one factorization for many load cases.
 //! - [`modal`]: lowest natural frequencies and shapes.
+//! - [`dynamics`]: linear transient response (generalized-alpha).
+//! - [`vtu`]: ParaView output.
 //! - [`wing`]: the planform, its mesh, spar and root attachment.
 //!
 //! SI units throughout (m, N, Pa, kg, s).
 
 pub mod assembly;
+pub mod dynamics;
 pub mod element;
 pub mod linear;
 pub mod material;
 pub mod mesh;
 pub mod modal;
 pub mod structure;
+pub mod vtu;
 pub mod wing;
