@@ -13,12 +13,14 @@
 //! - [`dynamics`]: linear transient response (generalized-alpha).
 //! - [`vtu`]: ParaView output.
 //! - [`wing`]: the planform, its mesh, spar and root attachment.
+//! - [`import`]: NASTRAN bulk data and Gmsh meshes.
 //!
 //! SI units throughout (m, N, Pa, kg, s).
 
 pub mod assembly;
 pub mod dynamics;
 pub mod element;
+pub mod import;
 pub mod linear;
 pub mod material;
 pub mod mesh;
