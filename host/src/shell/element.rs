@@ -110,7 +110,12 @@ fn mat3(a: &[[f64; 3]; 3]) -> Matrix3<f64> {
     Matrix3::from_fn(|i, j| a[i][j])
 }
 
-/// Local stiffness: membrane, plate and drilling.
+/// Local stiffness: membrane, plate and drilling (in the element's frame:
+/// DOFs `[u, v, w, theta_x, theta_y, theta_z]` along its axes).
+pub fn local_stiffness_matrix(frame: &Frame, section: &Section) -> ElementMatrix {
+    local_stiffness(frame, section)
+}
+
 fn local_stiffness(frame: &Frame, section: &Section) -> ElementMatrix {
     let mut k = ElementMatrix::zeros();
     membrane(frame, &mat3(&section.membrane), &mut k);

@@ -11,6 +11,8 @@
 //! - [`linear`]: linear statics, one factorization for many load cases.
 //! - [`modal`]: lowest natural frequencies and shapes.
 //! - [`dynamics`]: linear transient response (generalized-alpha).
+//! - [`corotational`], [`nonlinear`]: large displacements and rotations
+//!   (co-rotational elements, Newton with load steps).
 //! - [`vtu`]: ParaView output.
 //! - [`wing`]: the planform, its mesh, spar and root attachment.
 //! - [`import`]: NASTRAN bulk data and Gmsh meshes.
@@ -18,6 +20,7 @@
 //! SI units throughout (m, N, Pa, kg, s).
 
 pub mod assembly;
+pub mod corotational;
 pub mod dynamics;
 pub mod element;
 pub mod import;
@@ -25,6 +28,7 @@ pub mod linear;
 pub mod material;
 pub mod mesh;
 pub mod modal;
+pub mod nonlinear;
 pub mod structure;
 pub mod vtu;
 pub mod wing;

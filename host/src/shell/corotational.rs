@@ -1,0 +1,386 @@
+//! Geometrically nonlinear shells by the element-independent co-rotational
+//! formulation (Rankin & Nour-Omid 1988; Felippa & Haugen 2005, Comput.
+//! Methods Appl. Mech. Engrg. 194): each element's rigid motion is taken
+//! out by a frame that follows it, and what is left, small, goes through
+//! the linear element. Large displacements and rotations, small strains.
+//!
+//! Per element, with `E` the current frame (columns), `c` the centroid and
+//! `R_i` the nodal rotations:
+//! - deformational translations `u_i = E^T (x_i - c) - E0^T (X_i - c0)`;
+//! - deformational rotations `theta_i = log(E^T R_i E0)`;
+//! - strain energy `W = 1/2 d^T K d` with the linear element's local `K`.
+//!
+//! Variations are taken with respect to nodal translations and spins
+//! (`delta R = Spin(delta omega) R`):
+//! `delta u_i = E^T (delta x_i - delta c + Spin(x_i - c) delta omega_E)`
+//! and `delta theta_i = T(theta_i)^-1 E^T (delta omega_i - delta omega_E)`
+//! with `T` the tangent map of SO(3) and
+//! `delta omega_E = G delta x` the frame's spin (`G` by central
+//! differences of the frame, which is cheap). The internal force is the
+//! exact gradient `f = J^T K d`; the tangent is `J^T K J` plus the
+//! stress-dependent part `d(J^T)/dq (K d)`, the latter by forward
+//! differences of `J` (24 evaluations an element), symmetrized.
+
+use nalgebra::{Matrix3, Rotation3, SMatrix, Vector3};
+use rayon::prelude::*;
+
+use super::element::{local_stiffness_matrix, ElementMatrix, ElementVector, Frame};
+use super::material::Section;
+use super::mesh::ShellMesh;
+
+/// Nodal configuration: translations from the initial positions and
+/// rotations from the initial orientation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Configuration {
+    /// Translations, m.
+    pub displacement: Vec<Vector3<f64>>,
+    /// Rotations.
+    pub rotation: Vec<Rotation3<f64>>,
+}
+
+impl Configuration {
+    /// The undeformed configuration of `nodes` nodes.
+    pub fn initial(nodes: usize) -> Self {
+        Self {
+            displacement: vec![Vector3::zeros(); nodes],
+            rotation: vec![Rotation3::identity(); nodes],
+        }
+    }
+
+    /// Moves on by the motion from `before` to `self` once more:
+    /// translations linearly, rotations by the same relative rotation.
+    pub fn extrapolate(&mut self, before: &Configuration) {
+        for n in 0..self.displacement.len() {
+            let step = self.displacement[n] - before.displacement[n];
+            self.displacement[n] += step;
+            let relative = self.rotation[n] * before.rotation[n].inverse();
+            self.rotation[n] = relative * self.rotation[n];
+        }
+    }
+
+    /// Applies an increment over the global DOFs `[dx, dy, dz, dwx, dwy,
+    /// dwz]` a node (spins compose on the left).
+    pub fn update(&mut self, increment: &[f64]) {
+        for (n, d) in increment.chunks_exact(6).enumerate() {
+            self.displacement[n] += Vector3::new(d[0], d[1], d[2]);
+            let r = Rotation3::from_scaled_axis(Vector3::new(d[3], d[4], d[5])) * self.rotation[n];
+            // Back onto SO(3): products of many increments drift off it.
+            self.rotation[n] =
+                nalgebra::UnitQuaternion::from_rotation_matrix(&r).to_rotation_matrix();
+        }
+    }
+}
+
+/// What an element keeps from its initial state.
+#[derive(Clone, Debug)]
+struct Reference {
+    /// Initial frame, columns.
+    e0: Matrix3<f64>,
+    /// Initial local corner coordinates.
+    p0: [Vector3<f64>; 4],
+    /// Local linear stiffness.
+    k: ElementMatrix,
+}
+
+/// Frame (columns) and centroid of four points.
+fn frame(x: &[Vector3<f64>; 4]) -> (Matrix3<f64>, Vector3<f64>) {
+    let f = Frame::new(x);
+    (f.rotation.transpose(), (x[0] + x[1] + x[2] + x[3]) / 4.0)
+}
+
+fn spin(v: &Vector3<f64>) -> Matrix3<f64> {
+    v.cross_matrix()
+}
+
+/// Inverse of the SO(3) tangent map: `delta theta = T(theta)^-1 delta phi`
+/// for a spatial spin `delta phi` (`delta R R^T = Spin(delta phi)`).
+fn tangent_inverse(theta: &Vector3<f64>) -> Matrix3<f64> {
+    let a = theta.norm();
+    let s = spin(theta);
+    if a < 1e-6 {
+        return Matrix3::identity() - 0.5 * s + s * s / 12.0;
+    }
+    let coefficient = 1.0 / (a * a) - (1.0 + a.cos()) / (2.0 * a * a.sin());
+    Matrix3::identity() - 0.5 * s + coefficient * s * s
+}
+
+/// Rotation vector of a rotation matrix, accurate near the identity (the
+/// `acos` of the trace alone loses half the digits there: an error of 1e-8
+/// rad is a force of 1 N in a stiff element at rest). For angles below pi.
+fn log_so3(m: &Matrix3<f64>) -> Vector3<f64> {
+    let v = 0.5
+        * Vector3::new(
+            m[(2, 1)] - m[(1, 2)],
+            m[(0, 2)] - m[(2, 0)],
+            m[(1, 0)] - m[(0, 1)],
+        );
+    let s = v.norm();
+    let c = 0.5 * (m.trace() - 1.0);
+    let angle = s.atan2(c);
+    if s < 1e-300 {
+        return v;
+    }
+    v * (angle / s)
+}
+
+/// The element's corner positions and rotations in a configuration.
+fn element_state(
+    mesh: &ShellMesh,
+    e: usize,
+    c: &Configuration,
+) -> ([Vector3<f64>; 4], [Rotation3<f64>; 4]) {
+    let nodes = mesh.elements[e];
+    (
+        nodes.map(|n| mesh.nodes[n] + c.displacement[n]),
+        nodes.map(|n| c.rotation[n]),
+    )
+}
+
+/// Deformational DOFs `d` and their Jacobian `J = dd/dq` (q: nodal
+/// translations and spins).
+fn deformation(
+    reference: &Reference,
+    x: &[Vector3<f64>; 4],
+    r: &[Rotation3<f64>; 4],
+) -> (ElementVector, ElementMatrix) {
+    let (e, c) = frame(x);
+    // G: frame spin per corner translation, central differences.
+    let size = (x[2] - x[0]).norm().max((x[3] - x[1]).norm());
+    let h = 1e-6 * size;
+    let mut g = SMatrix::<f64, 3, 12>::zeros();
+    for j in 0..4 {
+        for k in 0..3 {
+            let (mut plus, mut minus) = (*x, *x);
+            plus[j][k] += h;
+            minus[j][k] -= h;
+            let (ep, _) = frame(&plus);
+            let (em, _) = frame(&minus);
+            let mut w = Vector3::zeros();
+            for m in 0..3 {
+                w += 0.5
+                    * e.column(m)
+                        .cross(&((ep.column(m) - em.column(m)) / (2.0 * h)));
+            }
+            g.set_column(3 * j + k, &w);
+        }
+    }
+    let et = e.transpose();
+    let mut d = ElementVector::zeros();
+    let mut jac = ElementMatrix::zeros();
+    for i in 0..4 {
+        let u = et * (x[i] - c) - reference.p0[i];
+        let theta = log_so3(&(et * r[i].matrix() * reference.e0));
+        d.fixed_rows_mut::<3>(6 * i).copy_from(&u);
+        d.fixed_rows_mut::<3>(6 * i + 3).copy_from(&theta);
+        let arm = et * spin(&(x[i] - c)) * g;
+        let rot = tangent_inverse(&theta) * et;
+        let rot_g = rot * g;
+        for j in 0..4 {
+            let own = if i == j { 1.0 } else { 0.0 };
+            let translate = et * (own - 0.25);
+            let mut block_u = translate;
+            block_u += arm.fixed_view::<3, 3>(0, 3 * j);
+            jac.fixed_view_mut::<3, 3>(6 * i, 6 * j).copy_from(&block_u);
+            jac.fixed_view_mut::<3, 3>(6 * i + 3, 6 * j)
+                .copy_from(&(-rot_g.fixed_view::<3, 3>(0, 3 * j)));
+            if i == j {
+                jac.fixed_view_mut::<3, 3>(6 * i + 3, 6 * j + 3)
+                    .copy_from(&rot);
+            }
+        }
+    }
+    (d, jac)
+}
+
+/// The co-rotational element set of a mesh.
+pub struct Corotational {
+    references: Vec<Reference>,
+}
+
+/// One element's contribution.
+pub struct ElementResponse {
+    /// Internal force (global translations and spins), N and N m.
+    pub force: ElementVector,
+    /// Tangent stiffness.
+    pub tangent: ElementMatrix,
+    /// Its material part `J^T K J` alone (positive semi-definite: the
+    /// fallback when, far from equilibrium, the full tangent is not).
+    pub material: ElementMatrix,
+    /// Strain energy, J.
+    pub energy: f64,
+}
+
+impl Corotational {
+    /// Keeps each element's initial frame and local linear stiffness.
+    pub fn new(mesh: &ShellMesh, sections: &[Section]) -> Self {
+        let references = (0..mesh.elements.len())
+            .map(|e| {
+                let x = mesh.corners(e);
+                let (e0, c0) = frame(&x);
+                let p0 = x.map(|p| e0.transpose() * (p - c0));
+                Reference {
+                    e0,
+                    p0,
+                    k: local_stiffness_matrix(&Frame::new(&x), &sections[e]),
+                }
+            })
+            .collect();
+        Self { references }
+    }
+
+    /// Internal force, tangent and energy of element `e`.
+    pub fn element(&self, mesh: &ShellMesh, e: usize, c: &Configuration) -> ElementResponse {
+        let reference = &self.references[e];
+        let (x, r) = element_state(mesh, e, c);
+        let (d, jac) = deformation(reference, &x, &r);
+        let local_force = reference.k * d;
+        let force = jac.transpose() * local_force;
+        let material = jac.transpose() * reference.k * jac;
+        let mut tangent = material;
+        // Stress-dependent part: d(J^T f_local)/dq with f_local held.
+        let size = (x[2] - x[0]).norm().max((x[3] - x[1]).norm());
+        for col in 0..24 {
+            let (node, dof) = (col / 6, col % 6);
+            let (mut xp, mut rp) = (x, r);
+            // G inside J is itself a central difference (noise ~1e-10 of
+            // J), so this step cannot be much smaller than 1e-5.
+            let h = if dof < 3 { 1e-5 * size } else { 1e-5 };
+            if dof < 3 {
+                xp[node][dof] += h;
+            } else {
+                rp[node] = Rotation3::from_scaled_axis(Vector3::ith(dof - 3, h)) * rp[node];
+            }
+            let (_, jp) = deformation(reference, &xp, &rp);
+            let column = (jp.transpose() - jac.transpose()) * local_force / h;
+            for row in 0..24 {
+                tangent[(row, col)] += column[row];
+            }
+        }
+        let tangent = 0.5 * (tangent + tangent.transpose());
+        ElementResponse {
+            force,
+            tangent,
+            material,
+            energy: 0.5 * d.dot(&local_force),
+        }
+    }
+
+    /// Internal force of element `e` alone (no tangent): a sixth of the
+    /// cost of [`Corotational::element`].
+    pub fn element_force(&self, mesh: &ShellMesh, e: usize, c: &Configuration) -> ElementVector {
+        let reference = &self.references[e];
+        let (x, r) = element_state(mesh, e, c);
+        let (d, jac) = deformation(reference, &x, &r);
+        jac.transpose() * (reference.k * d)
+    }
+
+    /// All elements' responses, in parallel.
+    pub fn responses(&self, mesh: &ShellMesh, c: &Configuration) -> Vec<ElementResponse> {
+        (0..self.references.len())
+            .into_par_iter()
+            .map(|e| self.element(mesh, e, c))
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shell::element;
+    use crate::shell::material::Layer;
+
+    /// One element whose corners are nodes 0..4 in order, so element and
+    /// global DOF orders agree.
+    pub(super) fn one() -> (ShellMesh, Vec<Section>) {
+        let p = |x: f64, y: f64| Vector3::new(x, y, 0.0);
+        let nodes = vec![p(0.0, 0.0), p(1.2, 0.1), p(1.1, 0.9), p(-0.1, 1.0)];
+        let mesh = ShellMesh::new(nodes, vec![[0, 1, 2, 3]]).unwrap();
+        (mesh, vec![Section::single(&Layer::CARBON)])
+    }
+
+    /// At the undeformed state the tangent is the linear stiffness, and a
+    /// small displacement gives the linear force.
+    #[test]
+    fn small_motions_are_linear() {
+        let (mesh, sections) = one();
+        let cr = Corotational::new(&mesh, &sections);
+        let k = element::stiffness(&mesh.corners(0), &sections[0]);
+        let r = cr.element(&mesh, 0, &Configuration::initial(4));
+        // Up to the drilling penalty: the linear element resists a rigid
+        // in-plane rotation with it, the co-rotated one does not.
+        let error = (r.tangent - k).norm() / k.norm();
+        assert!(error < 2e-3, "tangent {error}");
+        let mut c = Configuration::initial(4);
+        let u: Vec<f64> = (0..24)
+            .map(|i| 1e-9 * ((i * 7 % 11) as f64 - 5.0))
+            .collect();
+        c.update(&u);
+        let f = cr.element(&mesh, 0, &c).force;
+        let linear = k * ElementVector::from_column_slice(&u);
+        // (Up to the drilling penalty, as above: 2e-4 here.)
+        assert!((f - linear).norm() < 1e-3 * linear.norm(), "{f} {linear}");
+    }
+
+    /// A large rigid rotation and translation stores nothing and loads
+    /// nothing.
+    #[test]
+    fn rigid_motion_is_free() {
+        let (mesh, sections) = one();
+        let cr = Corotational::new(&mesh, &sections);
+        let q = Rotation3::from_euler_angles(0.7, -1.2, 2.0);
+        let mut c = Configuration::initial(4);
+        for n in 0..4 {
+            c.displacement[n] = q * mesh.nodes[n] - mesh.nodes[n] + Vector3::new(1.0, 2.0, 3.0);
+            c.rotation[n] = q;
+        }
+        let r = cr.element(&mesh, 0, &c);
+        assert!(r.energy.abs() < 1e-15, "{}", r.energy);
+        assert!(
+            r.force.norm() < 1e-12 * r.tangent.norm(),
+            "{}",
+            r.force.norm()
+        );
+    }
+}
+
+#[cfg(test)]
+mod consistency {
+    use super::*;
+
+    /// At a large, general configuration the force is the gradient of the
+    /// energy and the tangent the symmetric part of the derivative of the
+    /// force (central differences in translations and spins).
+    #[test]
+    fn force_and_tangent_are_derivatives() {
+        let (mesh, sections) = super::tests::one();
+        let cr = Corotational::new(&mesh, &sections);
+        let mut c = Configuration::initial(4);
+        let u: Vec<f64> = (0..24)
+            .map(|i| 0.05 * ((i * 7 % 11) as f64 - 5.0) / 5.0)
+            .collect();
+        c.update(&u);
+        let r = cr.element(&mesh, 0, &c);
+        let h = 1e-6;
+        let mut worst_f: f64 = 0.0;
+        let mut fd = ElementMatrix::zeros();
+        for col in 0..24 {
+            let mut step = vec![0.0; 24];
+            step[col] = h;
+            let mut plus = c.clone();
+            plus.update(&step);
+            step[col] = -h;
+            let mut minus = c.clone();
+            minus.update(&step);
+            let (rp, rm) = (cr.element(&mesh, 0, &plus), cr.element(&mesh, 0, &minus));
+            let df = (rp.energy - rm.energy) / (2.0 * h);
+            worst_f = worst_f.max((df - r.force[col]).abs() / r.force.norm());
+            fd.set_column(col, &((rp.force - rm.force) / (2.0 * h)));
+        }
+        assert!(worst_f < 1e-5, "force {worst_f}");
+        // The tangent is the symmetric part (off equilibrium the spin
+        // derivative has a small skew part, which vanishes there).
+        let sym = 0.5 * (fd + fd.transpose());
+        let error = (sym - r.tangent).norm() / r.tangent.norm();
+        assert!(error < 1e-5, "tangent {error}");
+    }
+}

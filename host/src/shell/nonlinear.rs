@@ -1,0 +1,186 @@
+//! Geometrically nonlinear statics: Newton–Raphson on the co-rotational
+//! shell ([`super::corotational`]) with the load applied in equal steps,
+//! each step converged before the next (dead loads: forces and moments of
+//! fixed direction).
+
+use std::sync::Arc;
+
+use faer::linalg::solvers::Solve;
+use faer::sparse::linalg::solvers::Llt;
+use faer::Mat;
+
+use super::assembly::{element_dofs, AssemblyError};
+use super::corotational::{Configuration, Corotational};
+use super::material::Section;
+use super::mesh::ShellMesh;
+use super::structure::Structure;
+
+/// Why a nonlinear solve stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum NonlinearError {
+    /// Assembly or factorization (e.g. a tangent that lost definiteness
+    /// past a limit point).
+    #[error(transparent)]
+    Assembly(#[from] AssemblyError),
+    /// Newton did not converge within the iteration cap.
+    #[error("load step {step} (load factor {load:.3}) did not converge in {iterations} iterations (residual {residual:.3e} of the load)")]
+    NoConvergence {
+        /// Step index.
+        step: usize,
+        /// Load factor.
+        load: f64,
+        /// Iterations spent.
+        iterations: usize,
+        /// Relative residual at the end.
+        residual: f64,
+    },
+}
+
+/// A nonlinear model: mesh, elements and sparse structure with supports.
+pub struct NonlinearStatic<'a> {
+    mesh: &'a ShellMesh,
+    elements: Corotational,
+    structure: Arc<Structure>,
+}
+
+/// Newton settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NewtonSettings {
+    /// Equal load steps from 0 to the full load.
+    pub steps: usize,
+    /// Convergence: residual norm below this fraction of the load norm.
+    /// (The tangent is the symmetric part and leaves out the load stiffness
+    /// of moments, so Newton's last digits come slowly: 1e-5 is where it
+    /// reliably gets.)
+    pub tolerance: f64,
+    /// Iterations allowed a step.
+    pub max_iterations: usize,
+}
+
+impl Default for NewtonSettings {
+    fn default() -> Self {
+        Self {
+            steps: 10,
+            tolerance: 1e-5,
+            max_iterations: 30,
+        }
+    }
+}
+
+impl<'a> NonlinearStatic<'a> {
+    /// The model of `mesh` with `sections` and the global DOFs in `fixed`
+    /// held at zero.
+    pub fn new(
+        mesh: &'a ShellMesh,
+        sections: &[Section],
+        fixed: &[usize],
+    ) -> Result<Self, NonlinearError> {
+        Ok(Self {
+            mesh,
+            elements: Corotational::new(mesh, sections),
+            structure: Arc::new(Structure::new(mesh, fixed)?),
+        })
+    }
+
+    /// Internal force (global) and the factorized tangent (free DOFs) at
+    /// `c`: the full tangent, or its material part where the full one is
+    /// not positive definite (far from equilibrium after a large step;
+    /// Newton then converges linearly until it is again).
+    fn linearize(&self, c: &Configuration) -> Result<(Vec<f64>, Llt<usize, f64>), AssemblyError> {
+        let responses = self.elements.responses(self.mesh, c);
+        let mut force = vec![0.0; self.mesh.dofs()];
+        for (e, r) in responses.iter().enumerate() {
+            for (local, g) in element_dofs(self.mesh, e).into_iter().enumerate() {
+                force[g] += r.force[local];
+            }
+        }
+        let tangents: Vec<_> = responses.iter().map(|r| r.tangent).collect();
+        let factor = match self
+            .structure
+            .factorize(&self.structure.assemble(&tangents)?)
+        {
+            Ok(f) => f,
+            Err(_) => {
+                let material: Vec<_> = responses.iter().map(|r| r.material).collect();
+                self.structure
+                    .factorize(&self.structure.assemble(&material)?)?
+            }
+        };
+        Ok((force, factor))
+    }
+
+    /// Relative residual norm over the free DOFs at load factor `lambda`.
+    fn residual(&self, load: &[f64], internal: &[f64], lambda: f64) -> Vec<f64> {
+        self.structure.map().restrict(
+            &load
+                .iter()
+                .zip(internal)
+                .map(|(f, i)| lambda * f - i)
+                .collect::<Vec<_>>(),
+        )
+    }
+
+    /// Equilibrium path under `load` (global forces and moments at full
+    /// load): the configuration at the end of each load step.
+    pub fn solve(
+        &self,
+        load: &[f64],
+        settings: NewtonSettings,
+    ) -> Result<Vec<(f64, Configuration)>, NonlinearError> {
+        let map = self.structure.map();
+        if load.len() != map.dofs() {
+            return Err(AssemblyError::Length {
+                got: load.len(),
+                expected: map.dofs(),
+            }
+            .into());
+        }
+        let load_norm = norm(&map.restrict(load)).max(f64::MIN_POSITIVE);
+        let mut c = Configuration::initial(self.mesh.nodes.len());
+        let mut previous = c.clone();
+        let mut path = Vec::with_capacity(settings.steps);
+        for step in 1..=settings.steps {
+            let lambda = step as f64 / settings.steps as f64;
+            // Predictor: repeat the last step's motion (translations and
+            // rotations alike). A linear predictor from the tangent alone
+            // would stretch a rotating, membrane-stiff shell far off the
+            // path and Newton would not come back.
+            let converged_last = c.clone();
+            c.extrapolate(&previous);
+            previous = converged_last;
+            let mut residual_norm = f64::INFINITY;
+            let mut converged = false;
+            for _ in 0..settings.max_iterations {
+                let (internal, factor) = self.linearize(&c)?;
+                let residual = self.residual(load, &internal, lambda);
+                residual_norm = norm(&residual) / load_norm;
+                if residual_norm < settings.tolerance {
+                    converged = true;
+                    break;
+                }
+                let rhs = Mat::from_fn(residual.len(), 1, |i, _| residual[i]);
+                let delta = factor.solve(&rhs);
+                let increment = map.expand(
+                    &(0..residual.len())
+                        .map(|i| delta[(i, 0)])
+                        .collect::<Vec<_>>(),
+                );
+                c.update(&increment);
+            }
+            if !converged {
+                return Err(NonlinearError::NoConvergence {
+                    step,
+                    load: lambda,
+                    iterations: settings.max_iterations,
+                    residual: residual_norm,
+                });
+            }
+            path.push((lambda, c.clone()));
+        }
+        Ok(path)
+    }
+}
+
+fn norm(v: &[f64]) -> f64 {
+    v.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
