@@ -116,6 +116,14 @@ fn aero2d_reports_thrust_beside_garrick() {
     );
     assert!(friction > 0.0 && (net - (ct - friction)).abs() < 1e-12);
 
+    // --plot draws a PNG.
+    let png = std::env::temp_dir().join(format!("fwav-aero2d-{}.png", std::process::id()));
+    let out = fwav(&["aero2d", "--cycles", "2", "--plot", png.to_str().unwrap()]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    let _ = std::fs::remove_file(&png);
+
     // A deformation file that is not one is named in the error.
     let dir = std::env::temp_dir().join(format!("fwav-aero2d-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();

@@ -261,6 +261,11 @@ impl Ldvm {
         &self.wake
     }
 
+    /// The section's chord stations at the last step, chords (global).
+    pub fn section_points(&self) -> Vec<(f64, f64)> {
+        self.bound.iter().map(|v| (v.x, v.y)).collect()
+    }
+
     /// The leading-edge vortices, in shedding order.
     pub fn leading_edge_vortices(&self) -> &[FreeVortex] {
         &self.leading

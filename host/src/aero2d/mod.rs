@@ -15,4 +15,5 @@ pub mod friction;
 pub mod history;
 pub mod ldvm;
 pub mod motion;
+pub mod plot;
 pub mod theory;

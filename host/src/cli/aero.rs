@@ -53,6 +53,9 @@ pub struct Aero2dArgs {
     /// (0, 0) and trailing edge at (1, 0), samples equally spaced in time).
     #[arg(long)]
     pub deformation: Option<PathBuf>,
+    /// Draw the wake and the force histories to this PNG.
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
     /// Machine-readable output.
     #[arg(long)]
     pub json: bool,
@@ -173,6 +176,16 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         solver = solver.with_camber(read_deformation(path, period)?);
     }
     let history = solver.run();
+    if let Some(png) = &a.plot {
+        let wake: Vec<_> = solver
+            .wake()
+            .iter()
+            .chain(solver.leading_edge_vortices())
+            .copied()
+            .collect();
+        fwav::aero2d::plot::draw(&history, &wake, &solver.section_points(), Some(period), png)
+            .with_context(|| format!("--plot {}", png.display()))?;
+    }
     let m = means(&history, period, settings.dt);
     let net = m.ct - m.cd_friction;
     let rigid_plunge = a.pitch_amplitude_deg == 0.0
