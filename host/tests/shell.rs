@@ -373,3 +373,62 @@ fn strip_rolls_into_a_circle_under_an_end_moment() {
         );
     }
 }
+
+/// Sze, Liu & Lo (2004), the cantilever strip under an end shear (10 x 1 x
+/// 0.1, E = 1.2e6, nu = 0, P_max = 4 in total at the tip, dead load): tip
+/// -u = 0.026, 1.604, 3.286 and w = 0.663, 4.933, 6.698 at P/P_max = 0.05,
+/// 0.5, 1 (their 16 x 1 reference mesh). Within 2% on 16 x 1, 20 steps
+/// (measured: w within 0.01% at all three; -u +1.55% at the smallest load,
+/// where it is the difference of nearly equal lengths, 0.00/0.01% else).
+#[test]
+fn strip_under_end_shear() {
+    use fwav::shell::nonlinear::{NewtonSettings, NonlinearStatic};
+    let (length, width) = (10.0, 1.0);
+    let layer = Layer {
+        young: 1.2e6,
+        poisson: 0.0,
+        density: 1.0,
+        thickness: 0.1,
+    };
+    let mesh = ShellMesh::rectangle(length, width, 16, 1).unwrap();
+    let sections = vec![Section::single(&layer); mesh.elements.len()];
+    let fixed: Vec<usize> = mesh
+        .nodes_where(|p| p.x.abs() < 1e-9)
+        .into_iter()
+        .flat_map(|n| (0..6).map(move |c| 6 * n + c))
+        .collect();
+    let tip = mesh.nodes_where(|p| (p.x - length).abs() < 1e-9);
+    let mut load = vec![0.0; mesh.dofs()];
+    for &n in &tip {
+        load[6 * n + 2] = 4.0 / tip.len() as f64;
+    }
+    let model = NonlinearStatic::new(&mesh, &sections, &fixed).unwrap();
+    let path = model
+        .solve(
+            &load,
+            NewtonSettings {
+                steps: 20,
+                ..NewtonSettings::default()
+            },
+        )
+        .unwrap();
+    for (lambda, u_ref, w_ref) in [
+        (0.05, 0.026, 0.663),
+        (0.5, 1.604, 4.933),
+        (1.0, 3.286, 6.698),
+    ] {
+        let (_, c) = path
+            .iter()
+            .find(|(l, _)| (l - lambda).abs() < 1e-9)
+            .unwrap();
+        let d = tip.iter().map(|&n| c.displacement[n]).sum::<Vector3<f64>>() / tip.len() as f64;
+        let (u, w) = (-d.x, d.z);
+        println!(
+            "P/P_max = {lambda}: -u = {u:.4} ({u_ref}, {:+.2}%), w = {w:.4} ({w_ref}, {:+.2}%)",
+            100.0 * (u / u_ref - 1.0),
+            100.0 * (w / w_ref - 1.0)
+        );
+        assert!((w / w_ref - 1.0).abs() < 0.02, "w {w} vs {w_ref}");
+        assert!((u / u_ref - 1.0).abs() < 0.02, "u {u} vs {u_ref}");
+    }
+}
