@@ -6,7 +6,7 @@ use fwav::shell::linear::LinearStatic;
 use fwav::shell::material::{Layer, Section};
 use fwav::shell::mesh::ShellMesh;
 use fwav::shell::modal::modes;
-use nalgebra::Vector3;
+use nalgebra::{Rotation3, Vector3};
 
 const E: f64 = 1.0e9;
 const NU: f64 = 0.3;
@@ -431,4 +431,203 @@ fn strip_under_end_shear() {
         assert!((w / w_ref - 1.0).abs() < 0.02, "w {w} vs {w_ref}");
         assert!((u / u_ref - 1.0).abs() < 0.02, "u {u} vs {u_ref}");
     }
+}
+
+/// The nonlinear transient at small amplitude is the linear one: a simply
+/// supported plate released from its first mode at 1% of its thickness
+/// (geometric effects ~1e-4), centre deflection over two periods within 1%
+/// of the amplitude from the linear generalized-alpha run (same steps;
+/// measured 4.7e-4).
+#[test]
+fn nonlinear_dynamics_reduces_to_linear() {
+    use fwav::shell::dynamics::{GeneralizedAlpha, Transient};
+    use fwav::shell::nonlinear_dynamics::NonlinearTransient;
+    let (a, t) = (1.0, 0.01);
+    let mesh = ShellMesh::rectangle(a, a, 6, 6).unwrap();
+    let sections = vec![Section::single(&plate_layer(t)); mesh.elements.len()];
+    let fixed = simply_supported(&mesh, a, a);
+    let first = &modes(&mesh, &sections, &fixed, 1).unwrap()[0];
+    let period = 1.0 / first.frequency;
+    let settings = GeneralizedAlpha {
+        dt: period / 40.0,
+        rho_inf: 1.0,
+        mass_damping: 0.0,
+        stiffness_damping: 0.0,
+    };
+    let centre = mesh.nodes_where(|p| (p.x - 0.5).abs() < 1e-9 && (p.y - 0.5).abs() < 1e-9)[0];
+    let amplitude = 0.01 * t;
+    let scale = amplitude / first.shape[6 * centre + 2];
+    let shape: Vec<f64> = first.shape.iter().map(|v| scale * v).collect();
+    let linear = Transient::new(&mesh, &sections, &fixed, settings).unwrap();
+    let map = linear.model().map().clone();
+    let zero = vec![0.0; map.free_count()];
+    let mut ls = linear.start(map.restrict(&shape), &zero);
+    let nonlinear = NonlinearTransient::new(&mesh, &sections, &fixed, settings).unwrap();
+    let mut ns = nonlinear.rest();
+    ns.configuration.update(&shape);
+    // Consistent start: M acc0 = -f_int(q0) = -K q0 at this amplitude.
+    let k_u = linear.model().apply(&map.restrict(&shape));
+    let acc0 = map.expand(
+        &k_u.iter()
+            .zip(linear.mass())
+            .map(|(f, m)| -f / m)
+            .collect::<Vec<_>>(),
+    );
+    ns.acceleration = acc0.clone();
+    ns.algorithmic = acc0;
+    let load = vec![0.0; mesh.dofs()];
+    let w = map.free(6 * centre + 2).unwrap();
+    let mut worst: f64 = 0.0;
+    for _ in 0..80 {
+        linear.step(&mut ls, &zero);
+        nonlinear.step(&mut ns, &load, &Vec::new()).unwrap();
+        let wn = ns.configuration.displacement[centre].z;
+        worst = worst.max((wn - ls.u[w]).abs() / amplitude);
+    }
+    println!(
+        "nonlinear vs linear transient: worst difference {:.2e} of the amplitude",
+        worst
+    );
+    assert!(worst < 0.01, "{worst}");
+}
+
+/// Large-amplitude free vibration of a cantilever strip (released from rest
+/// with its tip deflected by a third of its length under a tip load): the
+/// total energy should stay within 1% over 20 periods.
+#[test]
+#[ignore = "not met: released at w = 0.345 L, Newton stops converging after 1.3 periods \
+            with rho_inf = 1 and 1.8 with 0.9, and with 0.8 the energy grows 3.7e7-fold: \
+            generalized-alpha is not energy-stable for the stiff membrane modes of a \
+            geometrically nonlinear shell (Kuhl & Crisfield 1999); an energy-momentum or \
+            energy-decaying scheme is the fix. Small amplitudes and a driven root pass."]
+fn nonlinear_free_vibration_energy() {
+    use fwav::shell::dynamics::GeneralizedAlpha;
+    use fwav::shell::nonlinear::{NewtonSettings, NonlinearStatic};
+    use fwav::shell::nonlinear_dynamics::NonlinearTransient;
+    let (length, width) = (1.0, 0.1);
+    let layer = Layer {
+        young: 70e9,
+        poisson: 0.3,
+        density: 2700.0,
+        thickness: 0.002,
+    };
+    let mesh = ShellMesh::rectangle(length, width, 10, 1).unwrap();
+    let sections = vec![Section::single(&layer); mesh.elements.len()];
+    let fixed: Vec<usize> = mesh
+        .nodes_where(|p| p.x.abs() < 1e-9)
+        .into_iter()
+        .flat_map(|n| (0..6).map(move |c| 6 * n + c))
+        .collect();
+    let tip = mesh.nodes_where(|p| (p.x - length).abs() < 1e-9);
+    let ei = 70e9 * width * 0.002f64.powi(3) / 12.0;
+    let mut load = vec![0.0; mesh.dofs()];
+    for &n in &tip {
+        load[6 * n + 2] = 1.2 * ei / length.powi(2) / tip.len() as f64;
+    }
+    let deflected = NonlinearStatic::new(&mesh, &sections, &fixed)
+        .unwrap()
+        .solve(&load, NewtonSettings::default())
+        .unwrap()
+        .pop()
+        .unwrap()
+        .1;
+    let w_tip = deflected.displacement[tip[0]].z;
+    // First bending period of a cantilever: 2 pi / (1.875^2 sqrt(EI / (m L^4))).
+    let m = 2700.0 * width * 0.002;
+    let period =
+        2.0 * std::f64::consts::PI / (1.875f64.powi(2) * (ei / (m * length.powi(4))).sqrt());
+    let settings = GeneralizedAlpha {
+        dt: period / 50.0,
+        rho_inf: 0.9,
+        mass_damping: 0.0,
+        stiffness_damping: 0.0,
+    };
+    let model = NonlinearTransient::new(&mesh, &sections, &fixed, settings).unwrap();
+    let mut state = model.rest();
+    state.configuration = deflected;
+    let zero = vec![0.0; mesh.dofs()];
+    let e0 = {
+        let (k, s) = model.energy(&state);
+        k + s
+    };
+    let mut worst: f64 = 0.0;
+    for _ in 0..1000 {
+        model.step(&mut state, &zero, &Vec::new()).unwrap();
+        let (k, s) = model.energy(&state);
+        worst = worst.max(((k + s) / e0 - 1.0).abs());
+    }
+    println!(
+        "tip released at w = {:.3} L: worst energy change over 20 periods {:.2e}",
+        w_tip / length,
+        worst
+    );
+    assert!(w_tip / length > 0.25);
+    assert!(worst < 0.01, "{worst}");
+}
+
+/// A driven root: a strip whose root line is turned by 90 degrees about
+/// the y axis (lifting the strip out of its plane), slowly (a smooth ramp
+/// over 20 first-mode periods, 400 steps, rho_inf 0.9): the tip follows the
+/// rigid rotation within 1% of the length (measured 0.1%).
+#[test]
+fn prescribed_root_rotation_carries_the_strip() {
+    use fwav::shell::dynamics::GeneralizedAlpha;
+    use fwav::shell::nonlinear_dynamics::NonlinearTransient;
+    let (length, width) = (1.0, 0.1);
+    let layer = Layer {
+        young: 70e9,
+        poisson: 0.3,
+        density: 2700.0,
+        thickness: 0.01,
+    };
+    let mesh = ShellMesh::rectangle(length, width, 10, 1).unwrap();
+    let sections = vec![Section::single(&layer); mesh.elements.len()];
+    let root = mesh.nodes_where(|p| p.x.abs() < 1e-9);
+    let held: Vec<usize> = root
+        .iter()
+        .flat_map(|n| (0..6).map(move |c| 6 * n + c))
+        .collect();
+    let ei = 70e9 * width * 0.01f64.powi(3) / 12.0;
+    let m = 2700.0 * width * 0.01;
+    let period =
+        2.0 * std::f64::consts::PI / (1.875f64.powi(2) * (ei / (m * length.powi(4))).sqrt());
+    let duration = 20.0 * period;
+    let steps = 400;
+    let settings = GeneralizedAlpha {
+        dt: duration / steps as f64,
+        rho_inf: 0.9,
+        mass_damping: 0.0,
+        stiffness_damping: 0.0,
+    };
+    let model = NonlinearTransient::new(&mesh, &sections, &held, settings).unwrap();
+    let mut state = model.rest();
+    let zero = vec![0.0; mesh.dofs()];
+    // Rotation about the y axis (lifting the strip out of its plane), the
+    // root line lying on that axis.
+    let angle = |t: f64| {
+        let s = (t / duration).min(1.0);
+        0.5 * std::f64::consts::FRAC_PI_2 * (1.0 - (std::f64::consts::PI * s).cos())
+    };
+    for k in 1..=steps {
+        let t = k as f64 * settings.dt;
+        let q = Rotation3::from_axis_angle(&nalgebra::Vector3::y_axis(), -angle(t));
+        let prescribed = root
+            .iter()
+            .map(|&n| (n, q * mesh.nodes[n] - mesh.nodes[n], q))
+            .collect();
+        model.step(&mut state, &zero, &prescribed).unwrap();
+    }
+    let q = Rotation3::from_axis_angle(&nalgebra::Vector3::y_axis(), -angle(duration));
+    let tip = mesh.nodes_where(|p| (p.x - length).abs() < 1e-9);
+    let worst = tip
+        .iter()
+        .map(|&n| {
+            ((mesh.nodes[n] + state.configuration.displacement[n]) - q * mesh.nodes[n]).norm()
+        })
+        .fold(0.0f64, f64::max);
+    println!(
+        "driven root, 90 deg: tip off the rigid rotation by {:.2e} L",
+        worst / length
+    );
+    assert!(worst < 0.01 * length, "{worst}");
 }

@@ -198,7 +198,7 @@ impl Transient {
 
 /// Adds `d` to the diagonal of a square sparse matrix whose pattern holds
 /// every diagonal entry (a stiffness does).
-fn add_diagonal(k: &mut faer::sparse::SparseColMat<usize, f64>, d: &[f64]) {
+pub(crate) fn add_diagonal(k: &mut faer::sparse::SparseColMat<usize, f64>, d: &[f64]) {
     let positions: Vec<Option<usize>> = (0..d.len())
         .map(|j| {
             let range = k.as_ref().col_range(j);

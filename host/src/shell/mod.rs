@@ -12,7 +12,8 @@
 //! - [`modal`]: lowest natural frequencies and shapes.
 //! - [`dynamics`]: linear transient response (generalized-alpha).
 //! - [`corotational`], [`nonlinear`]: large displacements and rotations
-//!   (co-rotational elements, Newton with load steps).
+//!   (co-rotational elements, Newton with load steps), and in time
+//!   ([`nonlinear_dynamics`], generalized-alpha with Newton).
 //! - [`vtu`]: ParaView output.
 //! - [`wing`]: the planform, its mesh, spar and root attachment.
 //! - [`import`]: NASTRAN bulk data and Gmsh meshes.
@@ -29,6 +30,7 @@ pub mod material;
 pub mod mesh;
 pub mod modal;
 pub mod nonlinear;
+pub mod nonlinear_dynamics;
 pub mod structure;
 pub mod vtu;
 pub mod wing;

@@ -1,0 +1,257 @@
+//! Geometrically nonlinear transient dynamics: the co-rotational shell
+//! ([`super::corotational`]) advanced by the generalized-alpha method in
+//! the form of Arnold & Brüls (2007, Multibody Syst. Dyn. 18) for
+//! configurations with rotations, Newton iterations every step:
+//!
+//! - equilibrium at `t_{n+1}`: `M acc_{n+1} + f_int(q_{n+1}) = f_ext(t_{n+1})`;
+//! - an algorithmic acceleration `a`:
+//!   `(1 - alpha_m) a_{n+1} + alpha_m a_n = (1 - alpha_f) acc_{n+1} + alpha_f acc_n`;
+//! - `q_{n+1} = q_n (+) [h v_n + h^2 (1/2 - beta) a_n + h^2 beta a_{n+1}]`,
+//!   `v_{n+1} = v_n + h (1 - gamma) a_n + h gamma a_{n+1}`
+//!   (`(+)`: translations add, rotations compose with the spin);
+//! - the parameters of [`super::dynamics::GeneralizedAlpha`] (second order,
+//!   `rho_inf` sets the high-frequency dissipation).
+//!
+//! Newton's matrix is `K_T + (1 - alpha_m) / ((1 - alpha_f) beta h^2) M`
+//! (lumped mass; rotational inertia, `rho t^3 / 12`, treated as for small
+//! rotation rates). Prescribed DOFs (a driven root) follow given
+//! translations and rotations; the loads may change every step (pressure
+//! histories).
+
+use std::sync::Arc;
+
+use faer::linalg::solvers::Solve;
+use faer::Mat;
+use nalgebra::{Rotation3, Vector3};
+
+use super::assembly::{self, element_dofs, AssemblyError};
+use super::corotational::{Configuration, Corotational};
+use super::dynamics::{add_diagonal, GeneralizedAlpha};
+use super::material::Section;
+use super::mesh::ShellMesh;
+use super::nonlinear::NonlinearError;
+use super::structure::Structure;
+
+/// Where the prescribed nodes are at a time: translation from the initial
+/// position and rotation, per prescribed node.
+pub type Prescribed = Vec<(usize, Vector3<f64>, Rotation3<f64>)>;
+
+/// The state of a nonlinear transient.
+#[derive(Clone, Debug)]
+pub struct DynamicState {
+    /// Time, s.
+    pub time: f64,
+    /// Configuration.
+    pub configuration: Configuration,
+    /// Velocities (translational and angular) over all global DOFs.
+    pub velocity: Vec<f64>,
+    /// True accelerations over all global DOFs.
+    pub acceleration: Vec<f64>,
+    /// Algorithmic accelerations over all global DOFs.
+    pub algorithmic: Vec<f64>,
+}
+
+/// A nonlinear transient model.
+pub struct NonlinearTransient<'a> {
+    mesh: &'a ShellMesh,
+    elements: Corotational,
+    structure: Arc<Structure>,
+    mass: Vec<f64>,
+    settings: GeneralizedAlpha,
+    /// Newton tolerance: residual norm relative to the largest of the
+    /// external, inertial and internal force norms (the frame spin is a
+    /// central difference, which puts a floor near 1e-6 under it).
+    pub tolerance: f64,
+    /// Newton iterations allowed a step.
+    pub max_iterations: usize,
+}
+
+impl<'a> NonlinearTransient<'a> {
+    /// The model; `held` lists the global DOFs that are fixed or
+    /// prescribed (every DOF of a prescribed node must be in it).
+    pub fn new(
+        mesh: &'a ShellMesh,
+        sections: &[Section],
+        held: &[usize],
+        settings: GeneralizedAlpha,
+    ) -> Result<Self, NonlinearError> {
+        Ok(Self {
+            mesh,
+            elements: Corotational::new(mesh, sections),
+            structure: Arc::new(Structure::new(mesh, held)?),
+            mass: assembly::lumped_mass(mesh, sections)?,
+            settings,
+            tolerance: 1e-5,
+            max_iterations: 25,
+        })
+    }
+
+    /// At rest, undeformed, at t = 0.
+    pub fn rest(&self) -> DynamicState {
+        let n = self.mesh.dofs();
+        DynamicState {
+            time: 0.0,
+            configuration: Configuration::initial(self.mesh.nodes.len()),
+            velocity: vec![0.0; n],
+            acceleration: vec![0.0; n],
+            algorithmic: vec![0.0; n],
+        }
+    }
+
+    /// Kinetic and strain energy, J.
+    pub fn energy(&self, state: &DynamicState) -> (f64, f64) {
+        let kinetic = 0.5
+            * state
+                .velocity
+                .iter()
+                .zip(&self.mass)
+                .map(|(v, m)| m * v * v)
+                .sum::<f64>();
+        let strain = self
+            .elements
+            .responses(self.mesh, &state.configuration)
+            .iter()
+            .map(|r| r.energy)
+            .sum();
+        (kinetic, strain)
+    }
+
+    /// Advances by one step under `load` (global, at the new time) with
+    /// the prescribed nodes at `prescribed` (at the new time).
+    pub fn step(
+        &self,
+        state: &mut DynamicState,
+        load: &[f64],
+        prescribed: &Prescribed,
+    ) -> Result<usize, NonlinearError> {
+        let (am, af, gamma, beta) = self.settings.parameters();
+        let h = self.settings.dt;
+        let n = self.mesh.dofs();
+        if load.len() != n {
+            return Err(AssemblyError::Length {
+                got: load.len(),
+                expected: n,
+            }
+            .into());
+        }
+        let map = self.structure.map();
+        // Predictor: a_{n+1} from acc_n (the usual choice: acc_{n+1} = acc_n).
+        let old = state.clone();
+        let a_pred: Vec<f64> = (0..n)
+            .map(|i| {
+                ((1.0 - af) * old.acceleration[i] + af * old.acceleration[i]
+                    - am * old.algorithmic[i])
+                    / (1.0 - am)
+            })
+            .collect();
+        let mut a_new = a_pred;
+        let increment = |a_new: &[f64]| -> Vec<f64> {
+            (0..n)
+                .map(|i| {
+                    h * old.velocity[i]
+                        + h * h * ((0.5 - beta) * old.algorithmic[i] + beta * a_new[i])
+                })
+                .collect()
+        };
+        // Prescribed nodes: their algorithmic acceleration is the one that
+        // reaches the prescribed place.
+        for &(node, translation, rotation) in prescribed {
+            let step_translation = translation - old.configuration.displacement[node];
+            let step_rotation =
+                (rotation * old.configuration.rotation[node].inverse()).scaled_axis();
+            for c in 0..3 {
+                for (dof, moved) in [
+                    (6 * node + c, step_translation[c]),
+                    (6 * node + 3 + c, step_rotation[c]),
+                ] {
+                    a_new[dof] = (moved
+                        - h * old.velocity[dof]
+                        - h * h * (0.5 - beta) * old.algorithmic[dof])
+                        / (beta * h * h);
+                }
+            }
+        }
+        let mut config = old.configuration.clone();
+        config.update(&increment(&a_new));
+        for &(node, translation, rotation) in prescribed {
+            config.displacement[node] = translation;
+            config.rotation[node] = rotation;
+        }
+        // d acc / d a and d q / d a.
+        let acc_per_a = (1.0 - am) / (1.0 - af);
+        let shift = acc_per_a / (beta * h * h);
+        for iteration in 1..=self.max_iterations {
+            let acc: Vec<f64> = (0..n)
+                .map(|i| {
+                    (((1.0 - am) * a_new[i] + am * old.algorithmic[i]) - af * old.acceleration[i])
+                        / (1.0 - af)
+                })
+                .collect();
+            let responses = self.elements.responses(self.mesh, &config);
+            let inertia: Vec<f64> = (0..n).map(|i| self.mass[i] * acc[i]).collect();
+            let mut internal = vec![0.0; n];
+            for (e, r) in responses.iter().enumerate() {
+                for (local, g) in element_dofs(self.mesh, e).into_iter().enumerate() {
+                    internal[g] += r.force[local];
+                }
+            }
+            let residual: Vec<f64> = (0..n).map(|i| load[i] - inertia[i] - internal[i]).collect();
+            let free = map.restrict(&residual);
+            let norm = free_norm(&free);
+            // Relative to the largest of the forces in balance.
+            let scale = free_norm(&map.restrict(load))
+                .max(free_norm(&map.restrict(&inertia)))
+                .max(free_norm(&map.restrict(&internal)))
+                .max(f64::MIN_POSITIVE);
+            if norm <= self.tolerance * scale {
+                state.time += h;
+                state.velocity = (0..n)
+                    .map(|i| {
+                        old.velocity[i]
+                            + h * ((1.0 - gamma) * old.algorithmic[i] + gamma * a_new[i])
+                    })
+                    .collect();
+                state.acceleration = acc;
+                state.algorithmic = a_new;
+                state.configuration = config;
+                return Ok(iteration);
+            }
+            let tangents: Vec<_> = responses.iter().map(|r| r.tangent).collect();
+            let mut k = self.structure.assemble(&tangents)?;
+            add_mass(&mut k, &map.restrict(&self.mass), shift);
+            let factor = match self.structure.factorize(&k) {
+                Ok(f) => f,
+                Err(_) => {
+                    let material: Vec<_> = responses.iter().map(|r| r.material).collect();
+                    let mut k = self.structure.assemble(&material)?;
+                    add_mass(&mut k, &map.restrict(&self.mass), shift);
+                    self.structure.factorize(&k)?
+                }
+            };
+            let rhs = Mat::from_fn(free.len(), 1, |i, _| free[i]);
+            let dq = factor.solve(&rhs);
+            let dq_global = map.expand(&(0..free.len()).map(|i| dq[(i, 0)]).collect::<Vec<_>>());
+            config.update(&dq_global);
+            for i in 0..n {
+                if map.free(i).is_some() {
+                    a_new[i] += dq_global[i] / (beta * h * h);
+                }
+            }
+        }
+        Err(NonlinearError::NoConvergence {
+            step: (state.time / h).round() as usize + 1,
+            load: state.time + h,
+            iterations: self.max_iterations,
+            residual: f64::NAN,
+        })
+    }
+}
+
+/// Adds `shift * m` to the diagonal.
+fn add_mass(k: &mut faer::sparse::SparseColMat<usize, f64>, m: &[f64], shift: f64) {
+    add_diagonal(k, &m.iter().map(|v| shift * v).collect::<Vec<_>>());
+}
+
+fn free_norm(v: &[f64]) -> f64 {
+    v.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
