@@ -247,6 +247,26 @@ impl<'a> NonlinearTransient<'a> {
     }
 }
 
+/// Nodal forces of a pressure per element acting on the deformed surface
+/// (a follower load: along each element's current normal, over its
+/// current area), global, N.
+pub fn follower_pressure_loads(
+    mesh: &ShellMesh,
+    configuration: &Configuration,
+    pressure: &[f64],
+) -> Result<Vec<f64>, NonlinearError> {
+    let moved = ShellMesh {
+        nodes: mesh
+            .nodes
+            .iter()
+            .zip(&configuration.displacement)
+            .map(|(x, u)| x + u)
+            .collect(),
+        elements: mesh.elements.clone(),
+    };
+    Ok(assembly::pressure_loads(&moved, pressure)?)
+}
+
 /// Adds `shift * m` to the diagonal.
 fn add_mass(k: &mut faer::sparse::SparseColMat<usize, f64>, m: &[f64], shift: f64) {
     add_diagonal(k, &m.iter().map(|v| shift * v).collect::<Vec<_>>());
@@ -254,4 +274,27 @@ fn add_mass(k: &mut faer::sparse::SparseColMat<usize, f64>, m: &[f64], shift: f6
 
 fn free_norm(v: &[f64]) -> f64 {
     v.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A pressure on a plate turned by 90 degrees acts along the turned
+    /// normal with the same resultant.
+    #[test]
+    fn follower_pressure_turns_with_the_surface() {
+        let mesh = ShellMesh::rectangle(1.0, 0.5, 2, 1).unwrap();
+        let mut c = Configuration::initial(mesh.nodes.len());
+        let q = Rotation3::from_axis_angle(&Vector3::y_axis(), std::f64::consts::FRAC_PI_2);
+        for (n, x) in mesh.nodes.iter().enumerate() {
+            c.displacement[n] = q * x - x;
+        }
+        let f = follower_pressure_loads(&mesh, &c, &[2.0, 2.0]).unwrap();
+        let total = f
+            .chunks_exact(6)
+            .fold(Vector3::zeros(), |s, d| s + Vector3::new(d[0], d[1], d[2]));
+        let expected = q * Vector3::new(0.0, 0.0, 2.0 * 0.5);
+        assert!((total - expected).norm() < 1e-12, "{total}");
+    }
 }
