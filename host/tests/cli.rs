@@ -119,7 +119,11 @@ fn aero2d_reports_thrust_beside_garrick() {
     // --plot draws a PNG.
     let png = std::env::temp_dir().join(format!("fwav-aero2d-{}.png", std::process::id()));
     let out = fwav(&["aero2d", "--cycles", "2", "--plot", png.to_str().unwrap()]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let bytes = std::fs::read(&png).unwrap();
     assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
     let _ = std::fs::remove_file(&png);
@@ -128,15 +132,31 @@ fn aero2d_reports_thrust_beside_garrick() {
     let dir = std::env::temp_dir().join(format!("fwav-aero2d-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("shape.json");
-    std::fs::write(&file, r#"{"samples": [[[0.0, 0.0], [0.5, 0.01], [0.4, 0.0]]]}"#).unwrap();
+    std::fs::write(
+        &file,
+        r#"{"samples": [[[0.0, 0.0], [0.5, 0.01], [0.4, 0.0]]]}"#,
+    )
+    .unwrap();
     let bad = fwav(&["aero2d", "--deformation", file.to_str().unwrap()]);
     let err = String::from_utf8_lossy(&bad.stderr);
     assert_eq!(bad.status.code(), Some(1));
-    assert!(err.contains("shape.json") && err.contains("point 2"), "{err}");
+    assert!(
+        err.contains("shape.json") && err.contains("point 2"),
+        "{err}"
+    );
 
-    let bad = fwav(&["aero2d", "--section", "naca0012"]);
+    // A thick NACA section runs the panel model; a bad name is refused.
+    let out = fwav(&["aero2d", "--section", "naca0012", "--cycles", "2", "--json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["model"], "thick section (panel)");
+    let bad = fwav(&["aero2d", "--section", "naca00x2"]);
     assert_eq!(bad.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&bad.stderr).contains("only `flat`"));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("NACA 4-digit"));
     let bad = fwav(&["aero2d", "--reduced-frequency=-1"]);
     assert!(String::from_utf8_lossy(&bad.stderr).contains("--reduced-frequency"));
 }

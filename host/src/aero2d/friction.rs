@@ -18,6 +18,21 @@ pub fn laminar_friction(reynolds: f64, tangential: f64) -> f64 {
     2.656 * tangential.abs().powf(1.5) / reynolds.sqrt() * tangential.signum()
 }
 
+/// The streamwise friction drag history of a rigidly moving section
+/// (on `1/2 rho U^2 c`) at `times` (chords travelled): the chordwise
+/// relative flow `cos alpha + h' sin alpha`, its force along the chord
+/// `(cos alpha, -sin alpha)`.
+pub fn friction_history(motion: &super::motion::Motion, times: &[f64], reynolds: f64) -> Vec<f64> {
+    times
+        .iter()
+        .map(|&t| {
+            let (_, h_dot, alpha, _) = motion.at(t);
+            let (s, c) = alpha.sin_cos();
+            laminar_friction(reynolds, c + h_dot * s) * c
+        })
+        .collect()
+}
+
 /// Chord Reynolds number of the built-in FWAV's mid-span section in flight:
 /// 3 m/s, 0.075 m chord, air at sea level (nu = 1.5e-5 m^2/s).
 pub const FWAV_REYNOLDS: f64 = 3.0 * 0.075 / 1.5e-5;

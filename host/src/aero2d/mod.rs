@@ -3,17 +3,21 @@
 //! Granlund, Ol & Edwards 2014, J. Fluid Mech. 751) and the classical
 //! results it is validated against.
 //!
-//! Status: the thin-plate solver with a free trailing-edge wake, plunge and
-//! pitch, pressure-jump loads with leading-edge suction and a lumped,
-//! freely drifting far wake ([`ldvm`]), validated against
-//! Theodorsen–Garrick and Wagner ([`theory`]), behind `fwav aero2d`.
-//! Leading-edge vortex shedding (LESP), deforming and thick sections, skin
-//! friction and plots are the rest of the aero2d issue.
+//! - [`ldvm`]: thin, cambered or deforming sections ([`camber`]) with
+//!   leading-edge vortex shedding by the critical LESP, plunge, pitch and
+//!   pitch ramps ([`motion`]).
+//! - [`panel`]: thick sections (NACA 4-digit or point files, [`naca`]),
+//!   rigid or deforming, by an unsteady source/doublet panel method.
+//! - [`history`]: load histories and cycle means; [`friction`]: the laminar
+//!   skin-friction estimate for net thrust; [`plot`]: pictures of a run.
+//! - [`theory`]: Theodorsen, Garrick and Wagner, the references.
 
 pub mod camber;
 pub mod friction;
 pub mod history;
 pub mod ldvm;
 pub mod motion;
+pub mod naca;
+pub mod panel;
 pub mod plot;
 pub mod theory;

@@ -6,16 +6,21 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
 use fwav::aero2d::camber::CamberHistory;
-use fwav::aero2d::friction::FWAV_REYNOLDS;
+use fwav::aero2d::friction::{friction_history, FWAV_REYNOLDS};
 use fwav::aero2d::ldvm::{
     cycle_mean_of, cycle_means, cycle_means_until, History, Ldvm, Motion, Settings,
 };
+use fwav::aero2d::naca::{read_points, Naca4, TrailingEdge};
+use fwav::aero2d::panel::{PanelSettings, PanelSolver, SectionShape, ShapeHistory, DEFAULT_PANELS};
+use fwav::aero2d::plot::draw;
 use fwav::aero2d::theory::garrick_plunge;
 
 /// The command's options.
 #[derive(clap::Args)]
 pub struct Aero2dArgs {
-    /// Section: `flat` (thin line, LDVM).
+    /// Section: `flat` (thin line, LDVM), a NACA 4-digit name such as
+    /// `naca0012` (thick section, panel method), or a file of x y points
+    /// (Selig order or clockwise from the trailing edge, chords).
     #[arg(long, default_value = "flat")]
     pub section: String,
     /// Plunge amplitude, chords.
@@ -48,9 +53,11 @@ pub struct Aero2dArgs {
     #[arg(long, default_value_t = FWAV_REYNOLDS)]
     pub reynolds: f64,
     /// Deformation history of the section over one period, JSON:
-    /// `{"samples": [[[x, y], ...], ...]}` (the mid-line points of each
-    /// sample in the section's kinematic frame, chords, leading edge at
-    /// (0, 0) and trailing edge at (1, 0), samples equally spaced in time).
+    /// `{"samples": [[[x, y], ...], ...]}`, samples equally spaced in time,
+    /// in the section's kinematic frame (chords, leading edge at (0, 0),
+    /// trailing edge at (1, 0)): for `flat` the mid-line points from the
+    /// leading to the trailing edge; for a thick section the whole contour,
+    /// as many points as the section has, in its order.
     #[arg(long)]
     pub deformation: Option<PathBuf>,
     /// Draw the wake and the force histories to this PNG.
@@ -78,9 +85,39 @@ fn read_deformation(path: &Path, period: f64) -> Result<CamberHistory> {
         .with_context(|| format!("{}", path.display()))
 }
 
+/// The thick section named by `--section`: a NACA 4-digit name or a point
+/// file.
+fn thick_section(name: &str) -> Result<SectionShape> {
+    let points = match name.parse::<Naca4>() {
+        Ok(naca) => naca
+            .points(DEFAULT_PANELS, TrailingEdge::Closed)
+            .with_context(|| format!("--section {name}"))?,
+        Err(naca_error) => {
+            let path = Path::new(name);
+            if !path.exists() {
+                bail!("--section {name:?}: neither `flat`, a NACA 4-digit name ({naca_error}), nor an existing point file");
+            }
+            read_points(path)
+                .with_context(|| format!("--section {name}"))?
+                .points
+        }
+    };
+    SectionShape::new(&points).with_context(|| format!("--section {name}"))
+}
+
+/// A thick section's deformation: the same file layout, each sample the
+/// closed contour (as many points as the section, in its order).
+fn read_contour_history(path: &Path, period: f64) -> Result<ShapeHistory> {
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    let file: DeformationFile = serde_json::from_str(&text)
+        .with_context(|| format!("{}: not a deformation history", path.display()))?;
+    ShapeHistory::new(&file.samples, period).with_context(|| format!("{}", path.display()))
+}
+
 fn check(a: &Aero2dArgs) -> Result<()> {
-    if a.section != "flat" {
-        bail!("--section {:?}: only `flat` (thin line) is available so far; naca0012 and point files come with the thick-section panel model", a.section);
+    if a.section != "flat" && a.lesp_critical.is_some() {
+        bail!("--lesp-critical applies to the thin-line (`--section flat`) model only");
     }
     if !(a.reduced_frequency > 0.0 && a.reduced_frequency <= 20.0) {
         bail!(
@@ -171,21 +208,59 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         reynolds: Some(a.reynolds),
         ..defaults
     };
-    let mut solver = Ldvm::new(motion, settings);
-    if let Some(path) = &a.deformation {
-        solver = solver.with_camber(read_deformation(path, period)?);
-    }
-    let history = solver.run();
-    if let Some(png) = &a.plot {
+    let (history, wake_count, lev_count) = if a.section == "flat" {
+        let mut solver = Ldvm::new(motion, settings);
+        if let Some(path) = &a.deformation {
+            solver = solver.with_camber(read_deformation(path, period)?);
+        }
+        let history = solver.run();
         let wake: Vec<_> = solver
             .wake()
             .iter()
             .chain(solver.leading_edge_vortices())
             .copied()
             .collect();
-        fwav::aero2d::plot::draw(&history, &wake, &solver.section_points(), Some(period), png)
-            .with_context(|| format!("--plot {}", png.display()))?;
-    }
+        if let Some(png) = &a.plot {
+            draw(&history, &wake, &solver.section_points(), Some(period), png)
+                .with_context(|| format!("--plot {}", png.display()))?;
+        }
+        (
+            history,
+            solver.wake().len(),
+            solver.leading_edge_vortices().len(),
+        )
+    } else {
+        let section = thick_section(&a.section)?;
+        let panel_settings = PanelSettings {
+            dt: settings.dt,
+            duration: settings.duration,
+            far_wake: settings.far_wake,
+        };
+        let mut solver = PanelSolver::new(&section, motion, panel_settings)
+            .with_context(|| format!("--section {}", a.section))?;
+        if let Some(path) = &a.deformation {
+            solver = solver
+                .with_shape_history(read_contour_history(path, period)?)
+                .with_context(|| format!("--deformation {}", path.display()))?;
+        }
+        let mut history = solver.run();
+        history.cd_friction = friction_history(&motion, &history.time, a.reynolds);
+        if let Some(png) = &a.plot {
+            let t = settings.duration;
+            let (h, _, alpha, _) = motion.at(t);
+            let (s, c) = alpha.sin_cos();
+            let p = a.pivot;
+            let body: Vec<(f64, f64)> = solver
+                .surface_pressure()
+                .0
+                .iter()
+                .map(|&[x, y]| (p + (x - p) * c + y * s, h - (x - p) * s + y * c))
+                .collect();
+            draw(&history, solver.wake(), &body, Some(period), png)
+                .with_context(|| format!("--plot {}", png.display()))?;
+        }
+        (history, solver.wake().len(), 0)
+    };
     let m = means(&history, period, settings.dt);
     let net = m.ct - m.cd_friction;
     let rigid_plunge = a.pitch_amplitude_deg == 0.0
@@ -215,8 +290,9 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
             "efficiency": m.efficiency,
             "net_efficiency": net / m.cp,
             "mean_ct_change_last_two_cycles": m.periodicity,
-            "wake_vortices": solver.wake().len(),
-            "leading_edge_vortices": solver.leading_edge_vortices().len(),
+            "wake_vortices": wake_count,
+            "leading_edge_vortices": lev_count,
+            "model": if a.section == "flat" { "thin line (LDVM)" } else { "thick section (panel)" },
         });
         if let Some((gct, gcp, geta)) = garrick {
             v["garrick"] = serde_json::json!({"mean_ct": gct, "mean_cp": gcp, "efficiency": geta});
@@ -244,7 +320,7 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         println!(
             "  CT change from the cycle before: {:+.2} %; {} leading-edge vortices shed",
             100.0 * m.periodicity,
-            solver.leading_edge_vortices().len()
+            lev_count
         );
         if let Some((gct, gcp, geta)) = garrick {
             println!("  Garrick (1936): CT {gct:.5}  CP {gcp:.5}  efficiency {geta:.3}");
