@@ -45,16 +45,19 @@ fn linear_static(c: &mut Criterion) {
     // and tangents of every element, assembly, factorization, solve.
     let corotational = fwav::shell::corotational::Corotational::new(&wing.mesh, &sections);
     let state = fwav::shell::corotational::Configuration::initial(wing.mesh.nodes.len());
-    group.bench_function("nonlinear Newton iteration (co-rotational tangent + factor + solve)", |b| {
-        b.iter(|| {
-            let responses = corotational.responses(&wing.mesh, &state);
-            let tangents: Vec<_> = responses.iter().map(|r| r.tangent).collect();
-            let k = structure.assemble(&tangents).expect("assemble");
-            let factor = structure.factorize(&k).expect("factor");
-            let rhs = faer::Mat::from_fn(structure.map().free_count(), 1, |i, _| i as f64);
-            faer::linalg::solvers::Solve::solve(&factor, &rhs)
-        })
-    });
+    group.bench_function(
+        "nonlinear Newton iteration (co-rotational tangent + factor + solve)",
+        |b| {
+            b.iter(|| {
+                let responses = corotational.responses(&wing.mesh, &state);
+                let tangents: Vec<_> = responses.iter().map(|r| r.tangent).collect();
+                let k = structure.assemble(&tangents).expect("assemble");
+                let factor = structure.factorize(&k).expect("factor");
+                let rhs = faer::Mat::from_fn(structure.map().free_count(), 1, |i, _| i as f64);
+                faer::linalg::solvers::Solve::solve(&factor, &rhs)
+            })
+        },
+    );
     let loads = vec![load; 20];
     group.bench_function("20 load cases on one factorization", |b| {
         b.iter(|| model.solve(&loads).expect("solve"))
