@@ -191,6 +191,34 @@ fn scordelis_lo_roof() {
     assert!((w / 0.3024 - 1.0).abs() < 0.02, "{w}");
 }
 
+/// A strip `[0, length] x [0, width]` of `n x 1` elements, one layer: its
+/// root DOFs (all six at x = 0) and its tip nodes.
+struct Strip {
+    mesh: ShellMesh,
+    sections: Vec<Section>,
+    root: Vec<usize>,
+    tip: Vec<usize>,
+}
+
+impl Strip {
+    fn clamped(length: f64, width: f64, layer: Layer, n: usize) -> Self {
+        let mesh = ShellMesh::rectangle(length, width, n, 1).unwrap();
+        let sections = vec![Section::single(&layer); mesh.elements.len()];
+        let root = mesh
+            .nodes_where(|p| p.x.abs() < 1e-9)
+            .into_iter()
+            .flat_map(|n| (0..6).map(move |c| 6 * n + c))
+            .collect();
+        let tip = mesh.nodes_where(|p| (p.x - length).abs() < 1e-9);
+        Self {
+            mesh,
+            sections,
+            root,
+            tip,
+        }
+    }
+}
+
 /// Hard simply supported edges of a rectangle `[0, a] x [0, b]` in z = 0:
 /// w, u, v held, and the rotation along each edge.
 fn simply_supported(mesh: &ShellMesh, a: f64, b: f64) -> Vec<usize> {
@@ -332,14 +360,12 @@ fn strip_rolls_into_a_circle_under_an_end_moment() {
         density: 1.0,
         thickness: 0.1,
     };
-    let mesh = ShellMesh::rectangle(length, width, 16, 1).unwrap();
-    let sections = vec![Section::single(&layer); mesh.elements.len()];
-    let fixed: Vec<usize> = mesh
-        .nodes_where(|p| p.x.abs() < 1e-9)
-        .into_iter()
-        .flat_map(|n| (0..6).map(move |c| 6 * n + c))
-        .collect();
-    let tip = mesh.nodes_where(|p| (p.x - length).abs() < 1e-9);
+    let Strip {
+        mesh,
+        sections,
+        root: fixed,
+        tip,
+    } = Strip::clamped(length, width, layer, 16);
     let m_max = 50.0 * std::f64::consts::PI / 3.0;
     let mut load = vec![0.0; mesh.dofs()];
     for &n in &tip {
@@ -390,14 +416,12 @@ fn strip_under_end_shear() {
         density: 1.0,
         thickness: 0.1,
     };
-    let mesh = ShellMesh::rectangle(length, width, 16, 1).unwrap();
-    let sections = vec![Section::single(&layer); mesh.elements.len()];
-    let fixed: Vec<usize> = mesh
-        .nodes_where(|p| p.x.abs() < 1e-9)
-        .into_iter()
-        .flat_map(|n| (0..6).map(move |c| 6 * n + c))
-        .collect();
-    let tip = mesh.nodes_where(|p| (p.x - length).abs() < 1e-9);
+    let Strip {
+        mesh,
+        sections,
+        root: fixed,
+        tip,
+    } = Strip::clamped(length, width, layer, 16);
     let mut load = vec![0.0; mesh.dofs()];
     for &n in &tip {
         load[6 * n + 2] = 4.0 / tip.len() as f64;
@@ -511,14 +535,12 @@ fn nonlinear_free_vibration_energy() {
         density: 2700.0,
         thickness: 0.002,
     };
-    let mesh = ShellMesh::rectangle(length, width, 10, 1).unwrap();
-    let sections = vec![Section::single(&layer); mesh.elements.len()];
-    let fixed: Vec<usize> = mesh
-        .nodes_where(|p| p.x.abs() < 1e-9)
-        .into_iter()
-        .flat_map(|n| (0..6).map(move |c| 6 * n + c))
-        .collect();
-    let tip = mesh.nodes_where(|p| (p.x - length).abs() < 1e-9);
+    let Strip {
+        mesh,
+        sections,
+        root: fixed,
+        tip,
+    } = Strip::clamped(length, width, layer, 10);
     let ei = 70e9 * width * 0.002f64.powi(3) / 12.0;
     let mut load = vec![0.0; mesh.dofs()];
     for &n in &tip {
@@ -580,13 +602,13 @@ fn prescribed_root_rotation_carries_the_strip() {
         density: 2700.0,
         thickness: 0.01,
     };
-    let mesh = ShellMesh::rectangle(length, width, 10, 1).unwrap();
-    let sections = vec![Section::single(&layer); mesh.elements.len()];
+    let Strip {
+        mesh,
+        sections,
+        root: held,
+        ..
+    } = Strip::clamped(length, width, layer, 10);
     let root = mesh.nodes_where(|p| p.x.abs() < 1e-9);
-    let held: Vec<usize> = root
-        .iter()
-        .flat_map(|n| (0..6).map(move |c| 6 * n + c))
-        .collect();
     let ei = 70e9 * width * 0.01f64.powi(3) / 12.0;
     let m = 2700.0 * width * 0.01;
     let period =

@@ -170,26 +170,52 @@ impl CamberHistory {
             let (e, s) = self.at_sample(0, x);
             return (e, s, 0.0);
         }
-        let dt = self.period / n as f64;
+        let span = PeriodicSpan::new(t, self.period, n);
+        let [p0, p1, p2, p3] = span.samples.map(|j| self.at_sample(j, x));
+        let (eta, rate) = span.cubic(p0.0, p1.0, p2.0, p3.0);
+        let (slope, _) = span.cubic(p0.1, p1.1, p2.1, p3.1);
+        (eta, slope, rate)
+    }
+}
+
+/// Where time `t` falls among `n` samples equally spaced over a period:
+/// the four samples of the periodic Catmull-Rom span around it, the
+/// fraction `w` across the span and the sample spacing.
+pub(crate) struct PeriodicSpan {
+    /// Samples before, at the start, at the end and after the span.
+    pub samples: [usize; 4],
+    /// Fraction across the span, in [0, 1).
+    pub w: f64,
+    /// Sample spacing (time).
+    pub dt: f64,
+}
+
+impl PeriodicSpan {
+    /// The span of `t` among `n >= 1` samples over `period`.
+    pub fn new(t: f64, period: f64, n: usize) -> Self {
+        let dt = period / n as f64;
         let phase = (t / dt).rem_euclid(n as f64);
         let i = (phase.floor() as usize).min(n - 1);
-        let w = phase - i as f64;
-        let [p0, p1, p2, p3] = [i + n - 1, i, i + 1, i + 2].map(|j| self.at_sample(j % n, x));
-        // Catmull-Rom: C1 through p1 (w = 0) and p2 (w = 1).
-        let cubic = |a: f64, b: f64, c: f64, d: f64| -> (f64, f64) {
-            let (c1, c2, c3) = (
-                0.5 * (c - a),
-                a - 2.5 * b + 2.0 * c - 0.5 * d,
-                0.5 * (d - a) + 1.5 * (b - c),
-            );
-            (
-                b + w * (c1 + w * (c2 + w * c3)),
-                c1 + w * (2.0 * c2 + 3.0 * w * c3),
-            )
-        };
-        let (eta, deta_dw) = cubic(p0.0, p1.0, p2.0, p3.0);
-        let (slope, _) = cubic(p0.1, p1.1, p2.1, p3.1);
-        (eta, slope, deta_dw / dt)
+        Self {
+            samples: [i + n - 1, i, i + 1, i + 2].map(|j| j % n),
+            w: phase - i as f64,
+            dt,
+        }
+    }
+
+    /// Catmull-Rom through `b` (w = 0) and `c` (w = 1), C1 across samples:
+    /// value and rate in time.
+    pub fn cubic(&self, a: f64, b: f64, c: f64, d: f64) -> (f64, f64) {
+        let w = self.w;
+        let (c1, c2, c3) = (
+            0.5 * (c - a),
+            a - 2.5 * b + 2.0 * c - 0.5 * d,
+            0.5 * (d - a) + 1.5 * (b - c),
+        );
+        (
+            b + w * (c1 + w * (c2 + w * c3)),
+            (c1 + w * (2.0 * c2 + 3.0 * w * c3)) / self.dt,
+        )
     }
 }
 

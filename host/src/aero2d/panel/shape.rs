@@ -1,6 +1,8 @@
 //! Section contours for the panel method: a validated, clockwise contour
 //! ([`SectionShape`]) and a periodic deforming one ([`ShapeHistory`]).
 
+use crate::aero2d::camber::PeriodicSpan;
+
 /// Why a contour or a shape history is refused.
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum ShapeError {
@@ -296,23 +298,9 @@ impl ShapeHistory {
             let zero = vec![[0.0; 2]; v.len()];
             return (v, zero);
         }
-        let dt = self.period / n as f64;
-        let phase = (t / dt).rem_euclid(n as f64);
-        let i = (phase.floor() as usize).min(n - 1);
-        let w = phase - i as f64;
-        let [p0, p1, p2, p3] = [i + n - 1, i, i + 1, i + 2].map(|j| &self.samples[j % n].vertices);
-        // Catmull-Rom: C1 through p1 (w = 0) and p2 (w = 1).
-        let cubic = |a: f64, b: f64, c: f64, d: f64| -> (f64, f64) {
-            let (c1, c2, c3) = (
-                0.5 * (c - a),
-                a - 2.5 * b + 2.0 * c - 0.5 * d,
-                0.5 * (d - a) + 1.5 * (b - c),
-            );
-            (
-                b + w * (c1 + w * (c2 + w * c3)),
-                (c1 + w * (2.0 * c2 + 3.0 * w * c3)) / dt,
-            )
-        };
+        let span = PeriodicSpan::new(t, self.period, n);
+        let [p0, p1, p2, p3] = span.samples.map(|j| &self.samples[j].vertices);
+        let cubic = |a: f64, b: f64, c: f64, d: f64| span.cubic(a, b, c, d);
         p1.iter()
             .enumerate()
             .map(|(k, _)| {
