@@ -75,6 +75,7 @@ impl<'a> NonlinearTransient<'a> {
         held: &[usize],
         settings: GeneralizedAlpha,
     ) -> Result<Self, NonlinearError> {
+        assembly::check_sections(mesh, sections)?;
         Ok(Self {
             mesh,
             elements: Corotational::new(mesh, sections),
