@@ -43,7 +43,8 @@ fn linear_static(c: &mut Criterion) {
     );
     // One Newton iteration of the nonlinear analysis: co-rotational forces
     // and tangents of every element, assembly, factorization, solve.
-    let corotational = fwav::shell::corotational::Corotational::new(&wing.mesh, &sections);
+    let corotational =
+        fwav::shell::corotational::Corotational::new(&wing.mesh, &sections).expect("elements");
     let state = fwav::shell::corotational::Configuration::initial(wing.mesh.nodes.len());
     group.bench_function(
         "nonlinear Newton iteration (co-rotational tangent + factor + solve)",

@@ -24,6 +24,7 @@
 use nalgebra::{Matrix3, Rotation3, SMatrix, Vector3};
 use rayon::prelude::*;
 
+use super::assembly::{check_sections, AssemblyError};
 use super::element::{local_stiffness_matrix, ElementMatrix, ElementVector, Frame};
 use super::material::Section;
 use super::mesh::ShellMesh;
@@ -211,8 +212,10 @@ pub struct ElementResponse {
 }
 
 impl Corotational {
-    /// Keeps each element's initial frame and local linear stiffness.
-    pub fn new(mesh: &ShellMesh, sections: &[Section]) -> Self {
+    /// Keeps each element's initial frame and local linear stiffness (one
+    /// section per element).
+    pub fn new(mesh: &ShellMesh, sections: &[Section]) -> Result<Self, AssemblyError> {
+        check_sections(mesh, sections)?;
         let references = (0..mesh.elements.len())
             .map(|e| {
                 let x = mesh.corners(e);
@@ -225,7 +228,7 @@ impl Corotational {
                 }
             })
             .collect();
-        Self { references }
+        Ok(Self { references })
     }
 
     /// Internal force, tangent and energy of element `e`.
@@ -303,7 +306,7 @@ mod tests {
     #[test]
     fn small_motions_are_linear() {
         let (mesh, sections) = one();
-        let cr = Corotational::new(&mesh, &sections);
+        let cr = Corotational::new(&mesh, &sections).unwrap();
         let k = element::stiffness(&mesh.corners(0), &sections[0]);
         let r = cr.element(&mesh, 0, &Configuration::initial(4));
         // Up to the drilling penalty: the linear element resists a rigid
@@ -326,7 +329,7 @@ mod tests {
     #[test]
     fn rigid_motion_is_free() {
         let (mesh, sections) = one();
-        let cr = Corotational::new(&mesh, &sections);
+        let cr = Corotational::new(&mesh, &sections).unwrap();
         let q = Rotation3::from_euler_angles(0.7, -1.2, 2.0);
         let mut c = Configuration::initial(4);
         for n in 0..4 {
@@ -353,7 +356,7 @@ mod consistency {
     #[test]
     fn force_and_tangent_are_derivatives() {
         let (mesh, sections) = super::tests::one();
-        let cr = Corotational::new(&mesh, &sections);
+        let cr = Corotational::new(&mesh, &sections).unwrap();
         let mut c = Configuration::initial(4);
         let u: Vec<f64> = (0..24)
             .map(|i| 0.05 * ((i * 7 % 11) as f64 - 5.0) / 5.0)

@@ -9,7 +9,7 @@ use faer::linalg::solvers::Solve;
 use faer::sparse::linalg::solvers::Llt;
 use faer::Mat;
 
-use super::assembly::{self, element_dofs, AssemblyError};
+use super::assembly::{element_dofs, AssemblyError};
 use super::corotational::{Configuration, Corotational};
 use super::material::Section;
 use super::mesh::ShellMesh;
@@ -75,10 +75,9 @@ impl<'a> NonlinearStatic<'a> {
         sections: &[Section],
         fixed: &[usize],
     ) -> Result<Self, NonlinearError> {
-        assembly::check_sections(mesh, sections)?;
         Ok(Self {
             mesh,
-            elements: Corotational::new(mesh, sections),
+            elements: Corotational::new(mesh, sections)?,
             structure: Arc::new(Structure::new(mesh, fixed)?),
         })
     }

@@ -75,10 +75,9 @@ impl<'a> NonlinearTransient<'a> {
         held: &[usize],
         settings: GeneralizedAlpha,
     ) -> Result<Self, NonlinearError> {
-        assembly::check_sections(mesh, sections)?;
         Ok(Self {
             mesh,
-            elements: Corotational::new(mesh, sections),
+            elements: Corotational::new(mesh, sections)?,
             structure: Arc::new(Structure::new(mesh, held)?),
             mass: assembly::lumped_mass(mesh, sections)?,
             settings,
