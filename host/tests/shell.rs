@@ -2,6 +2,7 @@
 //! (formulas and values: ../shared/REFERENCES.md).
 
 use fwav::shell::assembly::pressure_loads;
+use fwav::shell::corotational::Configuration;
 use fwav::shell::linear::LinearStatic;
 use fwav::shell::material::{Layer, Section};
 use fwav::shell::mesh::ShellMesh;
@@ -217,7 +218,54 @@ impl Strip {
             tip,
         }
     }
+
+    /// `total` shared equally by the tip nodes on DOF `component`.
+    fn tip_load(&self, component: usize, total: f64) -> Vec<f64> {
+        let mut load = vec![0.0; self.mesh.dofs()];
+        for &n in &self.tip {
+            load[6 * n + component] = total / self.tip.len() as f64;
+        }
+        load
+    }
+
+    /// Nonlinear equilibrium path in 20 load steps.
+    fn path(&self, load: &[f64]) -> Vec<(f64, Configuration)> {
+        use fwav::shell::nonlinear::{NewtonSettings, NonlinearStatic};
+        NonlinearStatic::new(&self.mesh, &self.sections, &self.root)
+            .unwrap()
+            .solve(
+                load,
+                NewtonSettings {
+                    steps: 20,
+                    ..NewtonSettings::default()
+                },
+            )
+            .unwrap()
+    }
+
+    /// Mean tip displacement `(-u, w)` at load factor `lambda` of a path.
+    fn tip_at(&self, path: &[(f64, Configuration)], lambda: f64) -> (f64, f64) {
+        let (_, c) = path
+            .iter()
+            .find(|(l, _)| (l - lambda).abs() < 1e-9)
+            .unwrap();
+        let d = self
+            .tip
+            .iter()
+            .map(|&n| c.displacement[n])
+            .sum::<Vector3<f64>>()
+            / self.tip.len() as f64;
+        (-d.x, d.z)
+    }
 }
+
+/// The Sze, Liu & Lo (2004) strips' section: t = 0.1, E = 1.2e6, nu = 0.
+const SZE_LAYER: Layer = Layer {
+    young: 1.2e6,
+    poisson: 0.0,
+    density: 1.0,
+    thickness: 0.1,
+};
 
 /// Hard simply supported edges of a rectangle `[0, a] x [0, b]` in z = 0:
 /// w, u, v held, and the rotation along each edge.
@@ -352,44 +400,12 @@ fn nafems_21t_step_load() {
 /// half the moment; -u 12.0000, w 0.0000 at the full moment).
 #[test]
 fn strip_rolls_into_a_circle_under_an_end_moment() {
-    use fwav::shell::nonlinear::{NewtonSettings, NonlinearStatic};
-    let (length, width) = (12.0, 1.0);
-    let layer = Layer {
-        young: 1.2e6,
-        poisson: 0.0,
-        density: 1.0,
-        thickness: 0.1,
-    };
-    let Strip {
-        mesh,
-        sections,
-        root: fixed,
-        tip,
-    } = Strip::clamped(length, width, layer, 16);
+    let length = 12.0;
+    let strip = Strip::clamped(length, 1.0, SZE_LAYER, 16);
     let m_max = 50.0 * std::f64::consts::PI / 3.0;
-    let mut load = vec![0.0; mesh.dofs()];
-    for &n in &tip {
-        // A negative moment about y curls the strip up (+z).
-        load[6 * n + 4] = -m_max / tip.len() as f64;
-    }
-    let model = NonlinearStatic::new(&mesh, &sections, &fixed).unwrap();
-    let path = model
-        .solve(
-            &load,
-            NewtonSettings {
-                steps: 20,
-                ..NewtonSettings::default()
-            },
-        )
-        .unwrap();
-    let at = |lambda: f64| {
-        let (_, c) = path
-            .iter()
-            .find(|(l, _)| (l - lambda).abs() < 1e-9)
-            .unwrap();
-        let d = tip.iter().map(|&n| c.displacement[n]).sum::<Vector3<f64>>() / tip.len() as f64;
-        (-d.x, d.z)
-    };
+    // A negative moment about y curls the strip up (+z).
+    let path = strip.path(&strip.tip_load(4, -m_max));
+    let at = |lambda| strip.tip_at(&path, lambda);
     for (lambda, (u_ref, w_ref)) in [(0.5, (12.0, 7.639)), (1.0, (12.0, 0.0))] {
         let (u, w) = at(lambda);
         println!("M/M_max = {lambda}: -u = {u:.4} ({u_ref}), w = {w:.4} ({w_ref})");
@@ -408,45 +424,14 @@ fn strip_rolls_into_a_circle_under_an_end_moment() {
 /// where it is the difference of nearly equal lengths, 0.00/0.01% else).
 #[test]
 fn strip_under_end_shear() {
-    use fwav::shell::nonlinear::{NewtonSettings, NonlinearStatic};
-    let (length, width) = (10.0, 1.0);
-    let layer = Layer {
-        young: 1.2e6,
-        poisson: 0.0,
-        density: 1.0,
-        thickness: 0.1,
-    };
-    let Strip {
-        mesh,
-        sections,
-        root: fixed,
-        tip,
-    } = Strip::clamped(length, width, layer, 16);
-    let mut load = vec![0.0; mesh.dofs()];
-    for &n in &tip {
-        load[6 * n + 2] = 4.0 / tip.len() as f64;
-    }
-    let model = NonlinearStatic::new(&mesh, &sections, &fixed).unwrap();
-    let path = model
-        .solve(
-            &load,
-            NewtonSettings {
-                steps: 20,
-                ..NewtonSettings::default()
-            },
-        )
-        .unwrap();
+    let strip = Strip::clamped(10.0, 1.0, SZE_LAYER, 16);
+    let path = strip.path(&strip.tip_load(2, 4.0));
     for (lambda, u_ref, w_ref) in [
         (0.05, 0.026, 0.663),
         (0.5, 1.604, 4.933),
         (1.0, 3.286, 6.698),
     ] {
-        let (_, c) = path
-            .iter()
-            .find(|(l, _)| (l - lambda).abs() < 1e-9)
-            .unwrap();
-        let d = tip.iter().map(|&n| c.displacement[n]).sum::<Vector3<f64>>() / tip.len() as f64;
-        let (u, w) = (-d.x, d.z);
+        let (u, w) = strip.tip_at(&path, lambda);
         println!(
             "P/P_max = {lambda}: -u = {u:.4} ({u_ref}, {:+.2}%), w = {w:.4} ({w_ref}, {:+.2}%)",
             100.0 * (u / u_ref - 1.0),
