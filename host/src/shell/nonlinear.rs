@@ -10,7 +10,9 @@ use faer::sparse::linalg::solvers::Llt;
 use faer::Mat;
 
 use super::assembly::{element_dofs, AssemblyError};
-use super::corotational::{Configuration, Corotational};
+use super::corotational::{Configuration, Corotational, ElementResponse};
+use super::dynamics::add_diagonal;
+use super::element::ElementMatrix;
 use super::material::Section;
 use super::mesh::ShellMesh;
 use super::structure::Structure;
@@ -82,33 +84,6 @@ impl<'a> NonlinearStatic<'a> {
         })
     }
 
-    /// Internal force (global) and the factorized tangent (free DOFs) at
-    /// `c`: the full tangent, or its material part where the full one is
-    /// not positive definite (far from equilibrium after a large step;
-    /// Newton then converges linearly until it is again).
-    fn linearize(&self, c: &Configuration) -> Result<(Vec<f64>, Llt<usize, f64>), AssemblyError> {
-        let responses = self.elements.responses(self.mesh, c);
-        let mut force = vec![0.0; self.mesh.dofs()];
-        for (e, r) in responses.iter().enumerate() {
-            for (local, g) in element_dofs(self.mesh, e).into_iter().enumerate() {
-                force[g] += r.force[local];
-            }
-        }
-        let tangents: Vec<_> = responses.iter().map(|r| r.tangent).collect();
-        let factor = match self
-            .structure
-            .factorize(&self.structure.assemble(&tangents)?)
-        {
-            Ok(f) => f,
-            Err(_) => {
-                let material: Vec<_> = responses.iter().map(|r| r.material).collect();
-                self.structure
-                    .factorize(&self.structure.assemble(&material)?)?
-            }
-        };
-        Ok((force, factor))
-    }
-
     /// Relative residual norm over the free DOFs at load factor `lambda`.
     fn residual(&self, load: &[f64], internal: &[f64], lambda: f64) -> Vec<f64> {
         self.structure.map().restrict(
@@ -151,13 +126,15 @@ impl<'a> NonlinearStatic<'a> {
             let mut residual_norm = f64::INFINITY;
             let mut converged = false;
             for _ in 0..settings.max_iterations {
-                let (internal, factor) = self.linearize(&c)?;
+                let responses = self.elements.responses(self.mesh, &c);
+                let internal = internal_force(self.mesh, &responses);
                 let residual = self.residual(load, &internal, lambda);
                 residual_norm = norm(&residual) / load_norm;
                 if residual_norm < settings.tolerance {
                     converged = true;
                     break;
                 }
+                let factor = factor_tangent(&self.structure, &responses, None)?;
                 let rhs = Mat::from_fn(residual.len(), 1, |i, _| residual[i]);
                 let delta = factor.solve(&rhs);
                 let increment = map.expand(
@@ -183,4 +160,35 @@ impl<'a> NonlinearStatic<'a> {
 
 fn norm(v: &[f64]) -> f64 {
     v.iter().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+/// The element internal forces summed over the global DOFs.
+pub(crate) fn internal_force(mesh: &ShellMesh, responses: &[ElementResponse]) -> Vec<f64> {
+    let mut force = vec![0.0; mesh.dofs()];
+    for (e, r) in responses.iter().enumerate() {
+        for (local, g) in element_dofs(mesh, e).into_iter().enumerate() {
+            force[g] += r.force[local];
+        }
+    }
+    force
+}
+
+/// The factorized tangent over the free DOFs, plus `diagonal` (free DOFs)
+/// if given: the full tangent, or its material part where the full one is
+/// not positive definite (far from equilibrium after a large step; Newton
+/// then converges linearly until it is again).
+pub(crate) fn factor_tangent(
+    structure: &Structure,
+    responses: &[ElementResponse],
+    diagonal: Option<&[f64]>,
+) -> Result<Llt<usize, f64>, AssemblyError> {
+    let factor = |pick: fn(&ElementResponse) -> ElementMatrix| {
+        let matrices: Vec<_> = responses.iter().map(pick).collect();
+        let mut k = structure.assemble(&matrices)?;
+        if let Some(d) = diagonal {
+            add_diagonal(&mut k, d);
+        }
+        structure.factorize(&k)
+    };
+    factor(|r| r.tangent).or_else(|_| factor(|r| r.material))
 }

@@ -24,12 +24,12 @@ use faer::linalg::solvers::Solve;
 use faer::Mat;
 use nalgebra::{Rotation3, Vector3};
 
-use super::assembly::{self, element_dofs, AssemblyError};
+use super::assembly::{self, AssemblyError};
 use super::corotational::{Configuration, Corotational};
-use super::dynamics::{add_diagonal, GeneralizedAlpha};
+use super::dynamics::GeneralizedAlpha;
 use super::material::Section;
 use super::mesh::ShellMesh;
-use super::nonlinear::NonlinearError;
+use super::nonlinear::{factor_tangent, internal_force, NonlinearError};
 use super::structure::Structure;
 
 /// Where the prescribed nodes are at a time: translation from the initial
@@ -189,12 +189,7 @@ impl<'a> NonlinearTransient<'a> {
                 .collect();
             let responses = self.elements.responses(self.mesh, &config);
             let inertia: Vec<f64> = (0..n).map(|i| self.mass[i] * acc[i]).collect();
-            let mut internal = vec![0.0; n];
-            for (e, r) in responses.iter().enumerate() {
-                for (local, g) in element_dofs(self.mesh, e).into_iter().enumerate() {
-                    internal[g] += r.force[local];
-                }
-            }
+            let internal = internal_force(self.mesh, &responses);
             let residual: Vec<f64> = (0..n).map(|i| load[i] - inertia[i] - internal[i]).collect();
             let free = map.restrict(&residual);
             let norm = free_norm(&free);
@@ -216,18 +211,9 @@ impl<'a> NonlinearTransient<'a> {
                 state.configuration = config;
                 return Ok(iteration);
             }
-            let tangents: Vec<_> = responses.iter().map(|r| r.tangent).collect();
-            let mut k = self.structure.assemble(&tangents)?;
-            add_mass(&mut k, &map.restrict(&self.mass), shift);
-            let factor = match self.structure.factorize(&k) {
-                Ok(f) => f,
-                Err(_) => {
-                    let material: Vec<_> = responses.iter().map(|r| r.material).collect();
-                    let mut k = self.structure.assemble(&material)?;
-                    add_mass(&mut k, &map.restrict(&self.mass), shift);
-                    self.structure.factorize(&k)?
-                }
-            };
+            let inertia_diagonal: Vec<f64> =
+                map.restrict(&self.mass).iter().map(|m| shift * m).collect();
+            let factor = factor_tangent(&self.structure, &responses, Some(&inertia_diagonal))?;
             let rhs = Mat::from_fn(free.len(), 1, |i, _| free[i]);
             let dq = factor.solve(&rhs);
             let dq_global = map.expand(&(0..free.len()).map(|i| dq[(i, 0)]).collect::<Vec<_>>());
@@ -265,11 +251,6 @@ pub fn follower_pressure_loads(
         elements: mesh.elements.clone(),
     };
     Ok(assembly::pressure_loads(&moved, pressure)?)
-}
-
-/// Adds `shift * m` to the diagonal.
-fn add_mass(k: &mut faer::sparse::SparseColMat<usize, f64>, m: &[f64], shift: f64) {
-    add_diagonal(k, &m.iter().map(|v| shift * v).collect::<Vec<_>>());
 }
 
 fn free_norm(v: &[f64]) -> f64 {
