@@ -75,13 +75,20 @@ struct DeformationFile {
     samples: Vec<Vec<(f64, f64)>>,
 }
 
-fn read_deformation(path: &Path, period: f64) -> Result<CamberHistory> {
+/// The samples of a deformation file.
+fn read_samples(path: &Path) -> Result<Vec<Vec<(f64, f64)>>> {
     let text =
         std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
     let file: DeformationFile = serde_json::from_str(&text)
         .with_context(|| format!("{}: not a deformation history", path.display()))?;
-    let stations = file.samples.iter().map(Vec::len).max().unwrap_or(0).max(21);
-    CamberHistory::from_section_points(&file.samples, period, stations)
+    Ok(file.samples)
+}
+
+/// A thin section's deformation: mid-line samples as a camber history.
+fn read_deformation(path: &Path, period: f64) -> Result<CamberHistory> {
+    let samples = read_samples(path)?;
+    let stations = samples.iter().map(Vec::len).max().unwrap_or(0).max(21);
+    CamberHistory::from_section_points(&samples, period, stations)
         .with_context(|| format!("{}", path.display()))
 }
 
@@ -108,11 +115,7 @@ fn thick_section(name: &str) -> Result<SectionShape> {
 /// A thick section's deformation: the same file layout, each sample the
 /// closed contour (as many points as the section, in its order).
 fn read_contour_history(path: &Path, period: f64) -> Result<ShapeHistory> {
-    let text =
-        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
-    let file: DeformationFile = serde_json::from_str(&text)
-        .with_context(|| format!("{}: not a deformation history", path.display()))?;
-    ShapeHistory::new(&file.samples, period).with_context(|| format!("{}", path.display()))
+    ShapeHistory::new(&read_samples(path)?, period).with_context(|| format!("{}", path.display()))
 }
 
 fn check(a: &Aero2dArgs) -> Result<()> {
