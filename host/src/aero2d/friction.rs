@@ -18,17 +18,24 @@ pub fn laminar_friction(reynolds: f64, tangential: f64) -> f64 {
     2.656 * tangential.abs().powf(1.5) / reynolds.sqrt() * tangential.signum()
 }
 
-/// The streamwise friction drag history of a rigidly moving section
-/// (on `1/2 rho U^2 c`) at `times` (chords travelled): the chordwise
-/// relative flow `cos alpha + h' sin alpha`, its force along the chord
+/// Streamwise friction drag (on `1/2 rho U^2 c`) of a section at pitch
+/// `alpha` (rad) plunging at `h_dot` (U): the chordwise relative flow
+/// `cos alpha + h' sin alpha` (freestream and plunge; pitch moves the chord
+/// along itself only at second order), its force along the chord
 /// `(cos alpha, -sin alpha)`.
+pub fn streamwise_friction(reynolds: f64, alpha: f64, h_dot: f64) -> f64 {
+    let (s, c) = alpha.sin_cos();
+    laminar_friction(reynolds, c + h_dot * s) * c
+}
+
+/// [`streamwise_friction`] of a rigidly moving section at `times` (chords
+/// travelled).
 pub fn friction_history(motion: &super::motion::Motion, times: &[f64], reynolds: f64) -> Vec<f64> {
     times
         .iter()
         .map(|&t| {
             let (_, h_dot, alpha, _) = motion.at(t);
-            let (s, c) = alpha.sin_cos();
-            laminar_friction(reynolds, c + h_dot * s) * c
+            streamwise_friction(reynolds, alpha, h_dot)
         })
         .collect()
 }

@@ -560,20 +560,17 @@ impl Ldvm {
             let (sm, cm) = alpha_m.sin_cos();
             let fx = normal * sm - suction * cm;
             let fy = normal * cm + suction * sm;
-            // Skin friction along the chord, with the relative flow there
-            // (freestream and plunge; pitch moves the chord along itself
-            // only at second order).
-            let friction = self.settings.reynolds.map_or(0.0, |re| {
-                super::friction::laminar_friction(re, cm + h_dot_m * sm)
-            });
             let m_pivot_nose_up = moment_le + pivot * normal;
             let deformation = 0.5 * (now.deform_quasi + prev.deform_quasi) + unsteady_deform;
             let power = -fy * h_dot_m - m_pivot_nose_up * alpha_dot_m - deformation;
             history.time.push(tm);
             history.cl.push(2.0 * fy);
             history.ct.push(-2.0 * fx);
-            // Friction coefficient acts along (cos alpha, -sin alpha).
-            history.cd_friction.push(friction * cm);
+            if let Some(re) = self.settings.reynolds {
+                history
+                    .cd_friction
+                    .push(super::friction::streamwise_friction(re, alpha_m, h_dot_m));
+            }
             history.cp.push(2.0 * power);
             history.lesp.push(a[0]);
             history
