@@ -21,3 +21,4 @@ pub mod link;
 pub mod port;
 pub mod profile_file;
 pub mod shell;
+pub mod uvlm;
