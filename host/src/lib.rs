@@ -16,6 +16,7 @@
 #![warn(missing_docs)]
 
 pub mod aero2d;
+pub mod aeroelastic;
 pub mod device;
 pub mod link;
 pub mod port;

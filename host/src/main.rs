@@ -9,6 +9,7 @@ use clap::{Parser, Subcommand};
 mod cli {
     pub mod aero;
     pub mod fly;
+    pub mod system;
 }
 use fwav::profile_file::ProfileFile;
 use fwav_protocol::document::ProfileDocument;
@@ -40,6 +41,10 @@ enum Command {
     /// 2D unsteady aerodynamics of a plunging/pitching section (cycle-mean
     /// thrust, power, efficiency; Garrick's values for pure plunge).
     Aero2d(cli::aero::Aero2dArgs),
+    /// The coupled 3D aeroelastic analysis of the flapping wing (unsteady
+    /// vortex lattice + shell): thrust, power, efficiency, and the section
+    /// and pressure histories the design disciplines take.
+    SystemAnalysis(cli::system::SystemArgs),
     /// List serial ports, marking those where an fwav device answers.
     Ports {
         /// Machine-readable output.
@@ -122,6 +127,7 @@ fn main() -> ExitCode {
             Ok(())
         }
         Command::Aero2d(args) => cli::aero::run(&args),
+        Command::SystemAnalysis(args) => cli::system::run_command(&args),
         Command::Ports { json } => cli::fly::ports(json),
         Command::Upload {
             port,

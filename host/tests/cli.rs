@@ -160,3 +160,72 @@ fn aero2d_reports_thrust_beside_garrick() {
     let bad = fwav(&["aero2d", "--reduced-frequency=-1"]);
     assert!(String::from_utf8_lossy(&bad.stderr).contains("--reduced-frequency"));
 }
+
+/// `fwav system-analysis` on a coarse wing: a JSON summary, the files the
+/// disciplines take (the section history is read back by `fwav aero2d
+/// --deformation`), the ParaView series; a bad field is named.
+#[test]
+fn system_analysis_writes_what_the_disciplines_take() {
+    let dir = std::env::temp_dir().join(format!("fwav-system-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let config = dir.join("wing.toml");
+    std::fs::write(
+        &config,
+        "[wing]\nspan_elements = 12\nchord_elements = 6\n[analysis]\ncycles = 2\nsteps_per_cycle = 16\nchordwise_panels = 3\nspanwise_panels = 6\n",
+    )
+    .unwrap();
+    let out_dir = dir.join("out");
+    let out = fwav(&[
+        "system-analysis",
+        "--config",
+        config.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let summary: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(summary["mean_ct"].as_f64().unwrap() > 0.0, "{summary}");
+    assert!(summary["tip_deflection_amplitude_m"].as_f64().unwrap() > 0.0);
+    for file in [
+        "section.json",
+        "pressure.json",
+        "steps.csv",
+        "wing.pvd",
+        "wake.pvd",
+        "wing-0000.vtu",
+    ] {
+        assert!(out_dir.join(file).exists(), "{file}");
+    }
+    let pressure: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(out_dir.join("pressure.json")).unwrap())
+            .unwrap();
+    let samples = pressure["samples"].as_array().unwrap();
+    assert_eq!(samples.len(), 16);
+    assert_eq!(samples[0].as_array().unwrap().len(), 72);
+    let section = out_dir.join("section.json");
+    let aero = fwav(&[
+        "aero2d",
+        "--deformation",
+        section.to_str().unwrap(),
+        "--cycles",
+        "2",
+        "--json",
+    ]);
+    assert!(
+        aero.status.success(),
+        "{}",
+        String::from_utf8_lossy(&aero.stderr)
+    );
+
+    std::fs::write(&config, "[kinematics]\namplitude_deg = 120\n").unwrap();
+    let bad = fwav(&["system-analysis", "--config", config.to_str().unwrap()]);
+    assert!(!bad.status.success());
+    let stderr = String::from_utf8_lossy(&bad.stderr);
+    assert!(stderr.contains("kinematics.amplitude_deg"), "{stderr}");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -68,11 +68,16 @@ pub struct Aero2dArgs {
     pub json: bool,
 }
 
-/// The deformation file's layout.
+/// The deformation file's layout (`fwav system-analysis --out` writes it
+/// as `section.json`, with a description and the period it covers).
 #[derive(serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 struct DeformationFile {
     samples: Vec<Vec<(f64, f64)>>,
+    #[serde(default, rename = "description")]
+    _description: Option<String>,
+    #[serde(default, rename = "period_s")]
+    _period_s: Option<f64>,
 }
 
 /// The samples of a deformation file.

@@ -93,6 +93,15 @@ impl Planform {
         let tolerance = 1e-9 * self.root_chord;
         let root_nodes =
             mesh.nodes_where(|p| p.y.abs() < tolerance && p.x <= self.root_attachment + tolerance);
+        if root_nodes.len() < 2 {
+            return Err(MeshError::Parameter(format!(
+                "the root attachment ({} m) holds {} node of the {} chordwise elements: the wing would hang on one node; use at least {} chordwise elements",
+                self.root_attachment,
+                root_nodes.len(),
+                self.chord_elements,
+                (self.root_chord / self.root_attachment).ceil() as usize
+            )));
+        }
         Ok(WingMesh {
             mesh,
             spar,
@@ -147,5 +156,12 @@ mod tests {
             ..Planform::FWAV
         };
         assert!(matches!(bad.mesh(), Err(MeshError::Parameter(_))));
+        let one_node = Planform {
+            chord_elements: 4,
+            ..Planform::FWAV
+        };
+        assert!(
+            matches!(one_node.mesh(), Err(MeshError::Parameter(m)) if m.contains("at least 5"))
+        );
     }
 }

@@ -1,0 +1,548 @@
+//! The coupled system analysis: the flexible wing flapping in the flight
+//! condition, the unsteady vortex lattice ([`crate::uvlm`]) and the shell
+//! in the flapping frame ([`super::floating_frame`]) strongly coupled at
+//! every time step.
+//!
+//! Each step is a block Gauss–Seidel fixed point on the wing's nodal
+//! displacements: the lattice takes the shape and surface velocity of the
+//! current iterate, its panel forces go to the shell by the conservative
+//! transfer of [`super::interface`], the shell steps from the last
+//! converged state, and the new displacements are relaxed with Aitken's
+//! dynamic factor (Küttler & Wall 2008, Comput. Mech. 43, eq. 44) until the
+//! interface residual `|u_new - u| / |u_new|` falls below the tolerance.
+//! Only then is the wake shed and convected and the structural state kept,
+//! so each step ends in equilibrium of both fields.
+
+use nalgebra::Vector3;
+use serde::{Deserialize, Serialize};
+
+use crate::shell::dynamics::{DynamicsError, GeneralizedAlpha};
+use crate::uvlm::{Lattice, Solution, Uvlm, UvlmError, UvlmSettings};
+
+use super::floating_frame::FloatingFrameWing;
+use super::interface::{InterfaceError, SurfaceMap};
+use super::kinematics::{FlappingKinematics, KinematicsError};
+use super::model::{FlightCondition, WingModel};
+
+/// Settings of a system analysis (the `[analysis]` table of the
+/// configuration; every field optional).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SystemSettings {
+    /// Flapping cycles simulated (the last one is reported).
+    pub cycles: usize,
+    /// Time steps per flapping cycle.
+    pub steps_per_cycle: usize,
+    /// Aerodynamic lattice panels along the chord.
+    pub chordwise_panels: usize,
+    /// Aerodynamic lattice panels along the span.
+    pub spanwise_panels: usize,
+    /// Rigid wing: no structure, the lattice follows the flapping only.
+    pub rigid: bool,
+    /// Interface residual at which a step's coupling stops (relative).
+    pub coupling_tolerance: f64,
+    /// Most sub-iterations a step may take.
+    pub max_subiterations: usize,
+    /// Spectral radius at infinity of the structural integrator.
+    pub rho_inf: f64,
+    /// Wake rows that roll up freely, in flapping cycles of wake.
+    pub free_wake_cycles: f64,
+    /// Wake kept behind the wing, in flapping cycles (older rows dropped).
+    pub wake_cycles: f64,
+}
+
+impl Default for SystemSettings {
+    /// The built-in case: 4 cycles of 40 steps, an 8 x 16 lattice, coupling
+    /// to 1e-4, rho_inf 0.8, one cycle of free wake in two kept.
+    fn default() -> Self {
+        Self {
+            cycles: 4,
+            steps_per_cycle: 40,
+            chordwise_panels: 8,
+            spanwise_panels: 16,
+            rigid: false,
+            coupling_tolerance: 1e-4,
+            max_subiterations: 30,
+            rho_inf: 0.8,
+            free_wake_cycles: 1.0,
+            wake_cycles: 2.0,
+        }
+    }
+}
+
+/// Why a system analysis stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum SystemError {
+    /// Bad kinematics.
+    #[error(transparent)]
+    Kinematics(#[from] KinematicsError),
+    /// The structural model could not be built.
+    #[error(transparent)]
+    Structure(#[from] DynamicsError),
+    /// The lattice could not be placed.
+    #[error(transparent)]
+    Interface(#[from] InterfaceError),
+    /// The aerodynamic solver failed.
+    #[error(transparent)]
+    Aerodynamics(#[from] UvlmError),
+    /// A setting out of range.
+    #[error("system analysis setting {field}: {message}")]
+    Setting {
+        /// The field.
+        field: &'static str,
+        /// What is wrong.
+        message: String,
+    },
+    /// The coupled solution blew up.
+    #[error("the coupled solution diverged at t = {time:.5} s (step {step}): {what}")]
+    Diverged {
+        /// Time, s.
+        time: f64,
+        /// Step index.
+        step: usize,
+        /// What was non-finite.
+        what: &'static str,
+    },
+}
+
+/// One time step's record.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StepRecord {
+    /// Time, s.
+    pub time_s: f64,
+    /// Aerodynamic force on the half wing, inertial axes, N.
+    pub force_n: [f64; 3],
+    /// Aerodynamic power of the wing's motion, W.
+    pub power_w: f64,
+    /// Thrust coefficient `-F_x / (q S)`.
+    pub ct: f64,
+    /// Lift coefficient `F_z / (q S)`.
+    pub cl: f64,
+    /// Power coefficient `P / (q U S)`.
+    pub cp: f64,
+    /// Aerodynamic moment about the root (the origin), inertial axes, N m.
+    pub aero_moment_nm: [f64; 3],
+    /// Torque the drive applies about the flapping axis, N m: the wing's
+    /// inertia (flexible analysis only) less the aerodynamic moment about
+    /// the axis; its product with the flapping rate is the drive's power.
+    pub drive_torque_nm: f64,
+    /// Elastic displacement of the tip's trailing-edge node in the flapping
+    /// frame, m.
+    pub tip_displacement_m: [f64; 3],
+    /// Coupling sub-iterations taken.
+    pub subiterations: usize,
+    /// Final relative interface residual.
+    pub residual: f64,
+}
+
+/// Cycle means over the last simulated cycle.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CycleMeans {
+    /// Mean thrust coefficient.
+    pub ct: f64,
+    /// Mean lift coefficient.
+    pub cl: f64,
+    /// Mean power coefficient.
+    pub cp: f64,
+    /// Propulsive efficiency `CT / CP`.
+    pub efficiency: f64,
+    /// Change of the mean CT from the cycle before the last to the last,
+    /// relative (how periodic the answer is; 0 with one cycle).
+    pub ct_change_last_two_cycles: f64,
+}
+
+/// A kept picture of the wing and wake at one time (for `.vtu` output).
+#[derive(Clone, Debug)]
+pub struct Snapshot {
+    /// Time, s.
+    pub time: f64,
+    /// Shell node positions, inertial axes, m.
+    pub nodes: Vec<Vector3<f64>>,
+    /// Pressure jump per shell element, Pa.
+    pub element_pressure: Vec<f64>,
+    /// Wake corner grid (rows from the trailing edge back, each
+    /// `spanwise + 1` points), m.
+    pub wake_corners: Vec<Vec<Vector3<f64>>>,
+    /// Wake ring strengths, rows by spanwise panels, m²/s.
+    pub wake_strength: Vec<Vec<f64>>,
+}
+
+/// What a system analysis hands on.
+#[derive(Clone, Debug)]
+pub struct SystemResult {
+    /// Every step.
+    pub steps: Vec<StepRecord>,
+    /// Means over the last cycle.
+    pub means: CycleMeans,
+    /// Mid-span section over the last cycle, one sample a step: the
+    /// mid-line points `(x, y)` in chords in the section's flapping frame
+    /// (undeformed leading edge at (0, 0), trailing edge at (1, 0)), the
+    /// input of the aerodynamic discipline ([`crate::aero2d`]). Sample `k`
+    /// is at `(k + 1) dt` after the start of a cycle, where the flapping
+    /// angle is `mean + amplitude cos(2 pi f t)`.
+    pub section_history: Vec<Vec<[f64; 2]>>,
+    /// Pressure jump on each shell element over the last cycle, one sample
+    /// a step, Pa (the input of the structural discipline).
+    pub pressure_history: Vec<Vec<f64>>,
+    /// Snapshots of the last cycle, every `snapshot_every` steps.
+    pub snapshots: Vec<Snapshot>,
+    /// Mass of the half wing, kg (0 for a rigid analysis).
+    pub wing_mass_kg: f64,
+    /// Reference area (half-wing planform), m².
+    pub reference_area_m2: f64,
+    /// Time step, s.
+    pub dt_s: f64,
+}
+
+/// Runs the system analysis of `wing` flapping with `kinematics` in
+/// `flight`; `snapshot_every` keeps a snapshot every that many steps of the
+/// last cycle (0: none); `progress` is called after every step with the
+/// step index and the total.
+pub fn run(
+    wing: &WingModel,
+    kinematics: &FlappingKinematics,
+    flight: &FlightCondition,
+    settings: &SystemSettings,
+    snapshot_every: usize,
+    mut progress: impl FnMut(usize, usize),
+) -> Result<SystemResult, SystemError> {
+    kinematics.validate()?;
+    check(settings, flight)?;
+    let planform = &wing.planform;
+    let mesh = &wing.wing.mesh;
+    let map = SurfaceMap::new(
+        planform,
+        mesh,
+        settings.chordwise_panels,
+        settings.spanwise_panels,
+    )?;
+    let period = kinematics.period();
+    let n_cycle = settings.steps_per_cycle;
+    let dt = period / n_cycle as f64;
+    let total = settings.cycles * n_cycle;
+    let rows = |cycles: f64| -> usize {
+        if cycles.is_finite() {
+            (cycles * n_cycle as f64).ceil() as usize
+        } else {
+            usize::MAX
+        }
+    };
+    let mut aero_settings =
+        UvlmSettings::new(dt, flight.density, Vector3::new(flight.speed, 0.0, 0.0));
+    aero_settings.symmetric = true;
+    aero_settings.free_wake_rows = rows(settings.free_wake_cycles);
+    aero_settings.wake_rows = rows(settings.wake_cycles);
+    let (nc, ns) = (settings.chordwise_panels, settings.spanwise_panels);
+    let mut uvlm = Uvlm::new(nc, ns, aero_settings)?;
+    let structure = if settings.rigid {
+        None
+    } else {
+        Some(FloatingFrameWing::new(
+            mesh,
+            &wing.sections,
+            &wing.wing.clamped_dofs(),
+            GeneralizedAlpha {
+                dt,
+                rho_inf: settings.rho_inf,
+                mass_damping: 0.0,
+                stiffness_damping: 0.0,
+            },
+        )?)
+    };
+    let nodes = mesh.nodes.len();
+    let zero = vec![Vector3::zeros(); nodes];
+    let area = wing.area();
+    let q = 0.5 * flight.density * flight.speed * flight.speed;
+    let (chord_elements, span_elements) = (planform.chord_elements, planform.span_elements);
+    let tip_te = span_elements * (chord_elements + 1) + chord_elements;
+    let mid = span_elements / 2;
+    let section_nodes: Vec<usize> = (0..=chord_elements)
+        .map(|i| mid * (chord_elements + 1) + i)
+        .collect();
+    let mid_chord = planform.chord(mesh.nodes[section_nodes[0]].y);
+
+    let mut state = match &structure {
+        Some(s) => Some(s.start_deflected(
+            &s.inertial_loads(&kinematics.motion(0.0), &zero, &zero),
+            2.0 * std::f64::consts::PI * kinematics.frequency,
+        )?),
+        None => None,
+    };
+    let mut load_previous = match (&structure, &state) {
+        (Some(s), Some(_)) => s.inertial_loads(&kinematics.motion(0.0), &zero, &zero),
+        _ => Vec::new(),
+    };
+    let mut result = SystemResult {
+        steps: Vec::with_capacity(total),
+        means: CycleMeans {
+            ct: 0.0,
+            cl: 0.0,
+            cp: 0.0,
+            efficiency: 0.0,
+            ct_change_last_two_cycles: 0.0,
+        },
+        section_history: Vec::new(),
+        pressure_history: Vec::new(),
+        snapshots: Vec::new(),
+        wing_mass_kg: structure.as_ref().map_or(0.0, |s| s.mass()),
+        reference_area_m2: area,
+        dt_s: dt,
+    };
+
+    for step in 0..total {
+        let time = (step + 1) as f64 * dt;
+        let motion = kinematics.motion(time);
+        let (mut u, mut v) = match (&structure, &state) {
+            (Some(s), Some(st)) => {
+                let (u, v) = (s.translations(st), s.velocities(st));
+                let predicted = u.iter().zip(&v).map(|(u, v)| u + dt * v).collect();
+                (predicted, v)
+            }
+            _ => (zero.clone(), zero.clone()),
+        };
+        let mut omega = 0.5;
+        let mut last_residual: Option<Vec<Vector3<f64>>> = None;
+        let mut iterations = 0;
+        let mut residual_norm = 0.0;
+        let (surface, solution, new_state, load_next) = loop {
+            iterations += 1;
+            let body: Vec<Vector3<f64>> = map
+                .body_corners()
+                .iter()
+                .zip(map.interpolate(&u))
+                .map(|(x, d)| x + d)
+                .collect();
+            let corner_v = map.interpolate(&v);
+            let corners = body.iter().map(|p| motion.position(p)).collect();
+            let velocity: Vec<Vector3<f64>> = body
+                .iter()
+                .zip(&corner_v)
+                .map(|(p, w)| motion.velocity(p, w))
+                .collect();
+            let surface = Lattice::new(nc, ns, corners)?;
+            let solution = uvlm.solve(&surface, &velocity)?;
+            let (Some(s), Some(st)) = (&structure, &state) else {
+                break (surface, solution, None, Vec::new());
+            };
+            let inverse = motion.rotation.inverse();
+            let body = |forces: &[Vector3<f64>]| -> Vec<Vector3<f64>> {
+                forces.iter().map(|f| inverse * f).collect()
+            };
+            let mut load = map.nodal_forces(
+                &body(&solution.panel_force),
+                &body(&solution.leading_edge_suction),
+            );
+            for (l, i) in load.iter_mut().zip(s.inertial_loads(&motion, &u, &v)) {
+                *l += i;
+            }
+            let trial = s.step(st, &load_previous, &load);
+            let (u_new, v_new) = (s.translations(&trial), s.velocities(&trial));
+            let r: Vec<Vector3<f64>> = u_new.iter().zip(&u).map(|(a, b)| a - b).collect();
+            let r_norm = norm(&r);
+            let scale = norm(&u_new).max(1e-12 * planform.root_chord);
+            residual_norm = r_norm / scale;
+            if !residual_norm.is_finite() {
+                return Err(SystemError::Diverged {
+                    time,
+                    step,
+                    what: "interface displacement",
+                });
+            }
+            if residual_norm <= settings.coupling_tolerance
+                || iterations >= settings.max_subiterations
+            {
+                break (surface, solution, Some(trial), load);
+            }
+            if let Some(previous) = &last_residual {
+                let dr: Vec<Vector3<f64>> = r.iter().zip(previous).map(|(a, b)| a - b).collect();
+                let denominator = dot(&dr, &dr);
+                if denominator > 0.0 {
+                    omega = -omega * dot(previous, &dr) / denominator;
+                }
+            }
+            omega = omega.clamp(-2.0, 2.0);
+            for (ui, ri) in u.iter_mut().zip(&r) {
+                *ui += omega * ri;
+            }
+            for (vi, vn) in v.iter_mut().zip(&v_new) {
+                *vi += omega * (vn - *vi);
+            }
+            last_residual = Some(r);
+        };
+        uvlm.advance(&surface, &solution)?;
+        let force = solution.force;
+        if !(force.iter().all(|f| f.is_finite()) && solution.power.is_finite()) {
+            return Err(SystemError::Diverged {
+                time,
+                step,
+                what: "aerodynamic force",
+            });
+        }
+        let moment = aerodynamic_moment(&surface, &solution);
+        let axis = kinematics.axis().into_inner();
+        let inertia = match (&structure, &new_state) {
+            (Some(s), Some(st)) => s.inertial_torque(&motion, st, &axis),
+            _ => 0.0,
+        };
+        let tip = match (&structure, &new_state) {
+            (Some(s), Some(st)) => s.translations(st)[tip_te],
+            _ => Vector3::zeros(),
+        };
+        result.steps.push(StepRecord {
+            time_s: time,
+            force_n: [force.x, force.y, force.z],
+            power_w: solution.power,
+            ct: -force.x / (q * area),
+            cl: force.z / (q * area),
+            cp: solution.power / (q * flight.speed * area),
+            aero_moment_nm: [moment.x, moment.y, moment.z],
+            drive_torque_nm: inertia - axis.dot(&moment),
+            tip_displacement_m: [tip.x, tip.y, tip.z],
+            subiterations: iterations,
+            residual: residual_norm,
+        });
+        let last_cycle = step + n_cycle >= total;
+        if last_cycle {
+            let translations = match (&structure, &new_state) {
+                (Some(s), Some(st)) => s.translations(st),
+                _ => zero.clone(),
+            };
+            result.section_history.push(
+                section_nodes
+                    .iter()
+                    .map(|&n| {
+                        let x = mesh.nodes[n] + translations[n];
+                        let le = mesh.nodes[section_nodes[0]];
+                        [(x.x - le.x) / mid_chord, x.z / mid_chord]
+                    })
+                    .collect(),
+            );
+            let pressure = map.element_values(&solution.pressure_jump);
+            if snapshot_every > 0 && (total - 1 - step) % snapshot_every == 0 {
+                result.snapshots.push(Snapshot {
+                    time,
+                    nodes: mesh
+                        .nodes
+                        .iter()
+                        .zip(&translations)
+                        .map(|(x, d)| motion.position(&(x + d)))
+                        .collect(),
+                    element_pressure: pressure.clone(),
+                    wake_corners: uvlm.wake().corner_rows(),
+                    wake_strength: uvlm.wake().strength_rows(),
+                });
+            }
+            result.pressure_history.push(pressure);
+        }
+        if let Some(st) = new_state {
+            state = Some(st);
+            load_previous = load_next;
+        }
+        progress(step + 1, total);
+    }
+    let last = &result.steps[total - n_cycle..];
+    let mean = |f: &dyn Fn(&StepRecord) -> f64| last.iter().map(f).sum::<f64>() / n_cycle as f64;
+    let (ct, cl, cp) = (mean(&|r| r.ct), mean(&|r| r.cl), mean(&|r| r.cp));
+    let before = if settings.cycles > 1 {
+        result.steps[total - 2 * n_cycle..total - n_cycle]
+            .iter()
+            .map(|r| r.ct)
+            .sum::<f64>()
+            / n_cycle as f64
+    } else {
+        ct
+    };
+    result.means = CycleMeans {
+        ct,
+        cl,
+        cp,
+        efficiency: if cp.abs() > 0.0 { ct / cp } else { 0.0 },
+        ct_change_last_two_cycles: if before.abs() > 0.0 {
+            ct / before - 1.0
+        } else {
+            0.0
+        },
+    };
+    Ok(result)
+}
+
+/// Moment about the origin of the panel forces (at the panel centres) and
+/// of the leading-edge suction (at the strips' leading-edge middles), N m.
+fn aerodynamic_moment(surface: &Lattice, solution: &Solution) -> Vector3<f64> {
+    let (nc, ns) = (surface.chordwise, surface.spanwise);
+    let corner = |i: usize, j: usize| surface.corners[i * (ns + 1) + j];
+    let mut m = Vector3::zeros();
+    for i in 0..nc {
+        for j in 0..ns {
+            let centre =
+                (corner(i, j) + corner(i + 1, j) + corner(i + 1, j + 1) + corner(i, j + 1)) / 4.0;
+            m += centre.cross(&solution.panel_force[i * ns + j]);
+        }
+    }
+    for (j, f) in solution.leading_edge_suction.iter().enumerate() {
+        m += (0.5 * (corner(0, j) + corner(0, j + 1))).cross(f);
+    }
+    m
+}
+
+fn check(s: &SystemSettings, flight: &FlightCondition) -> Result<(), SystemError> {
+    let bad = |field: &'static str, message: String| Err(SystemError::Setting { field, message });
+    if s.cycles == 0 || s.cycles > 100 {
+        return bad("cycles", format!("{} is outside 1..=100", s.cycles));
+    }
+    if !(8..=2000).contains(&s.steps_per_cycle) {
+        return bad(
+            "steps_per_cycle",
+            format!("{} is outside 8..=2000", s.steps_per_cycle),
+        );
+    }
+    if !(1..=64).contains(&s.chordwise_panels) || !(1..=200).contains(&s.spanwise_panels) {
+        return bad(
+            "lattice",
+            format!(
+                "{} x {} panels: 1..=64 chordwise, 1..=200 spanwise",
+                s.chordwise_panels, s.spanwise_panels
+            ),
+        );
+    }
+    if !(s.coupling_tolerance > 0.0 && s.coupling_tolerance < 1.0) || s.max_subiterations == 0 {
+        return bad(
+            "coupling",
+            format!(
+                "tolerance {} must be in (0, 1) and max_subiterations ({}) at least 1",
+                s.coupling_tolerance, s.max_subiterations
+            ),
+        );
+    }
+    if !(0.0..=1.0).contains(&s.rho_inf) {
+        return bad("rho_inf", format!("{} is outside [0, 1]", s.rho_inf));
+    }
+    if !(s.free_wake_cycles >= 0.0 && s.wake_cycles > 0.0) {
+        return bad(
+            "wake",
+            format!(
+                "free_wake_cycles {} must be >= 0 and wake_cycles {} > 0",
+                s.free_wake_cycles, s.wake_cycles
+            ),
+        );
+    }
+    let positive = |v: f64| v > 0.0 && v.is_finite();
+    if !(positive(flight.speed) && positive(flight.density)) {
+        return bad(
+            "flight",
+            format!(
+                "speed {} m/s and density {} kg/m^3 must be positive",
+                flight.speed, flight.density
+            ),
+        );
+    }
+    Ok(())
+}
+
+fn dot(a: &[Vector3<f64>], b: &[Vector3<f64>]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x.dot(y)).sum()
+}
+
+fn norm(a: &[Vector3<f64>]) -> f64 {
+    dot(a, a).sqrt()
+}

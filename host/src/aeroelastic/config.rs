@@ -1,0 +1,325 @@
+//! The system analysis's configuration file (TOML): the wing, its
+//! kinematics, the flight condition and the solver settings, every field
+//! optional with the built-in FWAV's value as default, units in the key
+//! names, angles in degrees (people type them).
+//!
+//! ```toml
+//! [wing]
+//! semi_span_m = 0.15
+//! carbon_fraction = 0.3
+//! [kinematics]
+//! frequency_hz = 11.0
+//! amplitude_deg = 30.0
+//! [analysis]
+//! cycles = 4
+//! ```
+
+use serde::{Deserialize, Serialize};
+
+use crate::shell::material::Layer;
+use crate::shell::wing::Planform;
+
+use super::analysis::SystemSettings;
+use super::kinematics::FlappingKinematics;
+use super::model::{FlightCondition, WingModel, WingModelError};
+
+/// Why a configuration was refused.
+#[derive(Debug, thiserror::Error)]
+pub enum ConfigError {
+    /// Not TOML or an unknown/mistyped field (the message names it).
+    #[error("{0}")]
+    Parse(String),
+    /// A value out of range.
+    #[error("{field} = {value} is outside {range}")]
+    Range {
+        /// The field, as `table.key`.
+        field: &'static str,
+        /// The value given.
+        value: f64,
+        /// The allowed range.
+        range: &'static str,
+    },
+    /// The wing could not be built.
+    #[error(transparent)]
+    Wing(#[from] WingModelError),
+}
+
+/// The `[wing]` table.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct WingConfig {
+    /// Semi-span, m.
+    pub semi_span_m: f64,
+    /// Root chord, m.
+    pub root_chord_m: f64,
+    /// Tip chord, m.
+    pub tip_chord_m: f64,
+    /// Leading-edge spar width, m.
+    pub spar_width_m: f64,
+    /// Root attachment length from the leading edge, m.
+    pub root_attachment_m: f64,
+    /// Shell elements along the span.
+    pub span_elements: usize,
+    /// Shell elements along the chord.
+    pub chord_elements: usize,
+    /// Uniform carbon density of the design layer, in [0, 1]. Default 1, the
+    /// full carbon layer (first bending mode 26 Hz on the built-in wing);
+    /// the topology's uniform starting density of 0.3 would put it at
+    /// 16.8 Hz, so near the 11 Hz flapping that the wing's tip swings by
+    /// more than its span in the small-deflection floating frame.
+    pub carbon_fraction: f64,
+}
+
+impl Default for WingConfig {
+    fn default() -> Self {
+        let p = Planform::FWAV;
+        Self {
+            semi_span_m: p.semi_span,
+            root_chord_m: p.root_chord,
+            tip_chord_m: p.tip_chord,
+            spar_width_m: p.spar_width,
+            root_attachment_m: p.root_attachment,
+            span_elements: p.span_elements,
+            chord_elements: p.chord_elements,
+            carbon_fraction: 1.0,
+        }
+    }
+}
+
+/// The `[kinematics]` table.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct KinematicsConfig {
+    /// Flapping frequency, Hz.
+    pub frequency_hz: f64,
+    /// Flapping amplitude, degrees.
+    pub amplitude_deg: f64,
+    /// Mean flapping angle, degrees.
+    pub mean_angle_deg: f64,
+    /// Stroke-plane inclination, degrees.
+    pub stroke_plane_deg: f64,
+}
+
+impl Default for KinematicsConfig {
+    fn default() -> Self {
+        let k = FlappingKinematics::INITIAL;
+        Self {
+            frequency_hz: k.frequency,
+            amplitude_deg: k.amplitude.to_degrees(),
+            mean_angle_deg: k.mean_angle.to_degrees(),
+            stroke_plane_deg: k.stroke_plane.to_degrees(),
+        }
+    }
+}
+
+/// The `[flight]` table.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct FlightConfig {
+    /// Flight speed, m/s.
+    pub speed_m_s: f64,
+    /// Air density, kg/m³.
+    pub density_kg_m3: f64,
+}
+
+impl Default for FlightConfig {
+    fn default() -> Self {
+        Self {
+            speed_m_s: FlightCondition::FWAV.speed,
+            density_kg_m3: FlightCondition::FWAV.density,
+        }
+    }
+}
+
+/// The whole file.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SystemConfig {
+    /// The wing.
+    pub wing: WingConfig,
+    /// Its flapping kinematics.
+    pub kinematics: KinematicsConfig,
+    /// The flight condition.
+    pub flight: FlightConfig,
+    /// Solver settings.
+    pub analysis: SystemSettings,
+}
+
+impl SystemConfig {
+    /// Parses and checks a TOML text.
+    pub fn from_toml(text: &str) -> Result<Self, ConfigError> {
+        let config: Self = toml::from_str(text).map_err(|e| ConfigError::Parse(e.to_string()))?;
+        config.check()?;
+        Ok(config)
+    }
+
+    /// Checks the ranges of the wing, kinematics and flight fields (the
+    /// analysis settings are checked by [`super::analysis::run`]).
+    pub fn check(&self) -> Result<(), ConfigError> {
+        let w = &self.wing;
+        let k = &self.kinematics;
+        let f = &self.flight;
+        let ranges: [(&'static str, f64, f64, f64, &'static str); 13] = [
+            ("wing.semi_span_m", w.semi_span_m, 0.01, 2.0, "[0.01, 2] m"),
+            (
+                "wing.root_chord_m",
+                w.root_chord_m,
+                0.005,
+                1.0,
+                "[0.005, 1] m",
+            ),
+            (
+                "wing.tip_chord_m",
+                w.tip_chord_m,
+                0.005,
+                1.0,
+                "[0.005, 1] m",
+            ),
+            (
+                "wing.spar_width_m",
+                w.spar_width_m,
+                1e-4,
+                0.1,
+                "[0.0001, 0.1] m",
+            ),
+            (
+                "wing.root_attachment_m",
+                w.root_attachment_m,
+                1e-4,
+                1.0,
+                "[0.0001, 1] m",
+            ),
+            (
+                "wing.span_elements",
+                w.span_elements as f64,
+                2.0,
+                400.0,
+                "2..=400",
+            ),
+            (
+                "wing.chord_elements",
+                w.chord_elements as f64,
+                2.0,
+                200.0,
+                "2..=200",
+            ),
+            (
+                "wing.carbon_fraction",
+                w.carbon_fraction,
+                0.0,
+                1.0,
+                "[0, 1]",
+            ),
+            (
+                "kinematics.frequency_hz",
+                k.frequency_hz,
+                0.1,
+                200.0,
+                "[0.1, 200] Hz",
+            ),
+            (
+                "kinematics.amplitude_deg",
+                k.amplitude_deg,
+                0.0,
+                80.0,
+                "[0, 80] deg",
+            ),
+            (
+                "kinematics.mean_angle_deg",
+                k.mean_angle_deg,
+                -60.0,
+                60.0,
+                "[-60, 60] deg",
+            ),
+            (
+                "kinematics.stroke_plane_deg",
+                k.stroke_plane_deg,
+                0.0,
+                180.0,
+                "[0, 180] deg",
+            ),
+            ("flight.speed_m_s", f.speed_m_s, 0.1, 50.0, "[0.1, 50] m/s"),
+        ];
+        for (field, value, low, high, range) in ranges {
+            if !(value.is_finite() && (low..=high).contains(&value)) {
+                return Err(ConfigError::Range {
+                    field,
+                    value,
+                    range,
+                });
+            }
+        }
+        let rho = f.density_kg_m3;
+        if !(rho.is_finite() && (0.01..=2000.0).contains(&rho)) {
+            return Err(ConfigError::Range {
+                field: "flight.density_kg_m3",
+                value: rho,
+                range: "[0.01, 2000] kg/m^3",
+            });
+        }
+        Ok(())
+    }
+
+    /// The planform.
+    pub fn planform(&self) -> Planform {
+        let w = &self.wing;
+        Planform {
+            semi_span: w.semi_span_m,
+            root_chord: w.root_chord_m,
+            tip_chord: w.tip_chord_m,
+            spar_width: w.spar_width_m,
+            root_attachment: w.root_attachment_m,
+            span_elements: w.span_elements,
+            chord_elements: w.chord_elements,
+        }
+    }
+
+    /// The wing model at the uniform starting design (paper's materials).
+    pub fn wing_model(&self) -> Result<WingModel, ConfigError> {
+        Ok(WingModel::new(
+            self.planform(),
+            &Layer::CARBON,
+            &Layer::MYLAR,
+            None,
+            self.wing.carbon_fraction,
+        )?)
+    }
+
+    /// The kinematics in SI.
+    pub fn kinematics(&self) -> FlappingKinematics {
+        let k = &self.kinematics;
+        FlappingKinematics {
+            frequency: k.frequency_hz,
+            amplitude: k.amplitude_deg.to_radians(),
+            mean_angle: k.mean_angle_deg.to_radians(),
+            stroke_plane: k.stroke_plane_deg.to_radians(),
+        }
+    }
+
+    /// The flight condition in SI.
+    pub fn flight(&self) -> FlightCondition {
+        FlightCondition {
+            speed: self.flight.speed_m_s,
+            density: self.flight.density_kg_m3,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_and_errors_name_the_field() {
+        let c = SystemConfig::from_toml("").unwrap();
+        assert_eq!(c.planform(), Planform::FWAV);
+        let (k, i) = (c.kinematics(), FlappingKinematics::INITIAL);
+        assert!((k.amplitude - i.amplitude).abs() < 1e-15 && k.frequency == i.frequency);
+        let e = SystemConfig::from_toml("[kinematics]\nfrequency_hz = -3\n").unwrap_err();
+        assert!(e.to_string().contains("kinematics.frequency_hz"), "{e}");
+        let e = SystemConfig::from_toml("[wing]\nspan = 3\n").unwrap_err();
+        assert!(e.to_string().contains("span"), "{e}");
+        let e = SystemConfig::from_toml("[analysis]\ncycles = \"four\"\n").unwrap_err();
+        assert!(e.to_string().contains("cycles"), "{e}");
+    }
+}

@@ -1,0 +1,33 @@
+//! The MDOIS system analysis: the flexible flapping wing in its flight
+//! condition, an unsteady vortex lattice ([`crate::uvlm`]) strongly coupled
+//! to the two-layer shell model ([`crate::shell`]) of the wing.
+//!
+//! The paper's system analysis is a 3D Navier–Stokes fluid–structure
+//! simulation (ADINA); fwav replaces it with a potential-flow lattice on
+//! the deforming mid-surface and the shell in the flapping frame, and hands
+//! on what the disciplines need: the mid-span section's deformation history
+//! (aerodynamic discipline, [`crate::aero2d`]), the pressure history on the
+//! shell elements (structural discipline), and the wing's thrust, power and
+//! efficiency.
+//!
+//! - [`kinematics`]: the flapping motion of the root (the design variables).
+//! - [`model`]: the wing (planform, mesh, two-layer sections) and the
+//!   flight condition.
+//! - [`interface`]: the lattice on the shell mesh, conservative transfer.
+//! - [`floating_frame`]: the shell's elastic dynamics in the flapping frame.
+//! - [`analysis`]: the coupled time stepping, results.
+//! - [`series`]: `.vtu`/`.pvd` output of the wing and wake.
+
+pub mod analysis;
+pub mod config;
+pub mod floating_frame;
+pub mod interface;
+pub mod kinematics;
+pub mod model;
+pub mod series;
+
+pub use analysis::{
+    run, CycleMeans, Snapshot, StepRecord, SystemError, SystemResult, SystemSettings,
+};
+pub use kinematics::{FlappingKinematics, RootMotion};
+pub use model::{FlightCondition, WingModel};

@@ -1,0 +1,204 @@
+//! `fwav system-analysis`: the coupled 3D aeroelastic analysis of the
+//! flapping wing (UVLM + shell), writing what the two disciplines take.
+
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use anyhow::{Context, Result};
+use fwav::aeroelastic::config::SystemConfig;
+use fwav::aeroelastic::series::write_series;
+use fwav::aeroelastic::{run, SystemResult};
+
+/// The command's options.
+#[derive(clap::Args)]
+pub struct SystemArgs {
+    /// Configuration (TOML: [wing], [kinematics], [flight], [analysis]);
+    /// the built-in FWAV when not given.
+    #[arg(long)]
+    pub config: Option<PathBuf>,
+    /// Rigid wing: the lattice follows the flapping, no structure.
+    #[arg(long)]
+    pub rigid: bool,
+    /// Write the results here: `section.json` (the mid-span section
+    /// history, `fwav aero2d --deformation` format), `pressure.json` (the
+    /// pressure jump per shell element over the last cycle), `steps.csv`,
+    /// and `wing.pvd`/`wake.pvd` with their `.vtu` files.
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Machine-readable summary on standard output.
+    #[arg(long)]
+    pub json: bool,
+    /// No progress line.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// Runs the command.
+pub fn run_command(a: &SystemArgs) -> Result<()> {
+    let mut config = match &a.config {
+        Some(path) => {
+            let text = std::fs::read_to_string(path)
+                .with_context(|| format!("reading {}", path.display()))?;
+            SystemConfig::from_toml(&text).with_context(|| format!("{}", path.display()))?
+        }
+        None => SystemConfig::default(),
+    };
+    if a.rigid {
+        config.analysis.rigid = true;
+    }
+    let wing = config.wing_model()?;
+    let show = !a.quiet && std::io::stderr().is_terminal();
+    let started = Instant::now();
+    let snapshot_every = if a.out.is_some() { 2 } else { 0 };
+    let result = run(
+        &wing,
+        &config.kinematics(),
+        &config.flight(),
+        &config.analysis,
+        snapshot_every,
+        |done, total| {
+            if show && (done % 10 == 0 || done == total) {
+                eprint!(
+                    "\rsystem analysis: step {done}/{total}, {:.1} s",
+                    started.elapsed().as_secs_f64()
+                );
+                if done == total {
+                    eprintln!();
+                }
+            }
+        },
+    )?;
+    let seconds = started.elapsed().as_secs_f64();
+    if let Some(dir) = &a.out {
+        write_outputs(dir, &wing.wing.mesh.elements, &result)?;
+    }
+    let steps = result.steps.len();
+    let max_sub = result
+        .steps
+        .iter()
+        .map(|s| s.subiterations)
+        .max()
+        .unwrap_or(0);
+    let mean_sub = result
+        .steps
+        .iter()
+        .map(|s| s.subiterations as f64)
+        .sum::<f64>()
+        / steps.max(1) as f64;
+    let tip_amplitude = {
+        let last = &result.steps[steps - config.analysis.steps_per_cycle..];
+        let z = last.iter().map(|s| s.tip_displacement_m[2]);
+        let (lo, hi) = z.fold((f64::MAX, f64::MIN), |(l, h), v| (l.min(v), h.max(v)));
+        0.5 * (hi - lo)
+    };
+    let kinematics = config.kinematics();
+    let drive_power = {
+        let last = &result.steps[steps - config.analysis.steps_per_cycle..];
+        last.iter()
+            .map(|s| s.drive_torque_nm * kinematics.angle(s.time_s).1)
+            .sum::<f64>()
+            / last.len() as f64
+    };
+    if a.json {
+        let summary = serde_json::json!({
+            "model": if config.analysis.rigid { "uvlm, rigid wing" } else { "uvlm + shell (floating frame), strongly coupled" },
+            "mean_ct": result.means.ct,
+            "mean_cl": result.means.cl,
+            "mean_cp": result.means.cp,
+            "efficiency": result.means.efficiency,
+            "ct_change_last_two_cycles": result.means.ct_change_last_two_cycles,
+            "mean_drive_power_w": drive_power,
+            "tip_deflection_amplitude_m": tip_amplitude,
+            "wing_mass_kg": result.wing_mass_kg,
+            "reference_area_m2": result.reference_area_m2,
+            "dt_s": result.dt_s,
+            "steps": steps,
+            "mean_subiterations": mean_sub,
+            "max_subiterations": max_sub,
+            "seconds": seconds,
+            "seconds_per_cycle": seconds / config.analysis.cycles as f64,
+            "seconds_per_step": seconds / steps as f64,
+            "out": a.out.as_ref().map(|p| p.display().to_string()),
+        });
+        println!("{summary:#}");
+    } else {
+        println!(
+            "last cycle: CT {:.4}  CL {:.4}  CP {:.4}  efficiency {:.3}",
+            result.means.ct, result.means.cl, result.means.cp, result.means.efficiency
+        );
+        println!(
+            "mean CT change over the last cycle {:+.2}%, mean drive power {:.4} W",
+            100.0 * result.means.ct_change_last_two_cycles,
+            drive_power
+        );
+        println!(
+            "tip deflection amplitude {:.3} mm, wing mass {:.2} g, coupling {:.1} sub-iterations a step (max {max_sub})",
+            1e3 * tip_amplitude,
+            1e3 * result.wing_mass_kg,
+            mean_sub
+        );
+        println!(
+            "{steps} steps in {seconds:.1} s ({:.2} s a cycle, {:.1} ms a step)",
+            seconds / config.analysis.cycles as f64,
+            1e3 * seconds / steps as f64
+        );
+        if let Some(dir) = &a.out {
+            println!("results in {}", dir.display());
+        }
+    }
+    Ok(())
+}
+
+fn write_outputs(dir: &Path, elements: &[[usize; 4]], result: &SystemResult) -> Result<()> {
+    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    let atomic = |name: &str, text: String| -> Result<()> {
+        let path = dir.join(name);
+        let temporary = dir.join(format!("{name}.partial"));
+        std::fs::write(&temporary, text).with_context(|| format!("writing {}", path.display()))?;
+        std::fs::rename(&temporary, &path).with_context(|| format!("writing {}", path.display()))
+    };
+    atomic(
+        "section.json",
+        serde_json::json!({
+            "description": "mid-span section (mid-line x, y in chords, flapping frame, leading edge undeformed at (0, 0)) over the last cycle; sample k at (k + 1) dt after a cycle start, where the flapping angle is mean + amplitude cos(2 pi f t)",
+            "period_s": result.dt_s * result.section_history.len() as f64,
+            "samples": result.section_history,
+        })
+        .to_string(),
+    )?;
+    atomic(
+        "pressure.json",
+        serde_json::json!({
+            "description": "pressure jump (lower minus upper) per shell element over the last cycle, Pa",
+            "dt_s": result.dt_s,
+            "samples": result.pressure_history,
+        })
+        .to_string(),
+    )?;
+    let mut csv = String::from(
+        "time_s,fx_n,fy_n,fz_n,power_w,ct,cl,cp,drive_torque_nm,tip_dx_m,tip_dy_m,tip_dz_m,subiterations,residual\n",
+    );
+    for s in &result.steps {
+        csv.push_str(&format!(
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+            s.time_s,
+            s.force_n[0],
+            s.force_n[1],
+            s.force_n[2],
+            s.power_w,
+            s.ct,
+            s.cl,
+            s.cp,
+            s.drive_torque_nm,
+            s.tip_displacement_m[0],
+            s.tip_displacement_m[1],
+            s.tip_displacement_m[2],
+            s.subiterations,
+            s.residual
+        ));
+    }
+    atomic("steps.csv", csv)?;
+    write_series(dir, elements, &result.snapshots)?;
+    Ok(())
+}
