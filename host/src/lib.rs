@@ -19,6 +19,7 @@ pub mod aero2d;
 pub mod aeroelastic;
 pub mod device;
 pub mod link;
+pub mod optimize;
 pub mod port;
 pub mod profile_file;
 pub mod shell;
