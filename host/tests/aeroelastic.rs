@@ -135,10 +135,13 @@ fn analyse(wing: &WingModel, settings: &SystemSettings) -> SystemResult {
 }
 
 /// The coupling's limits: a wing a thousand times stiffer than carbon
-/// flaps like the rigid wing (mean CT within 0.5%, measured below), and the
-/// coupled answer does not depend on the coupling tolerance (1e-4 against
-/// 1e-8: mean CT within 0.1%), so the default tolerance converges the
-/// interface.
+/// flaps like the rigid wing (mean CT within 0.5%; measured 0.01%), and the
+/// coupled answer hardly depends on the coupling tolerance: 1e-6 (the
+/// default) against 1e-8 moves the mean CT by 0.17%, asserted below 0.5%,
+/// a quarter of the lattice's own discretization change in
+/// `time_step_and_lattice_convergence` (this bound was 0.1% while the loads
+/// went to the shell as point forces, where the measured change was 0.09%;
+/// the distributed pressure loads made it 0.17%).
 #[test]
 fn coupling_reaches_its_limits() {
     let settings = coarse_settings();
@@ -176,7 +179,7 @@ fn coupling_reaches_its_limits() {
         mean_subiterations(&tight)
     );
     assert!(change(stiff.means.ct, rigid.means.ct) < 0.005);
-    assert!(change(flexible.means.ct, tight.means.ct) < 0.001);
+    assert!(change(flexible.means.ct, tight.means.ct) < 0.005);
     assert!(tight.steps.iter().all(|s| s.residual < 1e-8));
 }
 
@@ -186,14 +189,12 @@ fn mean_subiterations(r: &SystemResult) -> f64 {
 
 /// Time-step and lattice convergence of the coupled analysis (coarse shell
 /// mesh, 2 cycles): halving the step (20, 40, 80 steps a cycle) changes
-/// the mean CT by -2.15% then -0.65% (asserted: the second change under
+/// the mean CT by -1.80% then -0.47% (asserted: the second change under
 /// half the first); doubling the lattice each way (4 x 8, 8 x 16, 16 x 32
-/// panels) by -3.21% then -2.19% — converging, but only at about order 0.5
-/// in the panel size (asserted: the second change smaller than the first).
-/// A Richardson estimate from these puts the 8 x 16 default some 7% above
-/// the lattice limit; the slow part is the flapping wing's leading-edge
-/// suction and tip region (the heaving plate of `tests/uvlm.rs` converges
-/// to 0.4%).
+/// panels) by -4.17% then -1.95% — converging at about first order in the
+/// panel size (asserted: the second change smaller than the first), which
+/// puts the 8 x 16 default about 2% above the lattice limit (the heaving
+/// plate of `tests/uvlm.rs` converges faster, to 0.4%).
 #[test]
 fn time_step_and_lattice_convergence() {
     let wing = coarse_wing(1.0);
@@ -239,11 +240,12 @@ fn time_step_and_lattice_convergence() {
 /// air (the wing's kinetic and strain energies return to their values), so
 /// the mean of `torque x flapping rate` over the last cycle matches the
 /// mean aerodynamic power within 2% (rho_inf = 1, no numerical
-/// dissipation; measured +0.96% after 4 cycles, +0.58% after 8; for the
+/// dissipation; measured +0.90% after 4 cycles; for the
 /// rigid wing the two agree to round-off). This checks the inertial loads,
 /// the load transfer, the power bookkeeping and how close to periodic the
 /// harmonic start brings the wing (from the undeformed wing at rest the
-/// fourth cycle is still +27% off).
+/// fourth cycle was 27% off when measured with the earlier point-load
+/// transfer).
 #[test]
 fn drive_power_balances_the_aerodynamic_power() {
     let settings = SystemSettings {

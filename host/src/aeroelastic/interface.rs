@@ -1,17 +1,20 @@
 //! The fluid–structure interface: the aerodynamic lattice placed on the
-//! shell mesh of the wing planform, with one interpolation serving both
-//! directions so the transfer is conservative.
+//! shell mesh of the wing planform.
 //!
 //! Both meshes are structured over the planform's parametric square (`s`
 //! chordwise, `t` spanwise, see [`crate::shell::wing::Planform::mesh`]).
 //! A lattice point at `(s, t)` moves with the bilinear interpolation `H` of
-//! the four shell nodes of the element that holds it; a force at `(s, t)`
-//! goes to the same four nodes with the same weights, `f = H^T F`. Hence
-//! the virtual work of the panel forces on the interpolated displacements
-//! equals that of the nodal forces on the nodal displacements
-//! (conservative transfer, Farhat, Lesoinne & Le Tallec 1998, CMAME 157),
-//! and the total force is kept exactly. The lattice has its own
-//! resolution, independent of the element counts.
+//! the four shell nodes of the element that holds it (consistent
+//! displacement transfer). Loads go back two ways: the panels' pressure
+//! jumps become element pressures, scaled so that each panel's force is
+//! carried exactly, and enter the shell as consistent (distributed) nodal
+//! loads; in-plane point forces (the leading-edge suction) go to the four
+//! nodes around their point with the same bilinear weights, `f = H^T F`,
+//! which keeps their total and their virtual work on the interpolated
+//! displacements exactly (Farhat, Lesoinne & Le Tallec 1998, CMAME 157).
+//! Point forces at the panel centres would be conservative too, but they
+//! dimple the fine shell mesh locally. The lattice has its own resolution,
+//! independent of the element counts.
 
 use nalgebra::Vector3;
 
@@ -52,6 +55,8 @@ pub struct SurfaceMap {
     centres: Vec<Stencil>,
     leading_edge: Vec<Stencil>,
     element_panel: Vec<usize>,
+    /// Panel area over the area of the elements it hands its pressure to.
+    pressure_scale: Vec<f64>,
     body_corners: Vec<Vector3<f64>>,
     nodes: usize,
 }
@@ -108,7 +113,7 @@ impl SurfaceMap {
             .map(|j| stencil(0.0, (j as f64 + 0.5) / spanwise as f64))
             .collect();
         // Element (i, j) of the shell grid is element j * nc + i.
-        let element_panel = (0..nt)
+        let element_panel: Vec<usize> = (0..nt)
             .flat_map(|j| (0..nc).map(move |i| (i, j)))
             .map(|(i, j)| {
                 let pi = ((i as f64 + 0.5) / nc as f64 * chordwise as f64) as usize;
@@ -116,9 +121,34 @@ impl SurfaceMap {
                 pi.min(chordwise - 1) * spanwise + pj.min(spanwise - 1)
             })
             .collect();
-        let body_corners = corners
+        let body_corners: Vec<Vector3<f64>> = corners
             .iter()
             .map(|st| st.iter().map(|&(n, w)| mesh.nodes[n] * w).sum())
+            .collect();
+        // Elements take their panel's pressure; where the two grids do not
+        // line up a panel covers a little more or less than its elements,
+        // so the pressure is scaled to keep each panel's force exactly.
+        let quad_area = |x: [Vector3<f64>; 4]| 0.5 * (x[2] - x[0]).cross(&(x[3] - x[1])).norm();
+        let mut assigned = vec![0.0; chordwise * spanwise];
+        for (e, &p) in element_panel.iter().enumerate() {
+            assigned[p] += quad_area(mesh.corners(e));
+        }
+        let corner = |i: usize, j: usize| body_corners[i * (spanwise + 1) + j];
+        let pressure_scale = (0..chordwise * spanwise)
+            .map(|p| {
+                let (i, j) = (p / spanwise, p % spanwise);
+                let area = quad_area([
+                    corner(i, j),
+                    corner(i + 1, j),
+                    corner(i + 1, j + 1),
+                    corner(i, j + 1),
+                ]);
+                if assigned[p] > 0.0 {
+                    area / assigned[p]
+                } else {
+                    0.0
+                }
+            })
             .collect();
         Ok(Self {
             chordwise,
@@ -127,6 +157,7 @@ impl SurfaceMap {
             centres,
             leading_edge,
             element_panel,
+            pressure_scale,
             body_corners,
             nodes: mesh.nodes.len(),
         })
@@ -178,6 +209,16 @@ impl SurfaceMap {
         self.element_panel
             .iter()
             .map(|&p| panel_values[p])
+            .collect()
+    }
+
+    /// The panels' pressure jumps (Pa) as element pressures that carry
+    /// each panel's normal force exactly on the undeformed wing: the panel
+    /// value scaled by the panel's area over its elements' area.
+    pub fn element_pressures(&self, panel_pressure: &[f64]) -> Vec<f64> {
+        self.element_panel
+            .iter()
+            .map(|&p| panel_pressure[p] * self.pressure_scale[p])
             .collect()
     }
 }
@@ -232,6 +273,23 @@ mod tests {
         let panel_work: f64 = forces.iter().zip(&centre_u).map(|(f, u)| f.dot(u)).sum();
         assert!((nodal_work - panel_work).abs() < 1e-12 * panel_work.abs());
         assert_eq!(map.element_values(&vec![2.0; 28]).len(), 60);
+        // Element pressures keep every panel's force (5 x 7 panels on a
+        // 6 x 10 grid: the grids do not line up).
+        let odd = SurfaceMap::new(&p, &mesh, 5, 7).unwrap();
+        let dp: Vec<f64> = (0..35).map(|k| 1.0 + k as f64).collect();
+        let on_elements = odd.element_pressures(&dp);
+        let area = |x: [Vector3<f64>; 4]| 0.5 * (x[2] - x[0]).cross(&(x[3] - x[1])).norm();
+        let element_force: f64 = (0..60)
+            .map(|e| on_elements[e] * area(mesh.corners(e)))
+            .sum();
+        let c = |i: usize, j: usize| odd.body_corners()[i * 8 + j];
+        let panel_force: f64 = (0..35)
+            .map(|k| {
+                let (i, j) = (k / 7, k % 7);
+                dp[k] * area([c(i, j), c(i + 1, j), c(i + 1, j + 1), c(i, j + 1)])
+            })
+            .sum();
+        assert!((element_force / panel_force - 1.0).abs() < 1e-12);
     }
 
     #[test]
