@@ -11,7 +11,7 @@ use fwav::optimize::doe::{
 use fwav::optimize::metrics::igd;
 use fwav::optimize::nsga2::{minimize, Bounds, Evaluation, Nsga2Config, Nsga2Result};
 use fwav::optimize::rsm::{
-    fit, fit_reduced, quadratic_terms, Coding, DropReason, ReduceOptions, Term,
+    fit, fit_reduced, quadratic_terms, Coding, DropReason, ReduceOptions, ResponseSurface, Term,
 };
 use fwav::optimize::zdt::Zdt;
 use rand::{Rng, SeedableRng};
@@ -176,6 +176,24 @@ fn evaluate_quadratic(terms: &[Term], coefficients: &[f64], x: &[f64]) -> f64 {
         .sum()
 }
 
+/// Fits the full quadratic to exact values of [`known_quadratic`] at the
+/// points `x`: the surface, the responses and the largest coefficient error.
+fn fit_known_quadratic(x: &[Vec<f64>], k: usize) -> (ResponseSurface, Vec<f64>, f64) {
+    let (terms, beta) = known_quadratic(k);
+    let y: Vec<f64> = x
+        .iter()
+        .map(|p| evaluate_quadratic(&terms, &beta, p))
+        .collect();
+    let s = fit(x, &y, &terms).unwrap();
+    let max_error = s
+        .coefficients
+        .iter()
+        .zip(&beta)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    (s, y, max_error)
+}
+
 /// Quadratic RSM (REFERENCES.md: (k+1)(k+2)/2 terms, 18 runs support a
 /// full quadratic in at most 4 variables, QR least squares): exact data
 /// from a quadratic it can represent is recovered coefficient for
@@ -186,19 +204,8 @@ fn rsm_recovers_an_exact_quadratic() {
     let array = OrthogonalArray::l18();
     let columns = l18_quadratic_columns(4).unwrap();
     let x = array.design(&columns, &vec![coded_levels(3); 4]).unwrap();
-    let (terms, beta) = known_quadratic(4);
-    assert_eq!(terms.len(), 15);
-    let y: Vec<f64> = x
-        .iter()
-        .map(|p| evaluate_quadratic(&terms, &beta, p))
-        .collect();
-    let s = fit(&x, &y, &terms).unwrap();
-    let max_error = s
-        .coefficients
-        .iter()
-        .zip(&beta)
-        .map(|(a, b)| (a - b).abs())
-        .fold(0.0, f64::max);
+    let (s, y, max_error) = fit_known_quadratic(&x, 4);
+    assert_eq!(s.coefficients.len(), 15);
     println!(
         "RSM on L18 C..F (4 factors, 15 terms): max coefficient error {max_error:.2e}, R² = {}, adj R² = {}, PRESS = {:?}",
         s.r_squared, s.adjusted_r_squared, s.press
@@ -212,18 +219,7 @@ fn rsm_recovers_an_exact_quadratic() {
     let x: Vec<Vec<f64>> = (0..20)
         .map(|_| (0..3).map(|_| rng.random_range(-1.0..=1.0)).collect())
         .collect();
-    let (terms, beta) = known_quadratic(3);
-    let y: Vec<f64> = x
-        .iter()
-        .map(|p| evaluate_quadratic(&terms, &beta, p))
-        .collect();
-    let s = fit(&x, &y, &terms).unwrap();
-    let max_error = s
-        .coefficients
-        .iter()
-        .zip(&beta)
-        .map(|(a, b)| (a - b).abs())
-        .fold(0.0, f64::max);
+    let (s, _, max_error) = fit_known_quadratic(&x, 3);
     println!(
         "RSM on 20 random runs (3 factors, 10 terms): max coefficient error {max_error:.2e}, R² = {}, PRESS = {:?}",
         s.r_squared, s.press
