@@ -19,13 +19,13 @@ pub fn laminar_friction(reynolds: f64, tangential: f64) -> f64 {
 }
 
 /// Streamwise friction drag (on `1/2 rho U^2 c`) of a section at pitch
-/// `alpha` (rad) plunging at `h_dot` (U): the chordwise relative flow
-/// `cos alpha + h' sin alpha` (freestream and plunge; pitch moves the chord
-/// along itself only at second order), its force along the chord
-/// `(cos alpha, -sin alpha)`.
-pub fn streamwise_friction(reynolds: f64, alpha: f64, h_dot: f64) -> f64 {
+/// `alpha` (rad) plunging at `h_dot` and surging downstream at `x_dot` (U):
+/// the chordwise relative flow `(1 - x') cos alpha + h' sin alpha`
+/// (freestream, surge and plunge; pitch moves the chord along itself only
+/// at second order), its force along the chord `(cos alpha, -sin alpha)`.
+pub fn streamwise_friction(reynolds: f64, alpha: f64, h_dot: f64, x_dot: f64) -> f64 {
     let (s, c) = alpha.sin_cos();
-    laminar_friction(reynolds, c + h_dot * s) * c
+    laminar_friction(reynolds, (1.0 - x_dot) * c + h_dot * s) * c
 }
 
 /// [`streamwise_friction`] of a rigidly moving section at `times` (chords
@@ -35,7 +35,7 @@ pub fn friction_history(motion: &super::motion::Motion, times: &[f64], reynolds:
         .iter()
         .map(|&t| {
             let (_, h_dot, alpha, _) = motion.at(t);
-            streamwise_friction(reynolds, alpha, h_dot)
+            streamwise_friction(reynolds, alpha, h_dot, 0.0)
         })
         .collect()
 }

@@ -40,7 +40,7 @@ use std::f64::consts::PI;
 
 use super::camber::CamberHistory;
 pub use super::history::{cycle_mean_of, cycle_means, cycle_means_until, History};
-pub use super::motion::{Motion, PitchRamp};
+pub use super::motion::{Motion, PitchRamp, SectionFlapping};
 
 /// Numerical settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -133,6 +133,8 @@ pub struct Ldvm {
     shedding: bool,
     /// A pitch ramp replacing the harmonic pitch of `motion`.
     ramp: Option<PitchRamp>,
+    /// A flapping section's surge and plunge replacing the harmonic plunge.
+    flapping: Option<SectionFlapping>,
     /// The vertical vortex impulse of the previous step.
     impulse_prev: f64,
     /// Running bound circulation from the leading edge to each station, of
@@ -182,6 +184,17 @@ fn far_proxies(far: &[FreeVortex]) -> impl Iterator<Item = FreeVortex> + '_ {
             gamma: group.iter().map(|v| v.gamma).sum(),
         }
     })
+}
+
+/// The rigid motion at one time (chords, radians, chords travelled).
+#[derive(Clone, Copy, Debug)]
+struct Kinematics {
+    x: f64,
+    x_dot: f64,
+    h: f64,
+    h_dot: f64,
+    alpha: f64,
+    alpha_dot: f64,
 }
 
 /// Index of the first vortex of the near wake: vortices are kept in
@@ -234,6 +247,7 @@ impl Ldvm {
             leading: Vec::new(),
             shedding: false,
             ramp: None,
+            flapping: None,
             impulse_prev: 0.0,
             time: 0.0,
             core2: core * core,
@@ -246,6 +260,15 @@ impl Ldvm {
     /// power includes the work of the deformation, `-int dp eta_t dx`).
     pub fn with_camber(mut self, camber: CamberHistory) -> Self {
         self.camber = Some(camber);
+        self
+    }
+
+    /// Surge and plunge of a flapping wing's section instead of the
+    /// harmonic plunge (pitch and pivot still from the motion). The surge
+    /// velocity `x'` changes the air's speed over the section to `1 - x'`;
+    /// coefficients stay referred to the flight speed.
+    pub fn with_flapping(mut self, flapping: SectionFlapping) -> Self {
+        self.flapping = Some(flapping);
         self
     }
 
@@ -271,23 +294,32 @@ impl Ldvm {
         &self.leading
     }
 
-    /// `(h, h', alpha, alpha')` at time `t`.
-    fn kinematics(&self, t: f64) -> (f64, f64, f64, f64) {
-        let (h, h_dot, alpha, alpha_dot) = self.motion.at(t);
-        match &self.ramp {
-            Some(r) => {
-                let (a, a_dot) = r.at(t);
-                (h, h_dot, a, a_dot)
-            }
-            None => (h, h_dot, alpha, alpha_dot),
+    /// `(x, x', h, h', alpha, alpha')` at time `t`: surge (downstream),
+    /// plunge, pitch and their rates.
+    fn kinematics(&self, t: f64) -> Kinematics {
+        let (mut h, mut h_dot, mut alpha, mut alpha_dot) = self.motion.at(t);
+        if let Some(r) = &self.ramp {
+            (alpha, alpha_dot) = r.at(t);
+        }
+        let (mut x, mut x_dot) = (0.0, 0.0);
+        if let Some(f) = &self.flapping {
+            (x, x_dot, h, h_dot) = f.at(t);
+        }
+        Kinematics {
+            x,
+            x_dot,
+            h,
+            h_dot,
+            alpha,
+            alpha_dot,
         }
     }
 
     /// Global position of chordwise station `xb` (chords from the LE).
-    fn body_point(&self, xb: f64, h: f64, alpha: f64) -> (f64, f64) {
+    fn body_point(&self, xb: f64, k: &Kinematics) -> (f64, f64) {
         let p = self.motion.pivot;
         let s = xb - p;
-        (p + s * alpha.cos(), h - s * alpha.sin())
+        (k.x + p + s * k.alpha.cos(), k.h - s * k.alpha.sin())
     }
 
     /// Fourier coefficients from normal velocities at the chord points:
@@ -323,7 +355,14 @@ impl Ldvm {
         let dt = self.settings.dt;
         self.time += dt;
         let t = self.time;
-        let (h, h_dot, alpha, alpha_dot) = self.kinematics(t);
+        let kinematics = self.kinematics(t);
+        let Kinematics {
+            x_dot,
+            h_dot,
+            alpha,
+            alpha_dot,
+            ..
+        } = kinematics;
         let (sa, ca) = alpha.sin_cos();
         let pivot = self.motion.pivot;
         let shape = |xb: f64| {
@@ -339,13 +378,13 @@ impl Ldvm {
                 let xb = 0.5 * (1.0 - th.cos());
                 let (eta, slope, rate) = shape(xb);
                 slopes.push((slope, rate));
-                let (x, y) = self.body_point(xb, h, alpha);
+                let (x, y) = self.body_point(xb, &kinematics);
                 // Offset along the normal (sin alpha, cos alpha).
                 (xb, x + eta * sa, y + eta * ca)
             })
             .collect();
         let edge = |xb: f64| {
-            let (x, y) = self.body_point(xb, h, alpha);
+            let (x, y) = self.body_point(xb, &kinematics);
             let eta = shape(xb).0;
             (x + eta * sa, y + eta * ca)
         };
@@ -389,7 +428,7 @@ impl Ldvm {
                 _ => {
                     let (u, v) = induced_by(le.0, le.1, &[]);
                     let relative = (
-                        1.0 + u - pivot * sa * alpha_dot,
+                        1.0 + u - x_dot - pivot * sa * alpha_dot,
                         v - h_dot - pivot * ca * alpha_dot,
                     );
                     (le.0 + 0.5 * dt * relative.0, le.1 + 0.5 * dt * relative.1)
@@ -407,7 +446,8 @@ impl Ldvm {
         let mut vt = vec![Vec::with_capacity(m); 1 + news.len()];
         for (&(xb, x, y), &(slope, rate)) in stations.iter().zip(&slopes) {
             let (du, dv) = induced_by(x, y, &[]);
-            let (u, v) = (1.0 + du, dv);
+            // The air relative to the surging section.
+            let (u, v) = (1.0 + du - x_dot, dv);
             let relative = u * sa + v * ca - h_dot * ca + (xb - pivot) * alpha_dot;
             let tangential = u * ca - v * sa + h_dot * sa;
             // Camber: the normal tilts by -slope and moves at `rate`.
@@ -552,7 +592,13 @@ impl Ldvm {
             // high k, in quadrature with the velocity) leaks into the mean
             // power through an O(omega dt) phase error.
             let tm = t - 0.5 * dt;
-            let (_, h_dot_m, alpha_m, alpha_dot_m) = self.kinematics(tm);
+            let Kinematics {
+                x_dot: x_dot_m,
+                h_dot: h_dot_m,
+                alpha: alpha_m,
+                alpha_dot: alpha_dot_m,
+                ..
+            } = self.kinematics(tm);
             let normal = 0.5 * (now.normal + prev.normal) + (now.q_normal - prev.q_normal) / dt;
             let moment_le =
                 -(0.5 * (now.moment + prev.moment) + (now.q_moment - prev.q_moment) / dt);
@@ -562,14 +608,16 @@ impl Ldvm {
             let fy = normal * cm + suction * sm;
             let m_pivot_nose_up = moment_le + pivot * normal;
             let deformation = 0.5 * (now.deform_quasi + prev.deform_quasi) + unsteady_deform;
-            let power = -fy * h_dot_m - m_pivot_nose_up * alpha_dot_m - deformation;
+            let power = -fx * x_dot_m - fy * h_dot_m - m_pivot_nose_up * alpha_dot_m - deformation;
             history.time.push(tm);
             history.cl.push(2.0 * fy);
             history.ct.push(-2.0 * fx);
             if let Some(re) = self.settings.reynolds {
                 history
                     .cd_friction
-                    .push(super::friction::streamwise_friction(re, alpha_m, h_dot_m));
+                    .push(super::friction::streamwise_friction(
+                        re, alpha_m, h_dot_m, x_dot_m,
+                    ));
             }
             history.cp.push(2.0 * power);
             history.lesp.push(a[0]);

@@ -55,6 +55,46 @@ impl Motion {
     }
 }
 
+/// The motion of one spanwise section of a wing flapping about a root
+/// axis (the 2D evaluation of the kinematic optimization): the flapping
+/// angle `phi = mean + amplitude cos(omega t)` turns the section, at
+/// `radius` chords from the axis, about the stroke-plane normal `(sin b,
+/// 0, cos b)` (axes of [`crate::aeroelastic::kinematics`]), so in the
+/// section's plane it plunges by `r (sin phi - sin mean) sin b` and surges
+/// downstream by `-r (sin phi - sin mean) cos b`: a vertical stroke plane
+/// (b = 90°) is pure plunge, an inclined one adds a fore-and-aft motion
+/// that changes the speed of the air over the section. Chords, radians,
+/// chords travelled (`c = U = 1`); no pitch (a section's twist comes from
+/// the wing's deformation, given as a camber history).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SectionFlapping {
+    /// Reduced frequency `k = omega c / (2 U)`.
+    pub reduced_frequency: f64,
+    /// Distance of the section from the flapping axis, chords.
+    pub radius: f64,
+    /// Flapping amplitude, rad.
+    pub amplitude: f64,
+    /// Mean flapping angle, rad.
+    pub mean_angle: f64,
+    /// Stroke-plane inclination from the horizontal, rad.
+    pub stroke_plane: f64,
+}
+
+impl SectionFlapping {
+    /// `(x, x', h, h')`: surge (downstream) and plunge (up) and their
+    /// rates at time `t` (chords, chords travelled).
+    pub fn at(&self, t: f64) -> (f64, f64, f64, f64) {
+        let w = 2.0 * self.reduced_frequency;
+        let (s, c) = (w * t).sin_cos();
+        let phi = self.mean_angle + self.amplitude * c;
+        let phi_dot = -self.amplitude * w * s;
+        let sweep = self.radius * (phi.sin() - self.mean_angle.sin());
+        let sweep_dot = self.radius * phi.cos() * phi_dot;
+        let (sb, cb) = self.stroke_plane.sin_cos();
+        (-sweep * cb, -sweep_dot * cb, sweep * sb, sweep_dot * sb)
+    }
+}
+
 /// Eldredge's canonical pitch-up, hold, pitch-down manoeuvre (Eldredge, Wang
 /// & Ol 2009, AIAA 2009-3687; the motion of the LDVM paper's ramp cases,
 /// Ramesh et al. 2014, J. Fluid Mech. 751, section 4):
