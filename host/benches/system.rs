@@ -2,20 +2,45 @@
 //! 2 x 6760-element shell with the default lattice, 4 flapping cycles,
 //! converged coupling, < 60 s on 2 cores). One run is long enough to time
 //! by itself, so this bench runs it once (plus the rigid wing for scale)
-//! and prints seconds per cycle and per step; `cargo bench -p fwav --bench
-//! system`.
+//! and prints seconds per cycle and per step, then the default case's
+//! time-step and lattice convergence (step halved, lattice doubled each
+//! way); `cargo bench -p fwav --bench system`.
 
 use std::time::Instant;
 
-use fwav::aeroelastic::{run, FlappingKinematics, FlightCondition, SystemSettings, WingModel};
+use fwav::aeroelastic::config::SystemConfig;
+use fwav::aeroelastic::{run, FlappingKinematics, FlightCondition, SystemSettings};
 
 fn main() {
-    let wing = WingModel::fwav(0.3).expect("default wing");
-    for rigid in [true, false] {
-        let settings = SystemSettings {
-            rigid,
-            ..SystemSettings::default()
-        };
+    // The default configuration's wing: the full carbon layer.
+    let wing = SystemConfig::default().wing_model().expect("default wing");
+    let base = SystemSettings::default();
+    let cases = [
+        (
+            "rigid wing",
+            SystemSettings {
+                rigid: true,
+                ..base
+            },
+        ),
+        ("flexible wing, 2 x 6760 shell elements", base),
+        (
+            "flexible, step halved",
+            SystemSettings {
+                steps_per_cycle: 2 * base.steps_per_cycle,
+                ..base
+            },
+        ),
+        (
+            "flexible, lattice doubled",
+            SystemSettings {
+                chordwise_panels: 2 * base.chordwise_panels,
+                spanwise_panels: 2 * base.spanwise_panels,
+                ..base
+            },
+        ),
+    ];
+    for (name, settings) in cases {
         let started = Instant::now();
         let result = run(
             &wing,
@@ -31,7 +56,7 @@ fn main() {
         let sub = result.steps.iter().map(|s| s.subiterations).sum::<usize>() as f64 / steps as f64;
         println!(
             "system analysis ({}), {} x {} lattice, {} cycles x {} steps: {:.1} s, {:.2} s a cycle, {:.1} ms a step, {:.1} sub-iterations a step; CT {:.4}, CP {:.4}, efficiency {:.3}",
-            if rigid { "rigid wing" } else { "flexible wing, 2 x 6760 shell elements" },
+            name,
             settings.chordwise_panels,
             settings.spanwise_panels,
             settings.cycles,
