@@ -18,6 +18,7 @@
 pub mod aero2d;
 pub mod aeroelastic;
 pub mod device;
+pub mod discipline;
 pub mod link;
 pub mod optimize;
 pub mod port;
