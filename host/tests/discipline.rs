@@ -75,3 +75,62 @@ fn section_evaluation_refuses_bad_input() {
         Err(EvaluationError::Deformation(_))
     ));
 }
+
+/// The whole aerodynamic discipline on the FWAV's rigid mid-span section
+/// (L18 → best row, ANOM + confirmation, RSM + NSGA-II + confirmation):
+/// the chosen kinematics beat the initial design in the combined objective
+/// (equal weights on CT / CT_0 and eta / eta_0), and that is the direct
+/// confirmation run's value, not a prediction.
+#[test]
+fn kinematic_discipline_beats_the_initial_design() {
+    use fwav::discipline::kinematic::{optimize, DesignSpace, Weights};
+    use fwav::optimize::nsga2::Nsga2Config;
+    let case = SectionCase::fwav_mid_span();
+    let started = std::time::Instant::now();
+    let result = optimize(
+        &case,
+        &DesignSpace::fwav(),
+        [11.0, 30.0, 0.0, 90.0],
+        Weights {
+            thrust: 1.0,
+            efficiency: 1.0,
+        },
+        &Nsga2Config::default(),
+    )
+    .unwrap();
+    let seconds = started.elapsed().as_secs_f64();
+    let initial = result.initial.result.as_ref().unwrap();
+    println!(
+        "initial: CT {:.4}, efficiency {:.3}; surfaces R² CT {:.3} (adj {:.3}), eta {:.3} (adj {:.3}); {} Pareto points; {:.1} s",
+        initial.ct,
+        initial.efficiency,
+        result.surface_quality[0].0,
+        result.surface_quality[0].1,
+        result.surface_quality[1].0,
+        result.surface_quality[1].1,
+        result.pareto.len(),
+        seconds
+    );
+    for c in &result.candidates {
+        let r = c.confirmation.result.as_ref().unwrap();
+        println!(
+            "{}: {:?} -> CT {:.4}, efficiency {:.3}, combined {:.3} (predicted {:?})",
+            c.method,
+            c.confirmation.design,
+            r.ct,
+            r.efficiency,
+            c.combined.unwrap(),
+            c.predicted
+        );
+    }
+    let chosen = result.chosen.expect("a candidate beats the initial design");
+    let confirmed = result.candidates[chosen].combined.unwrap();
+    let direct = case
+        .evaluate(&DesignSpace::kinematics(
+            &result.candidates[chosen].confirmation.design,
+        ))
+        .unwrap();
+    let again = direct.ct / initial.ct + direct.efficiency / initial.efficiency;
+    assert!(confirmed > 2.0, "{confirmed}");
+    assert!((again - confirmed).abs() < 1e-12);
+}

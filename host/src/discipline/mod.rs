@@ -7,4 +7,5 @@
 //!   deformation from the system analysis, an [`crate::aero2d`] run and its
 //!   cycle-mean thrust, power and efficiency.
 
+pub mod kinematic;
 pub mod section;

@@ -1,0 +1,299 @@
+//! The aerodynamic discipline (seed paper): choose the flapping kinematics
+//! that maximize the mean thrust coefficient and the propulsive efficiency
+//! of the deforming mid-span section, by the paper's three candidates:
+//!
+//! 1. the best row of the Taguchi L18 array (four three-level factors in
+//!    the columns that support a full quadratic, [`l18_quadratic_columns`]);
+//! 2. ANOM: the best level of each factor for the combined objective, its
+//!    additive prediction and a confirmation run;
+//! 3. a reduced quadratic response surface per objective (coded variables
+//!    in [-1, 1], QR least squares, [`fit_reduced`]) searched by NSGA-II
+//!    for the CT–efficiency Pareto front, the point of the front with the
+//!    best combined objective, and a confirmation run.
+//!
+//! The combined objective (the stated rule for choosing): `w_ct CT / CT_0 +
+//! w_eta eta / eta_0`, each objective relative to the initial design's, so
+//! the weights say how much a relative gain in each is worth. The answer is
+//! the confirmed candidate (direct runs only: the L18 row, the ANOM and RSM
+//! confirmations) with the best combined objective, or the initial design
+//! if none beats it. Every evaluation runs in parallel (rayon); a failed
+//! one is recorded with its reason and counts as the worst response seen.
+
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+use crate::aeroelastic::kinematics::FlappingKinematics;
+use crate::optimize::anom::{Anom, Goal};
+use crate::optimize::doe::{l18_quadratic_columns, OrthogonalArray};
+use crate::optimize::nsga2::{minimize, Bounds, Nsga2Config};
+use crate::optimize::rsm::{fit_reduced, ReduceOptions};
+
+use super::section::{SectionCase, SectionResult};
+
+/// The four design variables and their three levels (physical units:
+/// Hz and degrees, as a person sets them), low, middle (the initial
+/// design) and high; the RSM and NSGA-II search between low and high.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct DesignSpace {
+    /// Flapping frequency levels, Hz.
+    pub frequency_hz: [f64; 3],
+    /// Flapping amplitude levels, degrees.
+    pub amplitude_deg: [f64; 3],
+    /// Mean flapping angle levels, degrees.
+    pub mean_angle_deg: [f64; 3],
+    /// Stroke-plane inclination levels, degrees.
+    pub stroke_plane_deg: [f64; 3],
+}
+
+impl DesignSpace {
+    /// Three levels around the built-in initial design (11 Hz, ±30°, 0°,
+    /// 90°): 9/11/13 Hz, 20/30/40°, -10/0/10°, 70/90/110° (a documented
+    /// choice; the paper's design table is lost in the copy here).
+    pub fn fwav() -> Self {
+        Self {
+            frequency_hz: [9.0, 11.0, 13.0],
+            amplitude_deg: [20.0, 30.0, 40.0],
+            mean_angle_deg: [-10.0, 0.0, 10.0],
+            stroke_plane_deg: [70.0, 90.0, 110.0],
+        }
+    }
+
+    fn levels(&self) -> [[f64; 3]; 4] {
+        [
+            self.frequency_hz,
+            self.amplitude_deg,
+            self.mean_angle_deg,
+            self.stroke_plane_deg,
+        ]
+    }
+
+    /// The kinematics at physical values `[f Hz, A deg, mean deg, stroke deg]`.
+    pub fn kinematics(x: &[f64; 4]) -> FlappingKinematics {
+        FlappingKinematics {
+            frequency: x[0],
+            amplitude: x[1].to_radians(),
+            mean_angle: x[2].to_radians(),
+            stroke_plane: x[3].to_radians(),
+        }
+    }
+
+    /// Physical values of coded ones (`-1` low, `0` middle, `1` high; the
+    /// middle need not be halfway, so each half is mapped on its own).
+    pub fn decode(&self, coded: &[f64]) -> [f64; 4] {
+        let mut x = [0.0; 4];
+        for (f, l) in self.levels().iter().enumerate() {
+            let c = coded[f].clamp(-1.0, 1.0);
+            x[f] = if c < 0.0 {
+                l[1] + c * (l[1] - l[0])
+            } else {
+                l[1] + c * (l[2] - l[1])
+            };
+        }
+        x
+    }
+}
+
+/// One direct evaluation.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Evaluated {
+    /// Design values `[f Hz, A deg, mean deg, stroke deg]`.
+    pub design: [f64; 4],
+    /// The results, or why the run failed.
+    pub result: Result<SectionResult, String>,
+}
+
+/// A candidate design and how it was found.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Candidate {
+    /// `"best L18 row"`, `"ANOM"` or `"RSM + NSGA-II"`.
+    pub method: String,
+    /// The predicted combined objective (None for a direct run).
+    pub predicted: Option<f64>,
+    /// The confirmation (direct) run.
+    pub confirmation: Evaluated,
+    /// Its combined objective (None if it failed).
+    pub combined: Option<f64>,
+}
+
+/// What the discipline hands on.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct KinematicResult {
+    /// The initial design's run.
+    pub initial: Evaluated,
+    /// The 18 runs of the array.
+    pub runs: Vec<Evaluated>,
+    /// Level means of the combined objective per factor (ANOM).
+    pub level_means: Vec<Vec<f64>>,
+    /// R², adjusted R² and PRESS of the CT and efficiency surfaces.
+    pub surface_quality: [(f64, f64, Option<f64>); 2],
+    /// The Pareto front of the surfaces: design values, predicted CT and
+    /// efficiency.
+    pub pareto: Vec<([f64; 4], f64, f64)>,
+    /// The three candidates.
+    pub candidates: Vec<Candidate>,
+    /// Index of the chosen candidate, None: the initial design stays.
+    pub chosen: Option<usize>,
+}
+
+/// Why the discipline stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum KinematicError {
+    /// The initial design could not be evaluated.
+    #[error("the initial design's 2D run failed: {0}")]
+    Initial(String),
+    /// Design of experiments, ANOM, RSM or NSGA-II refused their input.
+    #[error("{0}")]
+    Method(String),
+}
+
+/// Weights of the combined objective.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Weights {
+    /// Weight of `CT / CT_0`.
+    pub thrust: f64,
+    /// Weight of `eta / eta_0`.
+    pub efficiency: f64,
+}
+
+/// Runs the discipline on `case` over `space` from `initial` physical
+/// values.
+pub fn optimize(
+    case: &SectionCase,
+    space: &DesignSpace,
+    initial: [f64; 4],
+    weights: Weights,
+    nsga: &Nsga2Config,
+) -> Result<KinematicResult, KinematicError> {
+    let method = |e: &dyn std::fmt::Display| KinematicError::Method(e.to_string());
+    let run = |design: [f64; 4]| Evaluated {
+        design,
+        result: case
+            .evaluate(&DesignSpace::kinematics(&design))
+            .map_err(|e| e.to_string()),
+    };
+    let initial = run(initial);
+    let reference = initial.result.clone().map_err(KinematicError::Initial)?;
+    let combined = |r: &SectionResult| {
+        weights.thrust * r.ct / reference.ct
+            + weights.efficiency * r.efficiency / reference.efficiency
+    };
+    let score = |e: &Evaluated| e.result.as_ref().ok().map(combined);
+
+    // 1. The array.
+    let array = OrthogonalArray::l18();
+    let columns = l18_quadratic_columns(4).map_err(|e| method(&e))?;
+    let levels: Vec<Vec<f64>> = space.levels().iter().map(|l| l.to_vec()).collect();
+    let plan = array.design(&columns, &levels).map_err(|e| method(&e))?;
+    let runs: Vec<Evaluated> = plan
+        .par_iter()
+        .map(|x| run([x[0], x[1], x[2], x[3]]))
+        .collect();
+    let worst = |values: Vec<Option<f64>>| -> Vec<f64> {
+        let floor = values
+            .iter()
+            .flatten()
+            .copied()
+            .fold(f64::INFINITY, f64::min);
+        values.into_iter().map(|v| v.unwrap_or(floor)).collect()
+    };
+    let scores = worst(runs.iter().map(score).collect());
+    let best_row = (0..runs.len())
+        .max_by(|&a, &b| scores[a].total_cmp(&scores[b]))
+        .ok_or_else(|| KinematicError::Method("no runs".into()))?;
+
+    // 2. ANOM on the combined objective.
+    let anom = Anom::new(&array, &columns, &scores).map_err(|e| method(&e))?;
+    let (best_levels, anom_prediction) = anom.optimum(Goal::LargerIsBetter);
+    let anom_design = [0, 1, 2, 3].map(|f| space.levels()[f][usize::from(best_levels[f])]);
+
+    // 3. Response surfaces in coded levels, NSGA-II on them.
+    let coded: Vec<Vec<f64>> = (0..plan.len())
+        .map(|r| {
+            columns
+                .iter()
+                .map(|&c| f64::from(array.runs[r][c]) - 1.0)
+                .collect()
+        })
+        .collect();
+    let ct = worst(
+        runs.iter()
+            .map(|e| e.result.as_ref().ok().map(|r| r.ct))
+            .collect(),
+    );
+    let eta = worst(
+        runs.iter()
+            .map(|e| e.result.as_ref().ok().map(|r| r.efficiency))
+            .collect(),
+    );
+    let ct_fit = fit_reduced(&coded, &ct, ReduceOptions::default()).map_err(|e| method(&e))?;
+    let eta_fit = fit_reduced(&coded, &eta, ReduceOptions::default()).map_err(|e| method(&e))?;
+    let bounds = Bounds::new(vec![-1.0; 4], vec![1.0; 4]).map_err(|e| method(&e))?;
+    let front = minimize(&bounds, 2, nsga, |x: &[f64]| {
+        let c = ct_fit.surface.predict(x)?;
+        let e = eta_fit.surface.predict(x)?;
+        Ok::<_, crate::optimize::rsm::RsmError>(vec![-c, -e])
+    })
+    .map_err(|e| method(&e))?
+    .front;
+    let predicted = |o: &[f64]| {
+        weights.thrust * -o[0] / reference.ct + weights.efficiency * -o[1] / reference.efficiency
+    };
+    let knee = front
+        .iter()
+        .max_by(|a, b| predicted(&a.objectives).total_cmp(&predicted(&b.objectives)))
+        .ok_or_else(|| KinematicError::Method("NSGA-II returned an empty front".into()))?;
+    let rsm_design = space.decode(&knee.x);
+    let pareto = front
+        .iter()
+        .map(|i| (space.decode(&i.x), -i.objectives[0], -i.objectives[1]))
+        .collect();
+
+    // Confirmations.
+    let confirmations: Vec<Evaluated> = [anom_design, rsm_design]
+        .par_iter()
+        .map(|&d| run(d))
+        .collect();
+    let candidate = |method: &str, predicted: Option<f64>, confirmation: Evaluated| Candidate {
+        method: method.to_string(),
+        predicted,
+        combined: score(&confirmation),
+        confirmation,
+    };
+    let mut confirmations = confirmations.into_iter();
+    let candidates = vec![
+        candidate("best L18 row", None, runs[best_row].clone()),
+        candidate(
+            "ANOM",
+            Some(anom_prediction),
+            confirmations.next().unwrap_or_else(|| run(anom_design)),
+        ),
+        candidate(
+            "RSM + NSGA-II",
+            Some(predicted(&knee.objectives)),
+            confirmations.next().unwrap_or_else(|| run(rsm_design)),
+        ),
+    ];
+    let initial_score = weights.thrust + weights.efficiency;
+    let chosen = (0..candidates.len())
+        .filter(|&i| candidates[i].combined.is_some_and(|s| s > initial_score))
+        .max_by(|&a, &b| {
+            let s = |i: usize| candidates[i].combined.unwrap_or(f64::NEG_INFINITY);
+            s(a).total_cmp(&s(b))
+        });
+    let quality = |f: &crate::optimize::rsm::ReducedFit| {
+        (
+            f.surface.r_squared,
+            f.surface.adjusted_r_squared,
+            f.surface.press,
+        )
+    };
+    Ok(KinematicResult {
+        initial,
+        runs,
+        level_means: anom.level_means.clone(),
+        surface_quality: [quality(&ct_fit), quality(&eta_fit)],
+        pareto,
+        candidates,
+        chosen,
+    })
+}
