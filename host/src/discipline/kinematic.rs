@@ -28,6 +28,7 @@ use crate::optimize::doe::{l18_quadratic_columns, OrthogonalArray};
 use crate::optimize::nsga2::{minimize, Bounds, Nsga2Config};
 use crate::optimize::rsm::{fit_reduced, ReduceOptions};
 
+use super::cache::EvaluationCache;
 use super::section::{SectionCase, SectionResult};
 
 /// The four design variables and their three levels (physical units:
@@ -156,20 +157,31 @@ pub struct Weights {
 }
 
 /// Runs the discipline on `case` over `space` from `initial` physical
-/// values.
+/// values; `cache` supplies evaluations already done and receives the new
+/// ones.
 pub fn optimize(
     case: &SectionCase,
     space: &DesignSpace,
     initial: [f64; 4],
     weights: Weights,
     nsga: &Nsga2Config,
+    cache: &EvaluationCache,
 ) -> Result<KinematicResult, KinematicError> {
     let method = |e: &dyn std::fmt::Display| KinematicError::Method(e.to_string());
-    let run = |design: [f64; 4]| Evaluated {
-        design,
-        result: case
-            .evaluate(&DesignSpace::kinematics(&design))
-            .map_err(|e| e.to_string()),
+    let run = |design: [f64; 4]| {
+        let result = match cache.get(case, &design) {
+            Some(r) => Ok(r),
+            None => {
+                let r = case
+                    .evaluate(&DesignSpace::kinematics(&design))
+                    .map_err(|e| e.to_string());
+                if let Ok(r) = &r {
+                    cache.insert(case, &design, *r);
+                }
+                r
+            }
+        };
+        Evaluated { design, result }
     };
     let initial = run(initial);
     let reference = initial.result.clone().map_err(KinematicError::Initial)?;

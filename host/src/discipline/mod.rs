@@ -2,10 +2,13 @@
 //! chooses the flapping kinematics on 2D unsteady analyses of the deforming
 //! mid-span section, and (to come) the structural discipline.
 //!
+//! - [`kinematic`]: the discipline: L18, ANOM, RSM + NSGA-II candidates.
+//! - [`cache`]: evaluations keyed by their inputs, reused on a rerun.
 //! - [`section`]: one evaluation of the aerodynamic discipline: given
 //!   flapping kinematics, the mid-span section's flapping motion and its
 //!   deformation from the system analysis, an [`crate::aero2d`] run and its
 //!   cycle-mean thrust, power and efficiency.
 
+pub mod cache;
 pub mod kinematic;
 pub mod section;

@@ -1,0 +1,139 @@
+//! Evaluations keyed by their inputs, so a rerun (or a resumed design
+//! run) reuses every 2D analysis already done. The key is a 64-bit FNV-1a
+//! hash of the evaluation's inputs serialized as JSON (the section case and
+//! the design values), stable across runs and platforms; the file is JSON,
+//! written atomically.
+
+use std::collections::HashMap;
+use std::path::Path;
+use std::sync::Mutex;
+
+use serde::{Deserialize, Serialize};
+
+use super::section::{SectionCase, SectionResult};
+
+/// Why the cache file could not be read or written.
+#[derive(Debug, thiserror::Error)]
+pub enum CacheError {
+    /// Reading or writing the file.
+    #[error("evaluation cache {path}: {source}")]
+    Io {
+        /// The file.
+        path: String,
+        /// Cause.
+        source: std::io::Error,
+    },
+    /// Not a cache file.
+    #[error("evaluation cache {path}: {message}")]
+    Format {
+        /// The file.
+        path: String,
+        /// What is wrong.
+        message: String,
+    },
+}
+
+/// Finished evaluations by key.
+#[derive(Debug, Default)]
+pub struct EvaluationCache {
+    entries: Mutex<HashMap<String, SectionResult>>,
+}
+
+#[derive(Serialize, Deserialize)]
+struct CacheFile {
+    format: String,
+    entries: HashMap<String, SectionResult>,
+}
+
+const FORMAT: &str = "fwav-evaluations-1";
+
+impl EvaluationCache {
+    /// An empty cache.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Loads `path`; a missing file is an empty cache.
+    pub fn load(path: &Path) -> Result<Self, CacheError> {
+        let text = match std::fs::read_to_string(path) {
+            Ok(t) => t,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Self::new()),
+            Err(source) => {
+                return Err(CacheError::Io {
+                    path: path.display().to_string(),
+                    source,
+                })
+            }
+        };
+        let file: CacheFile = serde_json::from_str(&text).map_err(|e| CacheError::Format {
+            path: path.display().to_string(),
+            message: e.to_string(),
+        })?;
+        if file.format != FORMAT {
+            return Err(CacheError::Format {
+                path: path.display().to_string(),
+                message: format!("format {:?}, expected {FORMAT:?}", file.format),
+            });
+        }
+        Ok(Self {
+            entries: Mutex::new(file.entries),
+        })
+    }
+
+    /// Writes the cache to `path` atomically.
+    pub fn save(&self, path: &Path) -> Result<(), CacheError> {
+        let io = |source| CacheError::Io {
+            path: path.display().to_string(),
+            source,
+        };
+        let entries = self.lock().clone();
+        let text = serde_json::to_string(&CacheFile {
+            format: FORMAT.to_string(),
+            entries,
+        })
+        .map_err(|e| CacheError::Format {
+            path: path.display().to_string(),
+            message: e.to_string(),
+        })?;
+        let temporary = path.with_extension("partial");
+        std::fs::write(&temporary, text).map_err(io)?;
+        std::fs::rename(&temporary, path).map_err(io)
+    }
+
+    /// Number of stored evaluations.
+    pub fn len(&self) -> usize {
+        self.lock().len()
+    }
+
+    /// Whether nothing is stored.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The stored result for these inputs, if any.
+    pub fn get(&self, case: &SectionCase, design: &[f64; 4]) -> Option<SectionResult> {
+        self.lock().get(&key(case, design)).copied()
+    }
+
+    /// Stores a result.
+    pub fn insert(&self, case: &SectionCase, design: &[f64; 4], result: SectionResult) {
+        self.lock().insert(key(case, design), result);
+    }
+
+    fn lock(&self) -> std::sync::MutexGuard<'_, HashMap<String, SectionResult>> {
+        // A panic while holding the lock cannot leave the map half
+        // written (single inserts), so a poisoned lock is still usable.
+        self.entries.lock().unwrap_or_else(|e| e.into_inner())
+    }
+}
+
+/// The key of an evaluation: FNV-1a of its inputs' JSON, hex.
+pub fn key(case: &SectionCase, design: &[f64; 4]) -> String {
+    let text = serde_json::json!({ "case": case, "design": design }).to_string();
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for b in text.bytes() {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0100_0000_01b3);
+    }
+    format!("{h:016x}")
+}
