@@ -9,6 +9,7 @@ use clap::{Parser, Subcommand};
 mod cli {
     pub mod aero;
     pub mod fly;
+    pub mod kinematics;
     pub mod system;
 }
 use fwav::profile_file::ProfileFile;
@@ -45,6 +46,10 @@ enum Command {
     /// vortex lattice + shell): thrust, power, efficiency, and the section
     /// and pressure histories the design disciplines take.
     SystemAnalysis(cli::system::SystemArgs),
+    /// The aerodynamic discipline: choose the flapping kinematics (L18,
+    /// ANOM, response surfaces + NSGA-II, confirmation runs) on 2D analyses
+    /// of the deforming mid-span section.
+    Kinematics(cli::kinematics::KinematicsArgs),
     /// List serial ports, marking those where an fwav device answers.
     Ports {
         /// Machine-readable output.
@@ -128,6 +133,7 @@ fn main() -> ExitCode {
         }
         Command::Aero2d(args) => cli::aero::run(&args),
         Command::SystemAnalysis(args) => cli::system::run_command(&args),
+        Command::Kinematics(args) => cli::kinematics::run_command(&args),
         Command::Ports { json } => cli::fly::ports(json),
         Command::Upload {
             port,

@@ -229,3 +229,37 @@ fn system_analysis_writes_what_the_disciplines_take() {
     assert!(stderr.contains("kinematics.amplitude_deg"), "{stderr}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `fwav kinematics`: the discipline on the built-in rigid section, JSON
+/// out, its evaluations kept in a cache file and all reused by a rerun; a
+/// bad `[design]` level set is named.
+#[test]
+fn kinematics_runs_the_discipline_and_reuses_its_evaluations() {
+    let dir = std::env::temp_dir().join(format!("fwav-kinematics-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let cache = dir.join("evaluations.json");
+    let run = || {
+        let out = fwav(&["kinematics", "--cache", cache.to_str().unwrap(), "--json"]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice::<serde_json::Value>(&out.stdout).unwrap()
+    };
+    let first = run();
+    assert_eq!(first["evaluations_reused"], 0);
+    assert_eq!(first["result"]["runs"].as_array().unwrap().len(), 18);
+    assert_eq!(first["result"]["candidates"].as_array().unwrap().len(), 3);
+    let second = run();
+    assert!(second["evaluations_reused"].as_u64().unwrap() >= 20);
+    assert_eq!(first["result"]["chosen"], second["result"]["chosen"]);
+
+    let config = dir.join("bad.toml");
+    std::fs::write(&config, "[design]\namplitude_deg = [40.0, 30.0, 20.0]\n").unwrap();
+    let bad = fwav(&["kinematics", "--config", config.to_str().unwrap()]);
+    assert!(!bad.status.success());
+    let stderr = String::from_utf8_lossy(&bad.stderr);
+    assert!(stderr.contains("design.amplitude_deg"), "{stderr}");
+    std::fs::remove_dir_all(&dir).ok();
+}

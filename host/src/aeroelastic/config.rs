@@ -131,6 +131,42 @@ impl Default for FlightConfig {
     }
 }
 
+/// The `[design]` table: the kinematic optimization's levels (low,
+/// initial, high) and the weights of its combined objective.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct DesignConfig {
+    /// Flapping frequency levels, Hz.
+    pub frequency_hz: [f64; 3],
+    /// Flapping amplitude levels, degrees.
+    pub amplitude_deg: [f64; 3],
+    /// Mean flapping angle levels, degrees.
+    pub mean_angle_deg: [f64; 3],
+    /// Stroke-plane inclination levels, degrees.
+    pub stroke_plane_deg: [f64; 3],
+    /// Weight of the relative thrust gain in the combined objective.
+    pub thrust_weight: f64,
+    /// Weight of the relative efficiency gain.
+    pub efficiency_weight: f64,
+    /// Seed of the genetic algorithm.
+    pub seed: u64,
+}
+
+impl Default for DesignConfig {
+    fn default() -> Self {
+        let s = crate::discipline::kinematic::DesignSpace::fwav();
+        Self {
+            frequency_hz: s.frequency_hz,
+            amplitude_deg: s.amplitude_deg,
+            mean_angle_deg: s.mean_angle_deg,
+            stroke_plane_deg: s.stroke_plane_deg,
+            thrust_weight: 1.0,
+            efficiency_weight: 1.0,
+            seed: 1,
+        }
+    }
+}
+
 /// The whole file.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -143,6 +179,8 @@ pub struct SystemConfig {
     pub flight: FlightConfig,
     /// Solver settings.
     pub analysis: SystemSettings,
+    /// The kinematic optimization.
+    pub design: DesignConfig,
 }
 
 impl SystemConfig {
@@ -249,6 +287,61 @@ impl SystemConfig {
                 });
             }
         }
+        let d = &self.design;
+        let level_sets: [(&'static str, [f64; 3], f64, f64, &'static str); 4] = [
+            (
+                "design.frequency_hz",
+                d.frequency_hz,
+                0.1,
+                200.0,
+                "increasing, in [0.1, 200] Hz",
+            ),
+            (
+                "design.amplitude_deg",
+                d.amplitude_deg,
+                0.0,
+                80.0,
+                "increasing, in [0, 80] deg",
+            ),
+            (
+                "design.mean_angle_deg",
+                d.mean_angle_deg,
+                -60.0,
+                60.0,
+                "increasing, in [-60, 60] deg",
+            ),
+            (
+                "design.stroke_plane_deg",
+                d.stroke_plane_deg,
+                0.0,
+                180.0,
+                "increasing, in [0, 180] deg",
+            ),
+        ];
+        for (field, levels, low, high, range) in level_sets {
+            let inside = levels
+                .iter()
+                .all(|v| v.is_finite() && (low..=high).contains(v));
+            if !(inside && levels[0] < levels[1] && levels[1] < levels[2]) {
+                return Err(ConfigError::Range {
+                    field,
+                    value: levels[0],
+                    range,
+                });
+            }
+        }
+        for (field, w) in [
+            ("design.thrust_weight", d.thrust_weight),
+            ("design.efficiency_weight", d.efficiency_weight),
+        ] {
+            if !(w.is_finite() && (0.0..=100.0).contains(&w)) {
+                return Err(ConfigError::Range {
+                    field,
+                    value: w,
+                    range: "[0, 100]",
+                });
+            }
+        }
         let rho = f.density_kg_m3;
         if !(rho.is_finite() && (0.01..=2000.0).contains(&rho)) {
             return Err(ConfigError::Range {
@@ -293,6 +386,17 @@ impl SystemConfig {
             amplitude: k.amplitude_deg.to_radians(),
             mean_angle: k.mean_angle_deg.to_radians(),
             stroke_plane: k.stroke_plane_deg.to_radians(),
+        }
+    }
+
+    /// The kinematic design space.
+    pub fn design_space(&self) -> crate::discipline::kinematic::DesignSpace {
+        let d = &self.design;
+        crate::discipline::kinematic::DesignSpace {
+            frequency_hz: d.frequency_hz,
+            amplitude_deg: d.amplitude_deg,
+            mean_angle_deg: d.mean_angle_deg,
+            stroke_plane_deg: d.stroke_plane_deg,
         }
     }
 

@@ -1,0 +1,162 @@
+//! `fwav kinematics`: the aerodynamic discipline alone — the flapping
+//! kinematics chosen on 2D analyses of the mid-span section.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use anyhow::{Context, Result};
+use fwav::aeroelastic::config::SystemConfig;
+use fwav::discipline::cache::EvaluationCache;
+use fwav::discipline::kinematic::{optimize, Weights};
+use fwav::discipline::section::SectionCase;
+use fwav::optimize::nsga2::Nsga2Config;
+
+/// The command's options.
+#[derive(clap::Args)]
+pub struct KinematicsArgs {
+    /// Configuration (TOML; [wing], [kinematics] (the initial design),
+    /// [flight] and [design] (levels and weights) are used); the built-in
+    /// FWAV when not given.
+    #[arg(long)]
+    pub config: Option<PathBuf>,
+    /// The mid-span section's deformation over a cycle (`section.json` of
+    /// `fwav system-analysis --out`); a rigid flat section when not given.
+    #[arg(long)]
+    pub section: Option<PathBuf>,
+    /// Keep evaluations in this file and reuse them on a rerun.
+    #[arg(long)]
+    pub cache: Option<PathBuf>,
+    /// Everything (runs, level means, surfaces, Pareto front, candidates)
+    /// as JSON on standard output.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(serde::Deserialize)]
+struct SectionFile {
+    samples: Vec<Vec<[f64; 2]>>,
+}
+
+/// Runs the command.
+pub fn run_command(a: &KinematicsArgs) -> Result<()> {
+    let config = match &a.config {
+        Some(path) => {
+            let text = std::fs::read_to_string(path)
+                .with_context(|| format!("reading {}", path.display()))?;
+            SystemConfig::from_toml(&text).with_context(|| format!("{}", path.display()))?
+        }
+        None => SystemConfig::default(),
+    };
+    let planform = config.planform();
+    let radius = 0.5 * planform.semi_span;
+    let mut case = SectionCase {
+        chord: planform.chord(radius),
+        radius,
+        flight: config.flight(),
+        ..SectionCase::fwav_mid_span()
+    };
+    if let Some(path) = &a.section {
+        let text =
+            std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+        let file: SectionFile = serde_json::from_str(&text)
+            .with_context(|| format!("{}: not a section history", path.display()))?;
+        case.deformation = file.samples;
+    }
+    let cache = match &a.cache {
+        Some(path) => EvaluationCache::load(path)?,
+        None => EvaluationCache::new(),
+    };
+    let reused = cache.len();
+    let k = &config.kinematics;
+    let initial = [
+        k.frequency_hz,
+        k.amplitude_deg,
+        k.mean_angle_deg,
+        k.stroke_plane_deg,
+    ];
+    let weights = Weights {
+        thrust: config.design.thrust_weight,
+        efficiency: config.design.efficiency_weight,
+    };
+    let nsga = Nsga2Config {
+        seed: config.design.seed,
+        ..Nsga2Config::default()
+    };
+    let started = Instant::now();
+    let result = optimize(
+        &case,
+        &config.design_space(),
+        initial,
+        weights,
+        &nsga,
+        &cache,
+    )?;
+    let seconds = started.elapsed().as_secs_f64();
+    if let Some(path) = &a.cache {
+        cache.save(path)?;
+    }
+    if a.json {
+        let out = serde_json::json!({
+            "section": { "chord_m": case.chord, "radius_m": case.radius, "deforming": !case.deformation.is_empty() },
+            "design_variables": ["frequency_hz", "amplitude_deg", "mean_angle_deg", "stroke_plane_deg"],
+            "seed": config.design.seed,
+            "seconds": seconds,
+            "evaluations_reused": reused,
+            "result": result,
+        });
+        println!("{out:#}");
+        return Ok(());
+    }
+    let show = |d: &[f64; 4]| {
+        format!(
+            "{:.2} Hz, ±{:.1}°, mean {:+.1}°, stroke plane {:.1}°",
+            d[0], d[1], d[2], d[3]
+        )
+    };
+    if let Ok(r) = &result.initial.result {
+        println!(
+            "initial   {}: CT {:.4}, efficiency {:.3}",
+            show(&result.initial.design),
+            r.ct,
+            r.efficiency
+        );
+    }
+    for c in &result.candidates {
+        match &c.confirmation.result {
+            Ok(r) => println!(
+                "{:<13} {}: CT {:.4}, efficiency {:.3}, combined {:.3}{}",
+                c.method,
+                show(&c.confirmation.design),
+                r.ct,
+                r.efficiency,
+                c.combined.unwrap_or(f64::NAN),
+                c.predicted
+                    .map(|p| format!(" (predicted {p:.3})"))
+                    .unwrap_or_default()
+            ),
+            Err(e) => println!(
+                "{:<13} {}: failed: {e}",
+                c.method,
+                show(&c.confirmation.design)
+            ),
+        }
+    }
+    let failed = result.runs.iter().filter(|r| r.result.is_err()).count();
+    println!(
+        "surfaces: R² CT {:.3}, efficiency {:.3}; {} Pareto points; {} of 18 array runs failed",
+        result.surface_quality[0].0,
+        result.surface_quality[1].0,
+        result.pareto.len(),
+        failed
+    );
+    match result.chosen {
+        Some(i) => println!(
+            "chosen: {} ({})",
+            result.candidates[i].method,
+            show(&result.candidates[i].confirmation.design)
+        ),
+        None => println!("chosen: the initial design (no candidate beats it)"),
+    }
+    println!("{seconds:.1} s, {reused} evaluations reused");
+    Ok(())
+}
