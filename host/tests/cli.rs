@@ -254,6 +254,25 @@ fn kinematics_runs_the_discipline_and_reuses_its_evaluations() {
     let second = run();
     assert!(second["evaluations_reused"].as_u64().unwrap() >= 20);
     assert_eq!(first["result"]["chosen"], second["result"]["chosen"]);
+    let plots = dir.join("plots");
+    let out = fwav(&[
+        "kinematics",
+        "--cache",
+        cache.to_str().unwrap(),
+        "--plot",
+        plots.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for png in ["main-effects.png", "pareto.png"] {
+        assert!(
+            std::fs::metadata(plots.join(png)).unwrap().len() > 1000,
+            "{png}"
+        );
+    }
 
     let config = dir.join("bad.toml");
     std::fs::write(&config, "[design]\namplitude_deg = [40.0, 30.0, 20.0]\n").unwrap();

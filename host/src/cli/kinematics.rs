@@ -26,6 +26,9 @@ pub struct KinematicsArgs {
     /// Keep evaluations in this file and reuse them on a rerun.
     #[arg(long)]
     pub cache: Option<PathBuf>,
+    /// Draw `main-effects.png` and `pareto.png` into this directory.
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
     /// Everything (runs, level means, surfaces, Pareto front, candidates)
     /// as JSON on standard output.
     #[arg(long)]
@@ -94,6 +97,15 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     let seconds = started.elapsed().as_secs_f64();
     if let Some(path) = &a.cache {
         cache.save(path)?;
+    }
+    if let Some(dir) = &a.plot {
+        std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+        fwav::discipline::plot::main_effects(
+            &result,
+            &config.design_space(),
+            &dir.join("main-effects.png"),
+        )?;
+        fwav::discipline::plot::pareto(&result, &dir.join("pareto.png"))?;
     }
     if a.json {
         let out = serde_json::json!({

@@ -11,4 +11,5 @@
 
 pub mod cache;
 pub mod kinematic;
+pub mod plot;
 pub mod section;
