@@ -169,3 +169,43 @@ fn kinematic_discipline_beats_the_initial_design() {
     }
     std::fs::remove_file(&path).ok();
 }
+
+/// A failed evaluation is recorded with its reason and the discipline goes
+/// on: with the stroke plane's high level at 190° (outside the kinematics'
+/// range) the six array runs at that level fail, say why, count as the
+/// worst response, and the candidates are still found and confirmed.
+#[test]
+fn failed_evaluations_are_recorded_and_the_discipline_goes_on() {
+    use fwav::discipline::cache::EvaluationCache;
+    use fwav::discipline::kinematic::{optimize, DesignSpace, Weights};
+    use fwav::optimize::nsga2::Nsga2Config;
+    let space = DesignSpace {
+        stroke_plane_deg: [70.0, 90.0, 190.0],
+        ..DesignSpace::fwav()
+    };
+    let result = optimize(
+        &SectionCase::fwav_mid_span(),
+        &space,
+        [11.0, 30.0, 0.0, 90.0],
+        Weights {
+            thrust: 1.0,
+            efficiency: 1.0,
+        },
+        &Nsga2Config {
+            generations: 50,
+            ..Nsga2Config::default()
+        },
+        &EvaluationCache::new(),
+    )
+    .unwrap();
+    let failed: Vec<&String> = result
+        .runs
+        .iter()
+        .filter_map(|r| r.result.as_ref().err())
+        .collect();
+    println!("{} failed runs, e.g. {:?}", failed.len(), failed.first());
+    assert_eq!(failed.len(), 6);
+    assert!(failed.iter().all(|e| e.contains("stroke_plane")));
+    assert_eq!(result.candidates.len(), 3);
+    assert!(result.candidates[0].combined.is_some());
+}

@@ -43,7 +43,7 @@ pub enum KinematicsError {
     OutOfRange {
         /// The field name.
         field: &'static str,
-        /// Its value (SI).
+        /// Its value, in the unit of `range` (Hz or degrees).
         value: f64,
         /// The allowed range, as text.
         range: &'static str,
@@ -84,6 +84,11 @@ impl FlappingKinematics {
         ];
         for (field, value, low, high, range) in checks {
             if !(value.is_finite() && (low..=high).contains(&value)) {
+                let value = if field == "frequency" {
+                    value
+                } else {
+                    value.to_degrees()
+                };
                 return Err(KinematicsError::OutOfRange {
                     field,
                     value,
