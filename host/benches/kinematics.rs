@@ -50,8 +50,6 @@ fn main() {
     println!(
         "aerodynamic discipline, deforming FWAV mid-span section: {:.2} s (chosen: {:?})",
         started.elapsed().as_secs_f64(),
-        result
-            .chosen
-            .map(|i| result.candidates[i].method.clone())
+        result.chosen.map(|i| result.candidates[i].method.clone())
     );
 }
