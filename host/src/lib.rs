@@ -24,4 +24,5 @@ pub mod optimize;
 pub mod port;
 pub mod profile_file;
 pub mod shell;
+pub mod topology;
 pub mod uvlm;

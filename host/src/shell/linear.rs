@@ -49,6 +49,23 @@ impl LinearStatic {
         })
     }
 
+    /// Assembles element matrices (global axes, one per element) and
+    /// factorizes, on an existing structure: for callers that build the
+    /// element stiffnesses themselves (topology optimization combines two
+    /// kept layer matrices instead of integrating each iteration).
+    pub fn from_element_matrices(
+        structure: Arc<Structure>,
+        matrices: &[super::element::ElementMatrix],
+    ) -> Result<Self, AssemblyError> {
+        let stiffness = structure.assemble(matrices)?;
+        let factor = structure.factorize(&stiffness)?;
+        Ok(Self {
+            structure,
+            stiffness,
+            factor,
+        })
+    }
+
     /// The structure (pattern and symbolic factorization).
     pub fn structure(&self) -> &Arc<Structure> {
         &self.structure

@@ -1,0 +1,244 @@
+//! Linear static SIMP topology optimization of the carbon design layer over
+//! many load cases (step 3 of ESLSO): minimize the sum of the strain
+//! energies (compliances) of all load cases under a mass constraint on the
+//! design layer, with the density filter of [`super::filter`] and the
+//! optimality-criteria update (Andreassen et al. 2011, "top88", eqs. 2–5
+//! and the OC bisection; Bendsøe & Sigmund 2003, §1.2).
+//!
+//! An element's section is the mylar skin plus the carbon layer with
+//! stiffness `rho^p` and mass `rho` ([`Section::two_layer`]); the element
+//! stiffness is linear in the section, so `dK_e/drho = p rho^(p-1)
+//! K_carbon,e` and the sensitivity of `C = sum_l f_l . u_l` is `-2 p
+//! rho^(p-1) sum_l U_carbon,e(u_l)` with `U_carbon,e` the strain energy of
+//! the element's carbon layer alone. One factorization an iteration serves
+//! every load case.
+
+use std::sync::Arc;
+
+use serde::{Deserialize, Serialize};
+
+use rayon::prelude::*;
+
+use crate::shell::assembly::{element_dofs, AssemblyError};
+use crate::shell::element::{self, ElementMatrix, ElementVector};
+use crate::shell::linear::LinearStatic;
+use crate::shell::material::{Layer, Section};
+use crate::shell::mesh::ShellMesh;
+use crate::shell::structure::Structure;
+
+use super::filter::DensityFilter;
+
+/// Settings of the optimization.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SimpSettings {
+    /// SIMP penalty `p` (seed paper: 3).
+    pub penalty: f64,
+    /// Carbon mass allowed, as a fraction of the full design layer's.
+    pub mass_fraction: f64,
+    /// Density filter radius, m.
+    pub filter_radius: f64,
+    /// Largest change of a design variable in one iteration.
+    pub move_limit: f64,
+    /// Iterations allowed.
+    pub max_iterations: usize,
+    /// Stop when no design variable changes by more than this.
+    pub tolerance: f64,
+}
+
+impl Default for SimpSettings {
+    /// Penalty 3, 30% mass, 5 mm filter, move 0.2, 100 iterations, 0.01.
+    fn default() -> Self {
+        Self {
+            penalty: 3.0,
+            mass_fraction: 0.3,
+            filter_radius: 0.005,
+            move_limit: 0.2,
+            max_iterations: 100,
+            tolerance: 0.01,
+        }
+    }
+}
+
+/// One iteration's record.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SimpIteration {
+    /// Sum of the load cases' compliances `f . u`, J.
+    pub objective: f64,
+    /// Carbon mass over the full design layer's.
+    pub mass_fraction: f64,
+    /// Largest change of a design variable.
+    pub change: f64,
+}
+
+/// The outcome.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SimpResult {
+    /// Physical (filtered) densities per element.
+    pub densities: Vec<f64>,
+    /// Every iteration.
+    pub history: Vec<SimpIteration>,
+    /// Whether the change fell below the tolerance.
+    pub converged: bool,
+}
+
+/// Why the optimization stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum SimpError {
+    /// Assembly, factorization or a length mismatch.
+    #[error(transparent)]
+    Assembly(#[from] AssemblyError),
+    /// A setting out of range.
+    #[error("SIMP setting: {0}")]
+    Setting(String),
+}
+
+/// Minimizes the summed compliance of `loads` (global 6-DOF vectors, N) on
+/// `mesh` with `fixed` DOFs held, over the carbon densities of the elements
+/// flagged in `design` (the others stay full carbon), starting from the
+/// uniform design at the mass fraction.
+pub fn optimize(
+    mesh: &ShellMesh,
+    fixed: &[usize],
+    design: &[bool],
+    carbon: &Layer,
+    skin: &Layer,
+    loads: &[Vec<f64>],
+    settings: &SimpSettings,
+) -> Result<SimpResult, SimpError> {
+    let s = settings;
+    let ok = s.penalty >= 1.0
+        && s.mass_fraction > 0.0
+        && s.mass_fraction <= 1.0
+        && s.filter_radius > 0.0
+        && s.move_limit > 0.0
+        && s.move_limit <= 1.0
+        && s.tolerance > 0.0;
+    if !ok || design.len() != mesh.elements.len() || loads.is_empty() {
+        return Err(SimpError::Setting(format!(
+            "{s:?} with {} design flags for {} elements and {} load cases",
+            design.len(),
+            mesh.elements.len(),
+            loads.len()
+        )));
+    }
+    let n = mesh.elements.len();
+    let area: Vec<f64> = (0..n)
+        .map(|e| {
+            let x = mesh.corners(e);
+            0.5 * (x[2] - x[0]).cross(&(x[3] - x[1])).norm()
+        })
+        .collect();
+    let design_area: f64 = (0..n).filter(|&e| design[e]).map(|e| area[e]).sum();
+    let filter = DensityFilter::new(mesh, s.filter_radius);
+    let structure = Arc::new(Structure::new(mesh, fixed)?);
+    // The carbon layer's element stiffnesses do not change: computed once
+    // (24 x 24 each), they give every load case's carbon strain energy.
+    let carbon_section = Section::single(carbon);
+    let carbon_k: Vec<ElementMatrix> = (0..n)
+        .into_par_iter()
+        .map(|e| element::stiffness(&mesh.corners(e), &carbon_section))
+        .collect();
+    // The element stiffness is linear in the section: skin plus rho^p
+    // carbon, combined from the two kept matrices each iteration.
+    let skin_section = Section::single(skin);
+    let skin_k: Vec<ElementMatrix> = (0..n)
+        .into_par_iter()
+        .map(|e| element::stiffness(&mesh.corners(e), &skin_section))
+        .collect();
+    let dofs: Vec<[usize; 24]> = (0..n).map(|e| element_dofs(mesh, e)).collect();
+    let fix = |rho: &mut [f64]| {
+        for (r, &d) in rho.iter_mut().zip(design) {
+            if !d {
+                *r = 1.0;
+            }
+        }
+    };
+    let mass = |rho: &[f64]| {
+        (0..n)
+            .filter(|&e| design[e])
+            .map(|e| rho[e] * area[e])
+            .sum::<f64>()
+            / design_area
+    };
+    let mut x = vec![s.mass_fraction; n];
+    let mut history = Vec::new();
+    let mut converged = false;
+    for _ in 0..s.max_iterations {
+        let mut rho = filter.apply(&x);
+        fix(&mut rho);
+        let matrices: Vec<ElementMatrix> = (0..n)
+            .into_par_iter()
+            .map(|e| skin_k[e] + carbon_k[e] * rho[e].powf(s.penalty))
+            .collect();
+        let model = LinearStatic::from_element_matrices(structure.clone(), &matrices)?;
+        let u = model.solve(loads)?;
+        let objective: f64 = loads
+            .iter()
+            .zip(&u)
+            .map(|(f, u)| f.iter().zip(u).map(|(a, b)| a * b).sum::<f64>())
+            .sum();
+        let mut d_rho: Vec<f64> = (0..n)
+            .into_par_iter()
+            .map(|e| {
+                let energy: f64 = u
+                    .iter()
+                    .map(|ul| {
+                        let ue = ElementVector::from_iterator(dofs[e].iter().map(|&g| ul[g]));
+                        0.5 * ue.dot(&(carbon_k[e] * ue))
+                    })
+                    .sum();
+                -2.0 * s.penalty * rho[e].powf(s.penalty - 1.0) * energy
+            })
+            .collect();
+        for e in 0..n {
+            if !design[e] {
+                d_rho[e] = 0.0;
+            }
+        }
+        let d_x = filter.back(&d_rho);
+        // Mass sensitivity through the filter: area of each element's share.
+        let d_mass = filter.back(&area);
+        // Optimality criteria: bisection on the multiplier of the mass.
+        let (mut low, mut high) = (0.0f64, 1e12f64);
+        let mut next = x.clone();
+        while (high - low) / (high + low).max(1e-300) > 1e-6 {
+            let mid = 0.5 * (low + high);
+            for e in 0..n {
+                if !design[e] {
+                    continue;
+                }
+                let scale = (-d_x[e] / (mid * d_mass[e])).max(0.0).sqrt();
+                next[e] = (x[e] * scale)
+                    .clamp(x[e] - s.move_limit, x[e] + s.move_limit)
+                    .clamp(0.0, 1.0);
+            }
+            let mut trial = filter.apply(&next);
+            fix(&mut trial);
+            if mass(&trial) > s.mass_fraction {
+                low = mid;
+            } else {
+                high = mid;
+            }
+        }
+        let change = (0..n)
+            .map(|e| (next[e] - x[e]).abs())
+            .fold(0.0f64, f64::max);
+        history.push(SimpIteration {
+            objective,
+            mass_fraction: mass(&rho),
+            change,
+        });
+        x = next;
+        if change < s.tolerance {
+            converged = true;
+            break;
+        }
+    }
+    let mut densities = filter.apply(&x);
+    fix(&mut densities);
+    Ok(SimpResult {
+        densities,
+        history,
+        converged,
+    })
+}
