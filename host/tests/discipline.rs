@@ -76,6 +76,28 @@ fn section_evaluation_refuses_bad_input() {
     ));
 }
 
+/// The discipline over the built-in design space from the initial design,
+/// equal weights, default NSGA-II, evaluations through `cache`.
+fn equal_weights(
+    case: &SectionCase,
+    cache: &fwav::discipline::cache::EvaluationCache,
+) -> fwav::discipline::kinematic::KinematicResult {
+    use fwav::discipline::kinematic::{optimize, DesignSpace, Weights};
+    use fwav::optimize::nsga2::Nsga2Config;
+    optimize(
+        case,
+        &DesignSpace::fwav(),
+        [11.0, 30.0, 0.0, 90.0],
+        Weights {
+            thrust: 1.0,
+            efficiency: 1.0,
+        },
+        &Nsga2Config::default(),
+        cache,
+    )
+    .unwrap()
+}
+
 /// The whole aerodynamic discipline on the FWAV's rigid mid-span section
 /// (L18 → best row, ANOM + confirmation, RSM + NSGA-II + confirmation):
 /// the chosen kinematics beat the initial design in the combined objective
@@ -84,23 +106,11 @@ fn section_evaluation_refuses_bad_input() {
 #[test]
 fn kinematic_discipline_beats_the_initial_design() {
     use fwav::discipline::cache::EvaluationCache;
-    use fwav::discipline::kinematic::{optimize, DesignSpace, Weights};
-    use fwav::optimize::nsga2::Nsga2Config;
+    use fwav::discipline::kinematic::DesignSpace;
     let case = SectionCase::fwav_mid_span();
     let cache = EvaluationCache::new();
     let started = std::time::Instant::now();
-    let result = optimize(
-        &case,
-        &DesignSpace::fwav(),
-        [11.0, 30.0, 0.0, 90.0],
-        Weights {
-            thrust: 1.0,
-            efficiency: 1.0,
-        },
-        &Nsga2Config::default(),
-        &cache,
-    )
-    .unwrap();
+    let result = equal_weights(&case, &cache);
     let seconds = started.elapsed().as_secs_f64();
     let initial = result.initial.result.as_ref().unwrap();
     println!(
@@ -144,18 +154,7 @@ fn kinematic_discipline_beats_the_initial_design() {
     let reloaded = EvaluationCache::load(&path).unwrap();
     assert_eq!(reloaded.len(), cache.len());
     let started = std::time::Instant::now();
-    let rerun = optimize(
-        &case,
-        &DesignSpace::fwav(),
-        [11.0, 30.0, 0.0, 90.0],
-        Weights {
-            thrust: 1.0,
-            efficiency: 1.0,
-        },
-        &Nsga2Config::default(),
-        &reloaded,
-    )
-    .unwrap();
+    let rerun = equal_weights(&case, &reloaded);
     println!(
         "rerun from the cache ({} evaluations): {:.2} s",
         reloaded.len(),
