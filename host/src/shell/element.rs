@@ -90,6 +90,21 @@ impl Frame {
         j
     }
 
+    /// At `(xi, eta)`: `det J`, `J^-1` and the Cartesian derivatives
+    /// `(N_i,x, N_i,y)` of the four shape functions; `None` where `J` is
+    /// singular (a degenerate point, skipped by the quadratures).
+    fn cartesian_derivatives(
+        &self,
+        xi: f64,
+        eta: f64,
+    ) -> Option<(f64, Matrix2<f64>, [nalgebra::Vector2<f64>; 4])> {
+        let (_, dxi, deta) = Self::shape(xi, eta);
+        let j = self.jacobian(&dxi, &deta);
+        let j_inv = j.try_inverse()?;
+        let d = std::array::from_fn(|i| j_inv * nalgebra::Vector2::new(dxi[i], deta[i]));
+        Some((j.determinant(), j_inv, d))
+    }
+
     /// 24 x 24 rotation of the element DOFs, global -> local.
     pub fn transformation(&self) -> ElementMatrix {
         let mut t = ElementMatrix::zeros();
@@ -140,15 +155,11 @@ fn membrane(frame: &Frame, a: &Matrix3<f64>, k: &mut ElementMatrix) {
     let mut kii = SMatrix::<f64, 4, 4>::zeros();
     for &xi in &GAUSS {
         for &eta in &GAUSS {
-            let (_, dxi, deta) = Frame::shape(xi, eta);
-            let j = frame.jacobian(&dxi, &deta);
-            let det = j.determinant();
-            let Some(j_inv) = j.try_inverse() else {
+            let Some((det, _, derivatives)) = frame.cartesian_derivatives(xi, eta) else {
                 continue;
             };
             let mut bc = SMatrix::<f64, 3, 8>::zeros();
-            for i in 0..4 {
-                let d = j_inv * nalgebra::Vector2::new(dxi[i], deta[i]);
+            for (i, d) in derivatives.iter().enumerate() {
                 bc[(0, 2 * i)] = d.x;
                 bc[(1, 2 * i + 1)] = d.y;
                 bc[(2, 2 * i)] = d.y;
@@ -216,15 +227,11 @@ fn plate(frame: &Frame, section: &Section, k: &mut ElementMatrix) {
     let mut kp = SMatrix::<f64, 12, 12>::zeros();
     for &xi in &GAUSS {
         for &eta in &GAUSS {
-            let (_, dxi, deta) = Frame::shape(xi, eta);
-            let j = frame.jacobian(&dxi, &deta);
-            let det = j.determinant();
-            let Some(j_inv) = j.try_inverse() else {
+            let Some((det, j_inv, derivatives)) = frame.cartesian_derivatives(xi, eta) else {
                 continue;
             };
             let mut bb = SMatrix::<f64, 3, 12>::zeros();
-            for i in 0..4 {
-                let dn = j_inv * nalgebra::Vector2::new(dxi[i], deta[i]);
+            for (i, dn) in derivatives.iter().enumerate() {
                 // kappa_x = beta_x,x; kappa_y = beta_y,y; kappa_xy = beta_x,y + beta_y,x.
                 bb[(0, 3 * i + 2)] = dn.x;
                 bb[(1, 3 * i + 1)] = -dn.y;
