@@ -267,16 +267,18 @@ pub fn gmsh(text: &str, default: Section) -> Result<ImportedMesh, ImportError> {
         card: "Gmsh block".into(),
         needed: 4,
     };
-    let start = find("$Nodes").ok_or(ImportError::Unsupported {
-        line: 0,
-        message: "no $Nodes section".into(),
-    })?;
-    let blocks = number(
-        start + 1,
-        0,
-        row(start + 1).first().ok_or(short(start + 1))?,
-    )? as usize;
-    let mut at = start + 2;
+    // A section opens with its tag, then a line whose first field is the
+    // number of entity blocks; the blocks start on the line after it.
+    let section = |tag: &str| -> Result<(usize, usize), ImportError> {
+        let start = find(tag).ok_or(ImportError::Unsupported {
+            line: 0,
+            message: format!("no {tag} section"),
+        })?;
+        let head = start + 1;
+        let blocks = number(head, 0, row(head).first().ok_or(short(head))?)? as usize;
+        Ok((blocks, start + 2))
+    };
+    let (blocks, mut at) = section("$Nodes")?;
     let mut ids = Vec::new();
     let mut nodes = Vec::new();
     for _ in 0..blocks {
@@ -304,16 +306,7 @@ pub fn gmsh(text: &str, default: Section) -> Result<ImportedMesh, ImportError> {
         at += 1 + 2 * count;
     }
     let index: HashMap<i64, usize> = ids.iter().enumerate().map(|(i, &id)| (id, i)).collect();
-    let start = find("$Elements").ok_or(ImportError::Unsupported {
-        line: 0,
-        message: "no $Elements section".into(),
-    })?;
-    let blocks = number(
-        start + 1,
-        0,
-        row(start + 1).first().ok_or(short(start + 1))?,
-    )? as usize;
-    let mut at = start + 2;
+    let (blocks, mut at) = section("$Elements")?;
     let (mut elements, mut element_ids) = (Vec::new(), Vec::new());
     for _ in 0..blocks {
         let head = row(at);
