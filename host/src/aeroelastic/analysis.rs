@@ -277,16 +277,17 @@ pub fn run(
         .collect();
     let mid_chord = planform.chord(mesh.nodes[section_nodes[0]].y);
 
+    // The loads at t = 0 (the frame's inertia on the undeformed wing) start
+    // the structure and are the first step's previous loads.
+    let mut load_previous = structure.as_ref().map_or(Vec::new(), |s| {
+        s.inertial_loads(&kinematics.motion(0.0), &zero, &zero)
+    });
     let mut state = match &structure {
         Some(s) => Some(s.start_deflected(
-            &s.inertial_loads(&kinematics.motion(0.0), &zero, &zero),
+            &load_previous,
             2.0 * std::f64::consts::PI * kinematics.frequency,
         )?),
         None => None,
-    };
-    let mut load_previous = match (&structure, &state) {
-        (Some(s), Some(_)) => s.inertial_loads(&kinematics.motion(0.0), &zero, &zero),
-        _ => Vec::new(),
     };
     let mut result = SystemResult {
         steps: Vec::with_capacity(total),
