@@ -5,7 +5,6 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{Context, Result};
-use fwav::aeroelastic::config::SystemConfig;
 use fwav::discipline::cache::EvaluationCache;
 use fwav::discipline::kinematic::{optimize, Weights};
 use fwav::discipline::section::SectionCase;
@@ -42,14 +41,7 @@ struct SectionFile {
 
 /// Runs the command.
 pub fn run_command(a: &KinematicsArgs) -> Result<()> {
-    let config = match &a.config {
-        Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .with_context(|| format!("reading {}", path.display()))?;
-            SystemConfig::from_toml(&text).with_context(|| format!("{}", path.display()))?
-        }
-        None => SystemConfig::default(),
-    };
+    let config = super::system::read_config(a.config.as_deref())?;
     let planform = config.planform();
     let radius = 0.5 * planform.semi_span;
     let mut case = SectionCase {

@@ -34,16 +34,19 @@ pub struct SystemArgs {
     pub quiet: bool,
 }
 
+/// The configuration file at `path`, checked, or the built-in FWAV's.
+pub fn read_config(path: Option<&Path>) -> Result<SystemConfig> {
+    let Some(path) = path else {
+        return Ok(SystemConfig::default());
+    };
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    SystemConfig::from_toml(&text).with_context(|| format!("{}", path.display()))
+}
+
 /// Runs the command.
 pub fn run_command(a: &SystemArgs) -> Result<()> {
-    let mut config = match &a.config {
-        Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .with_context(|| format!("reading {}", path.display()))?;
-            SystemConfig::from_toml(&text).with_context(|| format!("{}", path.display()))?
-        }
-        None => SystemConfig::default(),
-    };
+    let mut config = read_config(a.config.as_deref())?;
     if a.rigid {
         config.analysis.rigid = true;
     }
