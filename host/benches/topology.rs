@@ -2,7 +2,9 @@
 //! over the mylar skin, 41.7k DOFs) with 20 load cases (issue target
 //! < 0.3 s on 2 cores): assembly, one factorization, 20 solves, the
 //! carbon strain energies, the filter and the OC bisection. Runs 10
-//! iterations and reports the mean. `cargo bench -p fwav --bench topology`.
+//! iterations and reports the mean, the one-off setup (element matrices,
+//! pattern, nested-dissection ordering and symbolic analysis, filter)
+//! included. `cargo bench -p fwav --bench topology`.
 
 use std::time::Instant;
 

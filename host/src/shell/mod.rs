@@ -31,6 +31,7 @@ pub mod mesh;
 pub mod modal;
 pub mod nonlinear;
 pub mod nonlinear_dynamics;
+pub mod ordering;
 pub mod structure;
 pub mod vtu;
 pub mod wing;

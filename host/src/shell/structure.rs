@@ -1,46 +1,99 @@
 //! The sparsity structure of a mesh's stiffness over its free DOFs, built
 //! once per mesh and support: the compressed-column pattern (6 x 6 blocks
 //! of every pair of nodes sharing an element), where each element entry
-//! lands in it, and faer's symbolic Cholesky analysis (fill-reducing
-//! ordering and elimination tree). Assembling and factorizing a new
-//! stiffness on it (new densities, a new tangent) is then value-only work.
+//! lands in it, and the symbolic Cholesky analyses. Assembling and
+//! factorizing a new stiffness on it (new densities, a new tangent) is then
+//! value-only work.
+//!
+//! Two factorization paths share the structure:
+//!
+//! - [`Structure::assemble`] and [`Structure::factorize`]: the full
+//!   symmetric matrix and faer's [`Llt`] with its approximate minimum
+//!   degree ordering (the general path: linear, modal, dynamic and
+//!   nonlinear analyses).
+//! - [`Structure::ordered_layer`], [`Structure::assemble_ordered`] and
+//!   [`OrderedFactor`]: the lower triangle only, gathered in parallel
+//!   straight into the nested-dissection order of [`super::ordering`] from
+//!   scaled element matrices (skin plus `rho^p` carbon, say), factorized
+//!   sequentially into reused storage and solved for many load cases at
+//!   once, the load cases shared among the cores: the path of the SIMP
+//!   iterations, which factorize the same pattern a hundred times. On the
+//!   default wing the ordering cuts the factorization flops by a tenth and
+//!   its time by a quarter against AMD, and the sequential factorization
+//!   takes half the time of faer's default parallel one on two cores.
+//!
+//! Each path's symbolic analysis is made on its first use.
 
-use std::collections::BTreeSet;
+use std::sync::OnceLock;
 
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::sparse::linalg::cholesky::{
+    factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymmetricOrdering,
+};
 use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
-use faer::sparse::{SparseColMat, SymbolicSparseColMat};
-use faer::Side;
+use faer::sparse::{SparseColMat, SparseColMatRef, SymbolicSparseColMat};
+use faer::{Conj, Mat, MatMut, Par, Side};
 use rayon::prelude::*;
 
 use super::assembly::{element_dofs, AssemblyError, DofMap};
 use super::element::{self, ElementMatrix};
 use super::material::Section;
 use super::mesh::ShellMesh;
+use super::ordering;
 
 /// Marks an element entry on a fixed DOF.
 const FIXED: u32 = u32::MAX;
 
-/// Pattern, scatter map and symbolic factorization of one mesh + support.
+/// Pattern, scatter map and symbolic factorizations of one mesh + support.
 pub struct Structure {
     map: DofMap,
     pattern: SymbolicSparseColMat<usize>,
     /// For element `e`, entry `(a, b)` goes to value `scatter[576 e + 24 a + b]`.
     scatter: Vec<u32>,
-    symbolic: SymbolicLlt<usize>,
-    elements: usize,
+    /// faer's symbolic analysis (AMD ordering) for [`Self::factorize`].
+    symbolic: OnceLock<Result<SymbolicLlt<usize>, String>>,
+    /// The free DOFs in nested-dissection order.
+    order: Vec<usize>,
+    /// The lower triangle in that order, for [`Self::assemble_ordered`].
+    ordered: OnceLock<Result<Ordered, String>>,
+    /// The mesh's elements (corner nodes), for the ordered pattern.
+    connectivity: Vec<[usize; 4]>,
+}
+
+/// The lower triangle of the stiffness permuted to the nested-dissection
+/// order (`K_p = P K P^T`, row and column `k` the `k`-th eliminated free
+/// DOF), how element entries gather into it, and its symbolic Cholesky
+/// analysis (no further ordering).
+struct Ordered {
+    /// Compressed columns of the lower triangle of `K_p`, rows sorted.
+    pattern: SymbolicSparseColMat<usize>,
+    /// Value `q` of `pattern` sums the element entries
+    /// `gather[start[q]..start[q + 1]]`, each `576 e + a + 24 b` for entry
+    /// `(a, b)` of element `e` (the column-major storage of
+    /// [`ElementMatrix`]).
+    start: Vec<usize>,
+    gather: Vec<u32>,
+    /// Global DOF of each position in elimination order.
+    global: Vec<usize>,
+    symbolic: SymbolicCholesky<usize>,
 }
 
 impl Structure {
     /// Builds the structure of `mesh` with the global DOFs in `fixed` held.
-    /// Cost: `O(nnz log(row length))` plus faer's ordering.
+    /// Cost: `O(nnz log(row length))` plus the nested-dissection ordering;
+    /// the symbolic factorizations come on first use.
     pub fn new(mesh: &ShellMesh, fixed: &[usize]) -> Result<Self, AssemblyError> {
         let map = DofMap::new(mesh.dofs(), fixed)?;
-        let mut neighbours = vec![BTreeSet::new(); mesh.nodes.len()];
+        let mut neighbours = vec![Vec::new(); mesh.nodes.len()];
         for corners in &mesh.elements {
             for &a in corners {
                 neighbours[a].extend(corners.iter().copied());
             }
         }
+        neighbours.par_iter_mut().for_each(|near: &mut Vec<usize>| {
+            near.sort_unstable();
+            near.dedup();
+        });
         let n = map.free_count();
         let mut col_ptr = Vec::with_capacity(n + 1);
         let mut row_idx = Vec::new();
@@ -56,40 +109,54 @@ impl Structure {
                 col_ptr.push(row_idx.len());
             }
         }
+        if row_idx.len() >= FIXED as usize || 576 * mesh.elements.len() >= FIXED as usize {
+            return Err(AssemblyError::Sparse(format!(
+                "{} stiffness entries of {} elements exceed the 32-bit scatter map",
+                row_idx.len(),
+                mesh.elements.len()
+            )));
+        }
         let mut scatter = vec![FIXED; 576 * mesh.elements.len()];
         scatter
             .par_chunks_mut(576)
             .enumerate()
             .for_each(|(e, out)| {
-                let free = element_dofs(mesh, e).map(|g| map.free(g));
-                for (b, fb) in free.iter().enumerate() {
-                    let Some(fb) = fb else { continue };
-                    let rows = &row_idx[col_ptr[*fb]..col_ptr[fb + 1]];
-                    for (a, fa) in free.iter().enumerate() {
-                        if let Some(fa) = fa {
-                            // Present by construction (a and b share this element).
-                            if let Ok(k) = rows.binary_search(fa) {
-                                out[24 * a + b] = (col_ptr[*fb] + k) as u32;
-                            }
+                let corners = &mesh.elements[e];
+                for (b, fb) in element_dofs(mesh, e).iter().enumerate() {
+                    let Some(fb) = map.free(*fb) else { continue };
+                    let rows = &row_idx[col_ptr[fb]..col_ptr[fb + 1]];
+                    for (corner, &m) in corners.iter().enumerate() {
+                        // A node's free DOFs are consecutive rows: one search
+                        // a node, then the next row (present by
+                        // construction: the nodes share this element).
+                        let mut last: Option<usize> = None;
+                        for d in 0..6 {
+                            let Some(fa) = map.free(6 * m + d) else {
+                                continue;
+                            };
+                            let at = match last {
+                                Some(k) if rows.get(k + 1) == Some(&fa) => k + 1,
+                                _ => match rows.binary_search(&fa) {
+                                    Ok(k) => k,
+                                    Err(_) => continue,
+                                },
+                            };
+                            out[24 * (6 * corner + d) + b] = (col_ptr[fb] + at) as u32;
+                            last = Some(at);
                         }
                     }
                 }
             });
-        if row_idx.len() >= FIXED as usize {
-            return Err(AssemblyError::Sparse(format!(
-                "{} stiffness entries exceed the 32-bit scatter map",
-                row_idx.len()
-            )));
-        }
         let pattern = SymbolicSparseColMat::new_checked(n, n, col_ptr, None, row_idx);
-        let symbolic = SymbolicLlt::try_new(pattern.as_ref(), Side::Lower)
-            .map_err(|e| AssemblyError::Sparse(format!("{e:?}")))?;
+        let order = ordering::nested_dissection(mesh, &map)?;
         Ok(Self {
             map,
             pattern,
             scatter,
-            symbolic,
-            elements: mesh.elements.len(),
+            symbolic: OnceLock::new(),
+            order,
+            ordered: OnceLock::new(),
+            connectivity: mesh.elements.clone(),
         })
     }
 
@@ -104,10 +171,10 @@ impl Structure {
         &self,
         matrices: &[ElementMatrix],
     ) -> Result<SparseColMat<usize, f64>, AssemblyError> {
-        if matrices.len() != self.elements {
+        if matrices.len() != self.connectivity.len() {
             return Err(AssemblyError::Sections {
                 sections: matrices.len(),
-                elements: self.elements,
+                elements: self.connectivity.len(),
             });
         }
         let mut values = vec![0.0; self.pattern.row_idx().len()];
@@ -143,12 +210,405 @@ impl Structure {
         self.assemble(&matrices)
     }
 
-    /// Numeric Cholesky factorization of a matrix on this structure.
+    /// Numeric Cholesky factorization of a matrix on this structure
+    /// (faer's AMD ordering; its symbolic analysis is made on the first
+    /// call).
     pub fn factorize(
         &self,
         k: &SparseColMat<usize, f64>,
     ) -> Result<Llt<usize, f64>, AssemblyError> {
-        Llt::try_new_with_symbolic(self.symbolic.clone(), k.as_ref(), Side::Lower)
+        let symbolic = self
+            .symbolic
+            .get_or_init(|| {
+                SymbolicLlt::try_new(self.pattern.as_ref(), Side::Lower)
+                    .map_err(|e| format!("{e:?}"))
+            })
+            .as_ref()
+            .map_err(|e| AssemblyError::Sparse(e.clone()))?;
+        Llt::try_new_with_symbolic(symbolic.clone(), k.as_ref(), Side::Lower)
             .map_err(|e| AssemblyError::Singular(format!("{e:?}")))
+    }
+
+    /// The free DOFs in the nested-dissection elimination order of
+    /// [`ordering::nested_dissection`] (entry `k`: the free DOF index
+    /// eliminated `k`-th).
+    pub fn order(&self) -> &[usize] {
+        &self.order
+    }
+
+    /// Element matrices (one per element, global axes) laid out for
+    /// [`Self::assemble_ordered`]: each entry that lands on the lower
+    /// triangle, in the order the assembly reads them, so that assembling a
+    /// layer again and again with new scales streams through memory. The
+    /// first call builds the ordered pattern and its symbolic analysis.
+    pub fn ordered_layer(&self, matrices: &[ElementMatrix]) -> Result<OrderedLayer, AssemblyError> {
+        if matrices.len() != self.connectivity.len() {
+            return Err(AssemblyError::Sections {
+                sections: matrices.len(),
+                elements: self.connectivity.len(),
+            });
+        }
+        let ordered = self.ordered()?;
+        let values = ordered
+            .gather
+            .par_iter()
+            .map(|&code| matrices[code as usize / 576].as_slice()[code as usize % 576])
+            .collect();
+        Ok(OrderedLayer { values })
+    }
+
+    /// `sum_e scales[e] K_e` over the free DOFs for the element matrices
+    /// `K_e` of `layer`, plus `base` if given, as the lower triangle in the
+    /// nested-dissection order for [`OrderedFactor`]: one scale per element
+    /// (for instance SIMP's `rho_e^p` on the carbon layer, with `base` the
+    /// skin). Parallel over the values.
+    pub fn assemble_ordered(
+        &self,
+        layer: &OrderedLayer,
+        scales: &[f64],
+        base: Option<&OrderedStiffness>,
+    ) -> Result<OrderedStiffness, AssemblyError> {
+        if scales.len() != self.connectivity.len() {
+            return Err(AssemblyError::Sections {
+                sections: scales.len(),
+                elements: self.connectivity.len(),
+            });
+        }
+        let ordered = self.ordered()?;
+        if layer.values.len() != ordered.gather.len() {
+            return Err(AssemblyError::Length {
+                got: layer.values.len(),
+                expected: ordered.gather.len(),
+            });
+        }
+        let nnz = ordered.pattern.row_idx().len();
+        let mut values = match base {
+            Some(base) if base.values.len() == nnz => base.values.clone(),
+            Some(base) => {
+                return Err(AssemblyError::Length {
+                    got: base.values.len(),
+                    expected: nnz,
+                })
+            }
+            None => vec![0.0; nnz],
+        };
+        const CHUNK: usize = 4096;
+        values
+            .par_chunks_mut(CHUNK)
+            .enumerate()
+            .for_each(|(chunk, out)| {
+                for (i, value) in out.iter_mut().enumerate() {
+                    let q = chunk * CHUNK + i;
+                    let range = ordered.start[q]..ordered.start[q + 1];
+                    *value += ordered.gather[range.clone()]
+                        .iter()
+                        .zip(&layer.values[range])
+                        .map(|(&code, &k)| scales[code as usize / 576] * k)
+                        .sum::<f64>();
+                }
+            });
+        Ok(OrderedStiffness { values })
+    }
+
+    /// The ordered lower triangle, built on first use.
+    fn ordered(&self) -> Result<&Ordered, AssemblyError> {
+        self.ordered
+            .get_or_init(|| self.build_ordered())
+            .as_ref()
+            .map_err(|e| AssemblyError::Sparse(e.clone()))
+    }
+
+    /// The lower triangle of the stiffness in the nested-dissection
+    /// order, column by column (in parallel): the rows of column `k` are
+    /// the free DOFs of the nodes sharing an element with its node, from
+    /// position `k` on, and each value gathers the element entries on it.
+    /// Then faer's symbolic analysis of it.
+    fn build_ordered(&self) -> Result<Ordered, String> {
+        let n = self.map.free_count();
+        let mut position = vec![0; n];
+        for (k, &d) in self.order.iter().enumerate() {
+            position[d] = k;
+        }
+        let mut global = vec![0; n];
+        for g in 0..self.map.dofs() {
+            if let Some(f) = self.map.free(g) {
+                global[position[f]] = g;
+            }
+        }
+        // The elements around each node (compressed rows).
+        let nodes = self.map.dofs() / 6;
+        let mut around_start = vec![0usize; nodes + 1];
+        for corners in &self.connectivity {
+            for &node in corners {
+                around_start[node + 1] += 1;
+            }
+        }
+        for i in 0..nodes {
+            around_start[i + 1] += around_start[i];
+        }
+        let mut around = vec![0usize; around_start[nodes]];
+        let mut next = around_start.clone();
+        for (e, corners) in self.connectivity.iter().enumerate() {
+            for &node in corners {
+                around[next[node]] = e;
+                next[node] += 1;
+            }
+        }
+        // Position of each node's first free DOF: its free DOFs follow it in
+        // component order (the ordering keeps them together).
+        let mut node_first = vec![usize::MAX; nodes];
+        for (k, &g) in global.iter().enumerate().rev() {
+            node_first[g / 6] = k;
+        }
+        // Columns in parallel blocks: each block's row indices, the number
+        // of element entries on each of its values, and those entries.
+        const BLOCK: usize = 1024;
+        let blocks: Vec<ColumnBlock> = (0..n.div_ceil(BLOCK))
+            .into_par_iter()
+            .map(|block| {
+                let columns = block * BLOCK..(block * BLOCK + BLOCK).min(n);
+                let mut rows_per_column = Vec::with_capacity(columns.len());
+                let mut rows = Vec::with_capacity(60 * columns.len());
+                let mut counts = Vec::with_capacity(60 * columns.len());
+                let mut codes = Vec::with_capacity(200 * columns.len());
+                let mut corners_at: Vec<(usize, usize, usize)> = Vec::with_capacity(16);
+                for k in columns {
+                    let (node, c) = (global[k] / 6, global[k] % 6);
+                    // For every corner of the elements around this column's
+                    // node: the corner node's first position, the element,
+                    // and where in the element matrix (24 b + 6 corner; the
+                    // corner's DOF d adds d) the entries lie.
+                    corners_at.clear();
+                    for &e in &around[around_start[node]..around_start[node + 1]] {
+                        let corners = &self.connectivity[e];
+                        let Some(slot) = corners.iter().position(|&m| m == node) else {
+                            continue;
+                        };
+                        for (corner, &m) in corners.iter().enumerate() {
+                            if node_first[m] != usize::MAX {
+                                corners_at.push((
+                                    node_first[m],
+                                    e,
+                                    24 * (6 * slot + c) + 6 * corner,
+                                ));
+                            }
+                        }
+                    }
+                    corners_at.sort_unstable();
+                    let before = rows.len();
+                    let mut i = 0;
+                    while i < corners_at.len() {
+                        let first = corners_at[i].0;
+                        let group = corners_at[i..].iter().take_while(|x| x.0 == first).count();
+                        let m = global[first] / 6;
+                        for d in 0..6 {
+                            let Some(f) = self.map.free(6 * m + d) else {
+                                continue;
+                            };
+                            let row = position[f];
+                            if row < k {
+                                continue;
+                            }
+                            rows.push(row);
+                            counts.push(group);
+                            for &(_, e, offset) in &corners_at[i..i + group] {
+                                codes.push((576 * e + offset + d) as u32);
+                            }
+                        }
+                        i += group;
+                    }
+                    rows_per_column.push(rows.len() - before);
+                }
+                ColumnBlock {
+                    rows_per_column,
+                    rows,
+                    counts,
+                    codes,
+                }
+            })
+            .collect();
+        let values: usize = blocks.iter().map(|b| b.rows.len()).sum();
+        let mut col_ptr = Vec::with_capacity(n + 1);
+        let mut row_idx = Vec::with_capacity(values);
+        let mut start = Vec::with_capacity(values + 1);
+        let mut gather = Vec::with_capacity(blocks.iter().map(|b| b.codes.len()).sum());
+        col_ptr.push(0);
+        start.push(0);
+        for block in blocks {
+            for r in block.rows_per_column {
+                col_ptr.push(col_ptr[col_ptr.len() - 1] + r);
+            }
+            row_idx.extend(block.rows);
+            for c in block.counts {
+                start.push(start[start.len() - 1] + c);
+            }
+            gather.extend(block.codes);
+        }
+        let pattern = SymbolicSparseColMat::new_checked(n, n, col_ptr, None, row_idx);
+        // faer's symbolic analysis without reordering reads the upper
+        // triangle whatever the side given: hand it the transpose (the
+        // numeric factorization then reads the lower triangle).
+        let upper = pattern
+            .as_ref()
+            .transpose()
+            .to_col_major()
+            .map_err(|e| format!("{e:?}"))?;
+        let symbolic = factorize_symbolic_cholesky(
+            upper.as_ref(),
+            Side::Upper,
+            SymmetricOrdering::Identity,
+            Default::default(),
+        )
+        .map_err(|e| format!("{e:?}"))?;
+        Ok(Ordered {
+            pattern,
+            start,
+            gather,
+            global,
+            symbolic,
+        })
+    }
+}
+
+/// A block of consecutive columns of the ordered lower triangle, built on
+/// one thread.
+struct ColumnBlock {
+    /// Values in each column.
+    rows_per_column: Vec<usize>,
+    /// Row of each value.
+    rows: Vec<usize>,
+    /// Element entries on each value.
+    counts: Vec<usize>,
+    /// Those entries, value after value (`576 e + a + 24 b`).
+    codes: Vec<u32>,
+}
+
+/// Element matrices packed by [`Structure::ordered_layer`]: the entries on
+/// the lower triangle of the ordered stiffness, in gather order (N/m, N,
+/// N m as the DOFs pair).
+#[derive(Clone, Debug)]
+pub struct OrderedLayer {
+    values: Vec<f64>,
+}
+
+/// A stiffness over the free DOFs assembled by
+/// [`Structure::assemble_ordered`]: the values of the lower triangle in the
+/// structure's nested-dissection order (N/m, N, N m as the DOFs pair).
+#[derive(Clone, Debug)]
+pub struct OrderedStiffness {
+    values: Vec<f64>,
+}
+
+/// The Cholesky factor `L L^T = P K P^T` of an [`OrderedStiffness`]
+/// (faer's supernodal factorization on the nested-dissection order), its
+/// storage kept for the next factorization on the same structure.
+pub struct OrderedFactor<'a> {
+    structure: &'a Structure,
+    ordered: &'a Ordered,
+    values: Vec<f64>,
+    /// Whether `values` hold a successful factorization.
+    valid: bool,
+}
+
+impl<'a> OrderedFactor<'a> {
+    /// Factorizes `k` (assembled on `structure`). Sequential: on the
+    /// 2-core development machine faer's parallelism inside the supernodes
+    /// made the default wing's factorization slower, not faster (0.12 to
+    /// 0.18 s against 0.07 to 0.08 s); the cores share the solves instead.
+    pub fn new(structure: &'a Structure, k: &OrderedStiffness) -> Result<Self, AssemblyError> {
+        let ordered = structure.ordered()?;
+        let mut factor = Self {
+            structure,
+            ordered,
+            values: vec![0.0; ordered.symbolic.len_val()],
+            valid: false,
+        };
+        factor.refactorize(k)?;
+        Ok(factor)
+    }
+
+    /// Factorizes a new stiffness on the same structure into the same
+    /// storage (no allocation of the factor). On an error the factor is
+    /// unusable until a successful refactorization.
+    pub fn refactorize(&mut self, k: &OrderedStiffness) -> Result<(), AssemblyError> {
+        self.valid = false;
+        let ordered = self.ordered;
+        if k.values.len() != ordered.pattern.row_idx().len() {
+            return Err(AssemblyError::Length {
+                got: k.values.len(),
+                expected: ordered.pattern.row_idx().len(),
+            });
+        }
+        let par = Par::Seq;
+        let mut scratch = MemBuffer::try_new(
+            ordered
+                .symbolic
+                .factorize_numeric_llt_scratch::<f64>(par, Default::default()),
+        )
+        .map_err(|e| AssemblyError::Sparse(format!("{e:?}")))?;
+        ordered
+            .symbolic
+            .factorize_numeric_llt(
+                &mut self.values,
+                SparseColMatRef::new(ordered.pattern.as_ref(), &k.values),
+                Side::Lower,
+                Default::default(),
+                par,
+                MemStack::new(&mut scratch),
+                Default::default(),
+            )
+            .map_err(|e| AssemblyError::Singular(format!("{e:?}")))?;
+        self.valid = true;
+        Ok(())
+    }
+
+    /// Displacements under global load vectors (N, one per load case), all
+    /// solved together, the load cases shared among the cores. Returned
+    /// interleaved over the global DOFs: `u[d * loads.len() + l]` is DOF
+    /// `d` of load case `l` (m or rad; fixed DOFs zero), so that an
+    /// element's displacements in every load case lie together.
+    pub fn solve(&self, loads: &[Vec<f64>]) -> Result<Vec<f64>, AssemblyError> {
+        let dofs = self.structure.map.dofs();
+        if !self.valid {
+            return Err(AssemblyError::Singular(
+                "the last factorization failed".into(),
+            ));
+        }
+        if let Some(f) = loads.iter().find(|f| f.len() != dofs) {
+            return Err(AssemblyError::Length {
+                got: f.len(),
+                expected: dofs,
+            });
+        }
+        let cases = loads.len();
+        if cases == 0 {
+            return Ok(Vec::new());
+        }
+        let global = &self.ordered.global;
+        let mut x = Mat::from_fn(global.len(), cases, |k, l| loads[l][global[k]]);
+        let factor = LltRef::new(&self.ordered.symbolic, &self.values);
+        let groups = rayon::current_num_threads().clamp(1, cases);
+        x.as_mut()
+            .par_col_partition_mut(groups)
+            .for_each(|block: MatMut<'_, f64>| {
+                let mut scratch = MemBuffer::new(
+                    self.ordered
+                        .symbolic
+                        .solve_in_place_scratch::<f64>(block.ncols(), Par::Seq),
+                );
+                factor.solve_in_place_with_conj(
+                    Conj::No,
+                    block,
+                    Par::Seq,
+                    MemStack::new(&mut scratch),
+                );
+            });
+        let mut u = vec![0.0; dofs * cases];
+        for (k, &g) in global.iter().enumerate() {
+            for l in 0..cases {
+                u[g * cases + l] = x[(k, l)];
+            }
+        }
+        Ok(u)
     }
 }

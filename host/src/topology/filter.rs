@@ -7,6 +7,7 @@
 //! independent of the mesh.
 
 use nalgebra::Vector3;
+use rayon::prelude::*;
 
 use crate::shell::mesh::ShellMesh;
 
@@ -22,7 +23,7 @@ pub struct DensityFilter {
 impl DensityFilter {
     /// The filter of radius `radius` (m, > 0) on `mesh`; neighbours are
     /// found through a grid of cells the size of the radius, so building it
-    /// is linear in the element count.
+    /// is linear in the element count (the rows in parallel).
     pub fn new(mesh: &ShellMesh, radius: f64) -> Self {
         let centres: Vec<Vector3<f64>> = (0..mesh.elements.len())
             .map(|e| mesh.corners(e).iter().sum::<Vector3<f64>>() / 4.0)
@@ -46,7 +47,7 @@ impl DensityFilter {
             grid.entry(cell(c)).or_default().push(e);
         }
         let rows: Vec<Vec<(usize, f64)>> = centres
-            .iter()
+            .par_iter()
             .map(|c| {
                 let (i, j, k) = cell(c);
                 let mut row = Vec::new();

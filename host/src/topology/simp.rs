@@ -11,20 +11,27 @@
 //! K_carbon,e` and the sensitivity of `C = sum_l f_l . u_l` is `-2 p
 //! rho^(p-1) sum_l U_carbon,e(u_l)` with `U_carbon,e` the strain energy of
 //! the element's carbon layer alone. One factorization an iteration serves
-//! every load case.
-
-use std::sync::Arc;
+//! every load case: the skin's stiffness is assembled once and each
+//! iteration adds the carbon element matrices scaled by `rho^p`, straight
+//! into the nested-dissection order of the structure's ordered path
+//! ([`crate::shell::structure::OrderedFactor`]).
+//!
+//! The mass constraint is linear in the design variables through the
+//! filter, `m(x) = w . x` (see [`optimize`]), so the OC bisection tests each
+//! trial multiplier with one dot product instead of filtering the trial
+//! design.
 
 use serde::{Deserialize, Serialize};
 
+use faer::linalg::matmul::matmul;
+use faer::{Accum, MatMut, MatRef, Par};
 use rayon::prelude::*;
 
 use crate::shell::assembly::{element_dofs, AssemblyError};
-use crate::shell::element::{self, ElementMatrix, ElementVector};
-use crate::shell::linear::LinearStatic;
+use crate::shell::element::{self, ElementMatrix};
 use crate::shell::material::{Layer, Section};
 use crate::shell::mesh::ShellMesh;
-use crate::shell::structure::Structure;
+use crate::shell::structure::{OrderedFactor, Structure};
 
 use super::filter::DensityFilter;
 
@@ -130,7 +137,7 @@ pub fn optimize(
         .collect();
     let design_area: f64 = (0..n).filter(|&e| design[e]).map(|e| area[e]).sum();
     let filter = DensityFilter::new(mesh, s.filter_radius);
-    let structure = Arc::new(Structure::new(mesh, fixed)?);
+    let structure = Structure::new(mesh, fixed)?;
     // The carbon layer's element stiffnesses do not change: computed once
     // (24 x 24 each), they give every load case's carbon strain energy.
     let carbon_section = Section::single(carbon);
@@ -139,12 +146,17 @@ pub fn optimize(
         .map(|e| element::stiffness(&mesh.corners(e), &carbon_section))
         .collect();
     // The element stiffness is linear in the section: skin plus rho^p
-    // carbon, combined from the two kept matrices each iteration.
+    // carbon. The skin's part of the global stiffness is assembled once;
+    // each iteration adds the carbon matrices scaled by rho^p.
     let skin_section = Section::single(skin);
     let skin_k: Vec<ElementMatrix> = (0..n)
         .into_par_iter()
         .map(|e| element::stiffness(&mesh.corners(e), &skin_section))
         .collect();
+    let skin_stiffness =
+        structure.assemble_ordered(&structure.ordered_layer(&skin_k)?, &vec![1.0; n], None)?;
+    drop(skin_k);
+    let carbon_layer = structure.ordered_layer(&carbon_k)?;
     let dofs: Vec<[usize; 24]> = (0..n).map(|e| element_dofs(mesh, e)).collect();
     let fix = |rho: &mut [f64]| {
         for (r, &d) in rho.iter_mut().zip(design) {
@@ -160,44 +172,86 @@ pub fn optimize(
             .sum::<f64>()
             / design_area
     };
-    let mut x = vec![s.mass_fraction; n];
+    // The mass counts the filtered densities of the design elements only:
+    // `m(x) = sum_{e in design} a_e (H x)_e / A = w . x / A` with
+    // `w = H^T (a masked to the design elements)`, linear in the design
+    // variables. `w` is both the mass of a trial design in the bisection
+    // (exactly the filtered mass, without filtering every trial) and the
+    // mass sensitivity. (Bug fix: the sensitivity used to be `H^T a` with
+    // the area of every element, the non-design spar included, although
+    // the constrained mass leaves the spar out.)
+    let design_area_of: Vec<f64> = (0..n)
+        .map(|e| if design[e] { area[e] } else { 0.0 })
+        .collect();
+    let d_mass = filter.back(&design_area_of);
+    let mass_of_design =
+        |x: &[f64]| x.iter().zip(&d_mass).map(|(x, w)| x * w).sum::<f64>() / design_area;
+    let cases = loads.len();
+    // Non-design elements (the spar) are carbon: their design variables
+    // sit at 1 so that the filter does not average a lighter spar into
+    // their neighbours' densities.
+    let mut x: Vec<f64> = design
+        .iter()
+        .map(|&d| if d { s.mass_fraction } else { 1.0 })
+        .collect();
     let mut history = Vec::new();
     let mut converged = false;
+    let mut factor: Option<OrderedFactor> = None;
     for _ in 0..s.max_iterations {
         let mut rho = filter.apply(&x);
         fix(&mut rho);
-        let matrices: Vec<ElementMatrix> = (0..n)
-            .into_par_iter()
-            .map(|e| skin_k[e] + carbon_k[e] * rho[e].powf(s.penalty))
-            .collect();
-        let model = LinearStatic::from_element_matrices(structure.clone(), &matrices)?;
-        let u = model.solve(loads)?;
+        let scales: Vec<f64> = rho.iter().map(|r| r.powf(s.penalty)).collect();
+        let stiffness =
+            structure.assemble_ordered(&carbon_layer, &scales, Some(&skin_stiffness))?;
+        let factor = match factor.as_mut() {
+            Some(factor) => {
+                factor.refactorize(&stiffness)?;
+                factor
+            }
+            None => factor.insert(OrderedFactor::new(&structure, &stiffness)?),
+        };
+        drop(stiffness);
+        // Interleaved: u[d * cases + l], DOF d of load case l.
+        let u = factor.solve(loads)?;
         let objective: f64 = loads
             .iter()
-            .zip(&u)
-            .map(|(f, u)| f.iter().zip(u).map(|(a, b)| a * b).sum::<f64>())
-            .sum();
-        let mut d_rho: Vec<f64> = (0..n)
-            .into_par_iter()
-            .map(|e| {
-                let energy: f64 = u
-                    .iter()
-                    .map(|ul| {
-                        let ue = ElementVector::from_iterator(dofs[e].iter().map(|&g| ul[g]));
-                        0.5 * ue.dot(&(carbon_k[e] * ue))
-                    })
-                    .sum();
-                -2.0 * s.penalty * rho[e].powf(s.penalty - 1.0) * energy
+            .enumerate()
+            .map(|(l, f)| {
+                f.iter()
+                    .enumerate()
+                    .map(|(d, f)| f * u[d * cases + l])
+                    .sum::<f64>()
             })
+            .sum();
+        // dC/drho_e = -p rho^(p-1) sum_l u_l,e . K_carbon,e u_l,e (twice the
+        // carbon strain energy): with U_e the element's displacements in
+        // every load case (24 x cases), the sum of U_e o (K_carbon,e U_e),
+        // one small matrix product an element (faer's SIMD kernels).
+        let d_rho: Vec<f64> = (0..n)
+            .into_par_iter()
+            .map_init(
+                || (vec![0.0; 24 * cases], vec![0.0; 24 * cases]),
+                |(ue, product), e| {
+                    if !design[e] {
+                        return 0.0;
+                    }
+                    for (row, &g) in ue.chunks_exact_mut(cases).zip(&dofs[e]) {
+                        row.copy_from_slice(&u[g * cases..(g + 1) * cases]);
+                    }
+                    matmul(
+                        MatMut::from_row_major_slice_mut(product, 24, cases),
+                        Accum::Replace,
+                        MatRef::from_column_major_slice(carbon_k[e].as_slice(), 24, 24),
+                        MatRef::from_row_major_slice(ue, 24, cases),
+                        1.0,
+                        Par::Seq,
+                    );
+                    let energy: f64 = ue.iter().zip(product.iter()).map(|(u, p)| u * p).sum();
+                    -s.penalty * rho[e].powf(s.penalty - 1.0) * energy
+                },
+            )
             .collect();
-        for e in 0..n {
-            if !design[e] {
-                d_rho[e] = 0.0;
-            }
-        }
         let d_x = filter.back(&d_rho);
-        // Mass sensitivity through the filter: area of each element's share.
-        let d_mass = filter.back(&area);
         // Optimality criteria: bisection on the multiplier of the mass.
         let (mut low, mut high) = (0.0f64, 1e12f64);
         let mut next = x.clone();
@@ -212,9 +266,7 @@ pub fn optimize(
                     .clamp(x[e] - s.move_limit, x[e] + s.move_limit)
                     .clamp(0.0, 1.0);
             }
-            let mut trial = filter.apply(&next);
-            fix(&mut trial);
-            if mass(&trial) > s.mass_fraction {
+            if mass_of_design(&next) > s.mass_fraction {
                 low = mid;
             } else {
                 high = mid;
