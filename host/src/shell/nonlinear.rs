@@ -36,6 +36,18 @@ pub enum NonlinearError {
         /// Relative residual at the end.
         residual: f64,
     },
+    /// A time step's Newton iterations did not converge.
+    #[error("time step {step} (t = {time:.5} s) did not converge in {iterations} iterations (residual {residual:.3e} of the largest force)")]
+    StepNoConvergence {
+        /// Step index (from 1, in steps of the transient's size).
+        step: usize,
+        /// Time at the step's end, s.
+        time: f64,
+        /// Iterations spent.
+        iterations: usize,
+        /// Relative residual at the end.
+        residual: f64,
+    },
 }
 
 /// A nonlinear model: mesh, elements and sparse structure with supports.

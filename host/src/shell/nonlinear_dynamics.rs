@@ -32,6 +32,9 @@ use super::mesh::ShellMesh;
 use super::nonlinear::{factor_tangent, internal_force, NonlinearError};
 use super::structure::Structure;
 
+/// The largest nodal rotation a Newton correction may make, rad.
+const MAX_TURN: f64 = 0.2;
+
 /// Where the prescribed nodes are at a time: translation from the initial
 /// position and rotation, per prescribed node.
 pub type Prescribed = Vec<(usize, Vector3<f64>, Rotation3<f64>)>;
@@ -64,6 +67,11 @@ pub struct NonlinearTransient<'a> {
     pub tolerance: f64,
     /// Newton iterations allowed a step.
     pub max_iterations: usize,
+    /// A force norm, N, below which the balance's scale does not fall
+    /// (0 by default): the largest load of a load history, so that steps
+    /// where every force is small (a load brought in from zero) are not
+    /// asked for a residual below the internal forces' round-off.
+    pub reference_force: f64,
 }
 
 impl<'a> NonlinearTransient<'a> {
@@ -83,6 +91,7 @@ impl<'a> NonlinearTransient<'a> {
             settings,
             tolerance: 1e-5,
             max_iterations: 25,
+            reference_force: 0.0,
         })
     }
 
@@ -96,6 +105,12 @@ impl<'a> NonlinearTransient<'a> {
             acceleration: vec![0.0; n],
             algorithmic: vec![0.0; n],
         }
+    }
+
+    /// The lumped mass over the global DOFs (kg, and kg·m² on the
+    /// rotations).
+    pub fn mass(&self) -> &[f64] {
+        &self.mass
     }
 
     /// Kinetic and strain energy, J.
@@ -180,6 +195,7 @@ impl<'a> NonlinearTransient<'a> {
         // d acc / d a and d q / d a.
         let acc_per_a = (1.0 - am) / (1.0 - af);
         let shift = acc_per_a / (beta * h * h);
+        let mut last_relative = f64::NAN;
         for iteration in 1..=self.max_iterations {
             let acc: Vec<f64> = (0..n)
                 .map(|i| {
@@ -197,7 +213,9 @@ impl<'a> NonlinearTransient<'a> {
             let scale = free_norm(&map.restrict(load))
                 .max(free_norm(&map.restrict(&inertia)))
                 .max(free_norm(&map.restrict(&internal)))
+                .max(self.reference_force)
                 .max(f64::MIN_POSITIVE);
+            last_relative = norm / scale;
             if norm <= self.tolerance * scale {
                 state.time += h;
                 state.velocity = (0..n)
@@ -216,7 +234,20 @@ impl<'a> NonlinearTransient<'a> {
             let factor = factor_tangent(&self.structure, &responses, Some(&inertia_diagonal))?;
             let rhs = Mat::from_fn(free.len(), 1, |i, _| free[i]);
             let dq = factor.solve(&rhs);
-            let dq_global = map.expand(&(0..free.len()).map(|i| dq[(i, 0)]).collect::<Vec<_>>());
+            let mut dq_global =
+                map.expand(&(0..free.len()).map(|i| dq[(i, 0)]).collect::<Vec<_>>());
+            // A Newton correction that turns some node by more than
+            // MAX_TURN is shortened to it: far from the solution (a thin
+            // flap snapping) the full correction overshoots into
+            // configurations the co-rotational frames cannot follow.
+            let turn = dq_global
+                .chunks_exact(6)
+                .map(|d| Vector3::new(d[3], d[4], d[5]).norm())
+                .fold(0.0f64, f64::max);
+            if turn > MAX_TURN {
+                let cut = MAX_TURN / turn;
+                dq_global.iter_mut().for_each(|d| *d *= cut);
+            }
             config.update(&dq_global);
             for i in 0..n {
                 if map.free(i).is_some() {
@@ -224,11 +255,11 @@ impl<'a> NonlinearTransient<'a> {
                 }
             }
         }
-        Err(NonlinearError::NoConvergence {
+        Err(NonlinearError::StepNoConvergence {
             step: (state.time / h).round() as usize + 1,
-            load: state.time + h,
+            time: state.time + h,
             iterations: self.max_iterations,
-            residual: f64::NAN,
+            residual: last_relative,
         })
     }
 }
