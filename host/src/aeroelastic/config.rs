@@ -1,5 +1,5 @@
-//! The system analysis's configuration file (TOML): the wing, its
-//! kinematics, the flight condition and the solver settings, every field
+//! The design's configuration file (TOML): the wing, its kinematics, the
+//! flight condition, the solver settings and the two disciplines', every field
 //! optional with the built-in FWAV's value as default, units in the key
 //! names, angles in degrees (people type them).
 //!
@@ -12,6 +12,8 @@
 //! amplitude_deg = 30.0
 //! [analysis]
 //! cycles = 4
+//! [topology]
+//! mass_fraction = 0.3
 //! ```
 
 use serde::{Deserialize, Serialize};
@@ -181,6 +183,8 @@ pub struct SystemConfig {
     pub analysis: SystemSettings,
     /// The kinematic optimization.
     pub design: DesignConfig,
+    /// The structural discipline (ESLSO).
+    pub topology: crate::topology::config::TopologyConfig,
 }
 
 impl SystemConfig {
@@ -350,7 +354,7 @@ impl SystemConfig {
                 range: "[0.01, 2000] kg/m^3",
             });
         }
-        Ok(())
+        self.topology.check()
     }
 
     /// The planform.

@@ -1,11 +1,23 @@
-//! The structural discipline's topology optimization (ESLSO, seed paper):
-//! the linear static SIMP step over many load cases, with its density
-//! filter. (The equivalent static loads and the outer ESLSO loop are to
-//! come.)
+//! The structural discipline (seed paper, "Topology optimization in the
+//! structural discipline"): the carbon reinforcement layout of the wing by
+//! nonlinear dynamic response topology optimization with equivalent
+//! static loads (ESLSO).
 //!
-//! - [`filter`]: the density filter.
-//! - [`simp`]: SIMP with optimality criteria, one factorization an
-//!   iteration for every load case.
+//! - [`pressure`]: the pressure history from the system analysis.
+//! - [`response`]: step 1, the nonlinear dynamic response of a design.
+//! - [`esl`]: step 2, the equivalent static loads `K_L u_N(t_i)`.
+//! - [`simp`]: step 3, linear static SIMP with optimality criteria over
+//!   every load case, one factorization an iteration.
+//! - [`filter`]: SIMP's density filter.
+//! - [`eslso`]: the cycle (steps 1–5: 0/1 transformation, stop rule).
+//! - [`config`]: the `[topology]` table of the configuration file.
+//! - [`picture`]: the layout as a PNG of the planform.
 
+pub mod config;
+pub mod esl;
+pub mod eslso;
 pub mod filter;
+pub mod picture;
+pub mod pressure;
+pub mod response;
 pub mod simp;

@@ -1,0 +1,94 @@
+//! Speed of the whole structural discipline on the default case (issue
+//! target < 2 min on 2 cores): ESLSO on the default FWAV wing (6760
+//! elements) under the pressure history of the default system analysis,
+//! from the wing the system analysis flew (full carbon layer), to
+//! convergence or the cycle cap. The system analysis that makes the pressure is not timed;
+//! `FWAV_PRESSURE=path/pressure.json` reuses one already written.
+//! `cargo bench -p fwav --bench eslso`.
+
+use std::time::Instant;
+
+use fwav::aeroelastic::analysis::{run, SystemSettings};
+use fwav::aeroelastic::kinematics::FlappingKinematics;
+use fwav::aeroelastic::model::{FlightCondition, WingModel};
+use fwav::shell::material::Layer;
+use fwav::topology::eslso::{optimize, DesignProblem, EslsoSettings};
+use fwav::topology::pressure::PressureHistory;
+use fwav::topology::response::nonlinear_response;
+
+fn main() {
+    let wing = WingModel::fwav(1.0).expect("default wing");
+    let elements = wing.wing.mesh.elements.len();
+    let pressure = match std::env::var("FWAV_PRESSURE") {
+        Ok(path) => {
+            let text = std::fs::read_to_string(&path).expect("pressure file");
+            PressureHistory::from_json(&text, elements).expect("pressure history")
+        }
+        Err(_) => {
+            let result = run(
+                &wing,
+                &FlappingKinematics::INITIAL,
+                &FlightCondition::FWAV,
+                &SystemSettings::default(),
+                0,
+                |_, _| {},
+            )
+            .expect("system analysis");
+            PressureHistory::new(result.dt_s, result.pressure_history, elements)
+                .expect("pressure history")
+        }
+    };
+    let problem = DesignProblem::wing(&wing.wing, Layer::CARBON, Layer::MYLAR);
+    let settings = EslsoSettings::default();
+    // The MDOIS hands the discipline the wing of the system analysis.
+    let start = wing.densities.clone();
+    // One nonlinear dynamic analysis of the starting design, with progress.
+    let clock = Instant::now();
+    let mut last = Instant::now();
+    let response = nonlinear_response(
+        &problem.mesh,
+        &problem.sections(&start, settings.simp.penalty),
+        &problem.fixed,
+        &pressure,
+        &settings.response,
+        |done, total| {
+            if last.elapsed().as_secs_f64() > 20.0 || done == total {
+                last = Instant::now();
+                println!(
+                    "  step {done}/{total} at {:.0} s",
+                    clock.elapsed().as_secs_f64()
+                );
+            }
+        },
+    )
+    .expect("nonlinear response");
+    println!(
+        "nonlinear dynamic analysis of the starting design: {:.1} s, {} Newton iterations, peak displacement {:.2} mm",
+        clock.elapsed().as_secs_f64(),
+        response.newton_iterations,
+        1e3 * response.peak_displacement.iter().fold(0.0f64, |m, &p| m.max(p))
+    );
+    let clock = Instant::now();
+    let result = optimize(&problem, &pressure, &start, &settings, |c| {
+        println!(
+            "cycle {}: strain energy {:.4e} J, mass {:.3}, peak {:.2} mm, {} Newton, {} SIMP iterations, {} changed, {:.1} s + {:.1} s",
+            c.cycle,
+            c.strain_energy_j,
+            c.mass_fraction,
+            1e3 * c.peak_displacement_m,
+            c.newton_iterations,
+            c.simp_iterations,
+            c.changed,
+            c.analysis_s,
+            c.optimization_s
+        )
+    })
+    .expect("ESLSO");
+    println!(
+        "ESLSO on the default wing ({elements} elements, {} load cases): {:.1} s, {} cycles, converged {}",
+        pressure.samples.len() / settings.response.sample_every,
+        clock.elapsed().as_secs_f64(),
+        result.cycles.len(),
+        result.converged
+    );
+}

@@ -1,0 +1,337 @@
+//! Nonlinear dynamic response topology optimization by the equivalent
+//! static loads method (ESLSO; seed paper, Fig. 17, steps 1–7; Park &
+//! Kang 2003; Lee & Park 2012 for topology): the carbon layout that
+//! minimizes the summed strain energy of the wing under the flapping
+//! pressure history at a given carbon mass.
+//!
+//! A cycle:
+//! 1. nonlinear dynamic analysis of the current design
+//!    ([`super::response`]);
+//! 2. equivalent static loads at the sampled times ([`super::esl`]): the
+//!    paper's `K_L u_N` with the linear stiffness of that design, or (the
+//!    default, see [`EslForm`]) the d'Alembert loads `f - M a`, which
+//!    equal it for a linear response and stay free of the thin shell's
+//!    spurious membrane energy when the wing deflects many thicknesses;
+//! 3. linear static SIMP over all of them ([`super::simp`]);
+//! 4. transformation of the densities to 0/1 (carbon where the density
+//!    reaches the threshold, seed paper eq. (13));
+//! 5. stop when the 0/1 layout no longer changes, or at the cycle cap
+//!    (then reported as not converged).
+
+use std::time::Instant;
+
+use serde::{Deserialize, Serialize};
+
+use crate::shell::assembly::AssemblyError;
+use crate::shell::linear::LinearStatic;
+use crate::shell::material::{Layer, Section};
+use crate::shell::mesh::ShellMesh;
+use crate::shell::wing::WingMesh;
+
+use super::esl::{EquivalentStaticLoads, EslForm};
+use super::pressure::PressureHistory;
+use super::response::{nonlinear_response, ResponseError, ResponseSettings, SampledResponse};
+use super::simp::{self, SimpError, SimpSettings};
+
+/// The structure whose reinforcement is designed.
+#[derive(Clone, Debug)]
+pub struct DesignProblem {
+    /// The shell mesh (one element layer carrying both layers' sections).
+    pub mesh: ShellMesh,
+    /// Held global DOFs (the root attachment).
+    pub fixed: Vec<usize>,
+    /// Per element: in the design domain (false: carbon always, e.g. the
+    /// leading-edge spar, seed paper "without the leading edge").
+    pub design: Vec<bool>,
+    /// The design layer (carbon).
+    pub carbon: Layer,
+    /// The non-design skin (mylar), always present.
+    pub skin: Layer,
+}
+
+impl DesignProblem {
+    /// The wing: the spar outside the design domain, the root attachment
+    /// clamped.
+    pub fn wing(wing: &WingMesh, carbon: Layer, skin: Layer) -> Self {
+        Self {
+            mesh: wing.mesh.clone(),
+            fixed: wing.clamped_dofs(),
+            design: wing.spar.iter().map(|s| !s).collect(),
+            carbon,
+            skin,
+        }
+    }
+
+    /// Element sections for carbon densities (non-design elements full)
+    /// with SIMP penalty `penalty`.
+    pub fn sections(&self, densities: &[f64], penalty: f64) -> Vec<Section> {
+        densities
+            .iter()
+            .zip(&self.design)
+            .map(|(&r, &d)| {
+                let r = if d { r } else { 1.0 };
+                Section::two_layer(&self.carbon, &self.skin, r, penalty)
+            })
+            .collect()
+    }
+
+    /// The sections of a uniform carbon layer of `fraction` of the full
+    /// thickness over the design domain (full thickness elsewhere): the
+    /// uniform-thickness design of the same mass as a layout of that mass
+    /// fraction.
+    pub fn uniform_thickness_sections(&self, fraction: f64) -> Vec<Section> {
+        let thin = Layer {
+            thickness: self.carbon.thickness * fraction,
+            ..self.carbon
+        };
+        self.design
+            .iter()
+            .map(|&d| {
+                let layer = if d { &thin } else { &self.carbon };
+                Section::two_layer(layer, &self.skin, 1.0, 1.0)
+            })
+            .collect()
+    }
+
+    /// Carbon mass over the design domain as a fraction of the full
+    /// layer's, for densities per element.
+    pub fn mass_fraction(&self, densities: &[f64]) -> f64 {
+        let (mut carbon, mut full) = (0.0, 0.0);
+        for (e, (&r, &d)) in densities.iter().zip(&self.design).enumerate() {
+            if d {
+                let x = self.mesh.corners(e);
+                let area = 0.5 * (x[2] - x[0]).cross(&(x[3] - x[1])).norm();
+                carbon += r * area;
+                full += area;
+            }
+        }
+        if full > 0.0 {
+            carbon / full
+        } else {
+            0.0
+        }
+    }
+}
+
+/// Settings of the whole optimization.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct EslsoSettings {
+    /// The linear static SIMP of step 3 (penalty, mass fraction, filter).
+    pub simp: SimpSettings,
+    /// Density at and above which an element keeps its carbon in the 0/1
+    /// transformation (seed paper eq. (13)).
+    pub threshold: f64,
+    /// Cycles allowed.
+    pub max_cycles: usize,
+    /// The nonlinear dynamic analysis of step 1.
+    pub response: ResponseSettings,
+    /// How step 2 forms the load cases.
+    pub esl: EslForm,
+}
+
+impl Default for EslsoSettings {
+    /// SIMP defaults (penalty 3, 30% mass, 5 mm filter), threshold 0.5,
+    /// at most 10 cycles, the response defaults, d'Alembert load cases.
+    fn default() -> Self {
+        Self {
+            simp: SimpSettings::default(),
+            threshold: 0.5,
+            max_cycles: 10,
+            response: ResponseSettings::default(),
+            esl: EslForm::default(),
+        }
+    }
+}
+
+/// What one cycle found.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct EslsoCycle {
+    /// Cycle number from 1.
+    pub cycle: usize,
+    /// Summed strain energy of the analysed design over the sampled
+    /// times, nonlinear dynamic analysis, J.
+    pub strain_energy_j: f64,
+    /// Carbon mass fraction of the analysed design.
+    pub mass_fraction: f64,
+    /// Largest nodal displacement over the samples, m.
+    pub peak_displacement_m: f64,
+    /// Newton iterations of the dynamic analysis.
+    pub newton_iterations: usize,
+    /// SIMP iterations.
+    pub simp_iterations: usize,
+    /// Whether SIMP met its tolerance.
+    pub simp_converged: bool,
+    /// SIMP's final summed compliance over the ESL cases, J.
+    pub simp_objective_j: f64,
+    /// Design elements whose 0/1 state the transformation changed.
+    pub changed: usize,
+    /// Time in the nonlinear dynamic analysis, s.
+    pub analysis_s: f64,
+    /// Time in ESLs, SIMP and transformation, s.
+    pub optimization_s: f64,
+}
+
+/// The outcome.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct EslsoResult {
+    /// Every cycle.
+    pub cycles: Vec<EslsoCycle>,
+    /// Carbon or not per element after the last transformation
+    /// (non-design elements carbon).
+    pub layout: Vec<bool>,
+    /// The last SIMP's densities.
+    pub densities: Vec<f64>,
+    /// Whether the layout stopped changing within the cycle cap.
+    pub converged: bool,
+}
+
+impl EslsoResult {
+    /// The layout as densities (1 carbon, 0 mylar only).
+    pub fn layout_densities(&self) -> Vec<f64> {
+        self.layout
+            .iter()
+            .map(|&c| f64::from(u8::from(c)))
+            .collect()
+    }
+}
+
+/// Why the optimization stopped short.
+#[derive(Debug, thiserror::Error)]
+pub enum EslsoError {
+    /// Step 1.
+    #[error(transparent)]
+    Response(#[from] ResponseError),
+    /// Step 2 (the linear model of the design).
+    #[error("equivalent static loads: {0}")]
+    Assembly(#[from] AssemblyError),
+    /// Step 3.
+    #[error(transparent)]
+    Simp(#[from] SimpError),
+    /// A setting or input out of range.
+    #[error("ESLSO setting: {0}")]
+    Setting(String),
+}
+
+/// 0/1 transformation (step 4): carbon where the density reaches
+/// `threshold`, and on every non-design element.
+pub fn transform(densities: &[f64], design: &[bool], threshold: f64) -> Vec<bool> {
+    densities
+        .iter()
+        .zip(design)
+        .map(|(&r, &d)| !d || r >= threshold)
+        .collect()
+}
+
+/// Runs ESLSO on `problem` under `pressure` from the design `start`
+/// (carbon density per element; the first cycle analyses it as given);
+/// `progress` hears of each finished cycle.
+///
+/// Cost per cycle: one nonlinear dynamic analysis (see
+/// [`nonlinear_response`]) and one SIMP run (one factorization and one
+/// multi-case solve an iteration).
+pub fn optimize(
+    problem: &DesignProblem,
+    pressure: &PressureHistory,
+    start: &[f64],
+    settings: &EslsoSettings,
+    mut progress: impl FnMut(&EslsoCycle),
+) -> Result<EslsoResult, EslsoError> {
+    let n = problem.mesh.elements.len();
+    if start.len() != n || problem.design.len() != n {
+        return Err(EslsoError::Setting(format!(
+            "{} start densities and {} design flags for {n} elements",
+            start.len(),
+            problem.design.len()
+        )));
+    }
+    if let Some((e, v)) = start
+        .iter()
+        .enumerate()
+        .find(|(_, v)| !(v.is_finite() && (0.0..=1.0).contains(*v)))
+    {
+        return Err(EslsoError::Setting(format!(
+            "start density of element {e} is {v}, outside [0, 1]"
+        )));
+    }
+    if !(settings.threshold > 0.0 && settings.threshold < 1.0) || settings.max_cycles == 0 {
+        return Err(EslsoError::Setting(format!(
+            "threshold {} must be in (0, 1) and max_cycles {} at least 1",
+            settings.threshold, settings.max_cycles
+        )));
+    }
+    let penalty = settings.simp.penalty;
+    let mut current: Vec<f64> = start.to_vec();
+    let mut layout = transform(&current, &problem.design, settings.threshold);
+    let mut cycles = Vec::new();
+    let mut densities = current.clone();
+    let mut converged = false;
+    for cycle in 1..=settings.max_cycles {
+        let clock = Instant::now();
+        let sections = problem.sections(&current, penalty);
+        let response: SampledResponse = nonlinear_response(
+            &problem.mesh,
+            &sections,
+            &problem.fixed,
+            pressure,
+            &settings.response,
+            |_, _| {},
+        )?;
+        let analysis_s = clock.elapsed().as_secs_f64();
+        let clock = Instant::now();
+        let esl = match settings.esl {
+            EslForm::Displacement => {
+                let linear = LinearStatic::new(&problem.mesh, &sections, &problem.fixed)?;
+                EquivalentStaticLoads::new(&linear, &response.displacements)?
+            }
+            EslForm::Dalembert => EquivalentStaticLoads::dalembert(response.dynamic_loads.clone()),
+        };
+        let simp = simp::optimize(
+            &problem.mesh,
+            &problem.fixed,
+            &problem.design,
+            &problem.carbon,
+            &problem.skin,
+            &esl.loads,
+            &settings.simp,
+        )?;
+        let next = transform(&simp.densities, &problem.design, settings.threshold);
+        let changed = next.iter().zip(&layout).filter(|(a, b)| a != b).count();
+        let record = EslsoCycle {
+            cycle,
+            strain_energy_j: response.total_strain_energy(),
+            mass_fraction: problem.mass_fraction(&current),
+            peak_displacement_m: response
+                .peak_displacement
+                .iter()
+                .fold(0.0f64, |m, &p| m.max(p)),
+            newton_iterations: response.newton_iterations,
+            simp_iterations: simp.history.len(),
+            simp_converged: simp.converged,
+            simp_objective_j: simp.history.last().map_or(f64::NAN, |h| h.objective),
+            changed,
+            analysis_s,
+            optimization_s: clock.elapsed().as_secs_f64(),
+        };
+        progress(&record);
+        cycles.push(record);
+        densities = simp.densities;
+        // The first cycle's start may be fractional: it has changed unless
+        // it already was this 0/1 layout.
+        let start_was_layout = current
+            .iter()
+            .zip(&next)
+            .all(|(&r, &c)| r == f64::from(u8::from(c)));
+        layout = next;
+        if changed == 0 && start_was_layout {
+            converged = true;
+            break;
+        }
+        current = layout.iter().map(|&c| f64::from(u8::from(c))).collect();
+    }
+    Ok(EslsoResult {
+        cycles,
+        layout,
+        densities,
+        converged,
+    })
+}

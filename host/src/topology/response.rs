@@ -1,0 +1,294 @@
+//! Step 1 of an ESLSO cycle: the nonlinear dynamic response of the current
+//! wing design, root held, under the periodic pressure history (seed
+//! paper, Fig. 17 and "Nonlinear dynamic topology optimization using
+//! ESLSO"; the paper runs LS-DYNA, here the co-rotational shell of
+//! [`crate::shell::nonlinear_dynamics`] with generalized-α).
+//!
+//! The pressure is a follower load: each step's element pressures act
+//! along the element normals of the configuration at the step's start
+//! (explicit in the load, so no load stiffness in Newton's matrix; the
+//! step is a fraction of a period and the rotation per step small).
+//!
+//! The run starts at rest, undeformed, and brings the load in over the
+//! first period (factor `(1 - cos(pi t / T)) / 2`), then runs `periods - 1`
+//! more periods and samples the last. (A static start under the first
+//! load fails on the thin mylar-only regions of a 0/1 layout: without the
+//! inertia shift their compressed membranes make the tangent indefinite.)
+//! A step where Newton fails is halved (pressure interpolated), up to
+//! three times. The samples are displacements (translations, m, and
+//! rotation vectors, rad, per node, the form of a linear displacement
+//! vector) and the strain energies of the co-rotational elements.
+
+use std::sync::OnceLock;
+
+use nalgebra::Vector3;
+use serde::{Deserialize, Serialize};
+
+use crate::shell::corotational::Configuration;
+use crate::shell::dynamics::GeneralizedAlpha;
+use crate::shell::material::Section;
+use crate::shell::mesh::ShellMesh;
+use crate::shell::nonlinear::NonlinearError;
+use crate::shell::nonlinear_dynamics::{follower_pressure_loads, DynamicState, NonlinearTransient};
+
+use super::pressure::{PressureError, PressureHistory};
+
+/// How the response is computed and sampled.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ResponseSettings {
+    /// Periods run, the first bringing the load in; the last is sampled
+    /// (at least 2).
+    pub periods: usize,
+    /// Sample every this many steps of the last period (the number of ESL
+    /// load cases is the steps a period over this).
+    pub sample_every: usize,
+    /// Generalized-α high-frequency spectral radius.
+    pub rho_inf: f64,
+    /// Newton tolerance, relative to the largest force in balance. Not
+    /// below about 1e-4 for aerodynamic loads on a carbon wing: the
+    /// co-rotational internal forces carry a round-off floor near 1.5e-5
+    /// of those light loads (stiff membranes, forces found as small
+    /// differences).
+    pub tolerance: f64,
+}
+
+impl Default for ResponseSettings {
+    /// Two periods, every second step sampled (20 load cases from the
+    /// system analysis's 40 steps), ρ∞ = 0.8, Newton to 1e-4.
+    fn default() -> Self {
+        Self {
+            periods: 2,
+            sample_every: 2,
+            rho_inf: 0.8,
+            tolerance: 1e-4,
+        }
+    }
+}
+
+/// The sampled response.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SampledResponse {
+    /// Sample times from the start of the sampled period, s.
+    pub times: Vec<f64>,
+    /// Global 6-DOF displacement vectors per sample (translations m,
+    /// rotation vectors rad).
+    pub displacements: Vec<Vec<f64>>,
+    /// Strain energy of the co-rotational model per sample, J.
+    pub strain_energy: Vec<f64>,
+    /// Largest nodal translation per sample, m.
+    pub peak_displacement: Vec<f64>,
+    /// The dynamic loads per sample, `f_ext - M a` (global, N and N·m):
+    /// the pressure on the deformed surface less the inertia forces, the
+    /// loads the structure carries at that instant (d'Alembert).
+    pub dynamic_loads: Vec<Vec<f64>>,
+    /// Newton iterations over the whole run (failed tries of halved
+    /// steps included).
+    pub newton_iterations: usize,
+}
+
+impl SampledResponse {
+    /// The sum of the sampled strain energies, J: the objective the paper
+    /// minimizes ("the summation of the strain energy").
+    pub fn total_strain_energy(&self) -> f64 {
+        self.strain_energy.iter().sum()
+    }
+}
+
+/// Why the response could not be computed.
+#[derive(Debug, thiserror::Error)]
+pub enum ResponseError {
+    /// The pressure history does not fit the mesh.
+    #[error(transparent)]
+    Pressure(#[from] PressureError),
+    /// The shell model failed (assembly, singular tangent, no Newton
+    /// convergence).
+    #[error("nonlinear dynamic analysis")]
+    Shell(#[from] NonlinearError),
+    /// A setting out of range.
+    #[error("response setting: {0}")]
+    Setting(String),
+}
+
+/// The nonlinear dynamic response of `mesh` with `sections` and the global
+/// DOFs `fixed` held, under `pressure` repeated periodically; `progress`
+/// is told each step and the total.
+///
+/// Cost: per step, a few Newton iterations, each an element pass and a
+/// sparse Cholesky factorization of the tangent.
+pub fn nonlinear_response(
+    mesh: &ShellMesh,
+    sections: &[Section],
+    fixed: &[usize],
+    pressure: &PressureHistory,
+    settings: &ResponseSettings,
+    mut progress: impl FnMut(usize, usize),
+) -> Result<SampledResponse, ResponseError> {
+    pressure.check(mesh.elements.len())?;
+    let steps = pressure.samples.len();
+    let s = settings;
+    if s.periods < 2
+        || s.sample_every == 0
+        || s.sample_every > steps
+        || !(0.0..=1.0).contains(&s.rho_inf)
+        || !(s.tolerance.is_finite() && s.tolerance > 0.0)
+    {
+        return Err(ResponseError::Setting(format!(
+            "{s:?} with {steps} steps a period (periods >= 2, 1 <= sample_every <= steps, rho_inf in [0, 1], tolerance > 0)"
+        )));
+    }
+    let dt = pressure.dt;
+    let mut iterations = 0;
+    // The largest load of the history sets the force scale of Newton's
+    // tolerance where the ramped-in load is still small.
+    let initial = Configuration::initial(mesh.nodes.len());
+    let held: std::collections::HashSet<usize> = fixed.iter().copied().collect();
+    let mut reference_force = 0.0f64;
+    for sample in &pressure.samples {
+        let f = follower_pressure_loads(mesh, &initial, sample)?;
+        let norm = f
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| !held.contains(i))
+            .map(|(_, v)| v * v)
+            .sum::<f64>()
+            .sqrt();
+        reference_force = reference_force.max(norm);
+    }
+    let stepper = Stepper {
+        mesh,
+        sections,
+        fixed,
+        settings: *s,
+        reference_force,
+        dt,
+        levels: (0..=MAX_HALVINGS).map(|_| OnceLock::new()).collect(),
+    };
+    let transient = stepper.level(0)?;
+    let mut state = transient.rest();
+    let mut out = SampledResponse {
+        times: Vec::new(),
+        displacements: Vec::new(),
+        strain_energy: Vec::new(),
+        peak_displacement: Vec::new(),
+        dynamic_loads: Vec::new(),
+        newton_iterations: 0,
+    };
+    let total = s.periods * steps;
+    for period in 0..s.periods {
+        for (k, sample) in pressure.samples.iter().enumerate() {
+            let before = &pressure.samples[(k + steps - 1) % steps];
+            // The first period brings the load in smoothly from rest.
+            let ramp = |j: usize| {
+                if period == 0 {
+                    0.5 * (1.0 - (std::f64::consts::PI * j as f64 / steps as f64).cos())
+                } else {
+                    1.0
+                }
+            };
+            let scaled = |p: &[f64], f: f64| p.iter().map(|v| f * v).collect::<Vec<f64>>();
+            iterations += stepper.advance(
+                0,
+                &mut state,
+                &scaled(before, ramp(k)),
+                &scaled(sample, ramp(k + 1)),
+            )?;
+            progress(period * steps + k + 1, total);
+            if period + 1 == s.periods && (k + 1) % s.sample_every == 0 {
+                let c = &state.configuration;
+                let mut u = vec![0.0; mesh.dofs()];
+                let mut peak = 0.0f64;
+                for (n, (d, r)) in c.displacement.iter().zip(&c.rotation).enumerate() {
+                    let w: Vector3<f64> = r.scaled_axis();
+                    for a in 0..3 {
+                        u[6 * n + a] = d[a];
+                        u[6 * n + 3 + a] = w[a];
+                    }
+                    peak = peak.max(d.norm());
+                }
+                out.times.push((k + 1) as f64 * dt);
+                out.displacements.push(u);
+                out.strain_energy.push(transient.energy(&state).1);
+                out.peak_displacement.push(peak);
+                let mut f = follower_pressure_loads(mesh, c, sample)?;
+                for ((f, m), a) in f.iter_mut().zip(transient.mass()).zip(&state.acceleration) {
+                    *f -= m * a;
+                }
+                out.dynamic_loads.push(f);
+            }
+        }
+    }
+    out.newton_iterations = iterations;
+    Ok(out)
+}
+
+/// Steps that halve themselves where Newton fails: a step that does not
+/// converge is retried as two steps of half the length with the pressure
+/// interpolated linearly, down to `MAX_HALVINGS` halvings.
+struct Stepper<'a> {
+    mesh: &'a ShellMesh,
+    sections: &'a [Section],
+    fixed: &'a [usize],
+    settings: ResponseSettings,
+    reference_force: f64,
+    dt: f64,
+    /// The transient at `dt / 2^k`, built when first needed.
+    levels: Vec<OnceLock<NonlinearTransient<'a>>>,
+}
+
+/// The deepest halving: a step of 1/8 of the sample step.
+const MAX_HALVINGS: usize = 3;
+
+/// Newton iterations a step before it is halved (at the deepest level,
+/// the transient's own allowance).
+const ITERATIONS_BEFORE_HALVING: usize = 15;
+
+impl<'a> Stepper<'a> {
+    fn level(&self, k: usize) -> Result<&NonlinearTransient<'a>, ResponseError> {
+        if let Some(t) = self.levels[k].get() {
+            return Ok(t);
+        }
+        let mut t = NonlinearTransient::new(
+            self.mesh,
+            self.sections,
+            self.fixed,
+            GeneralizedAlpha {
+                dt: self.dt / f64::from(1u32 << k),
+                rho_inf: self.settings.rho_inf,
+                mass_damping: 0.0,
+                stiffness_damping: 0.0,
+            },
+        )?;
+        t.tolerance = self.settings.tolerance;
+        t.reference_force = self.reference_force;
+        t.max_iterations = if k == MAX_HALVINGS {
+            40
+        } else {
+            ITERATIONS_BEFORE_HALVING
+        };
+        Ok(self.levels[k].get_or_init(|| t))
+    }
+
+    /// Advances `state` by one step of level `k` from the pressure `from`
+    /// to `to`; returns the Newton iterations spent (failed tries
+    /// included).
+    fn advance(
+        &self,
+        k: usize,
+        state: &mut DynamicState,
+        from: &[f64],
+        to: &[f64],
+    ) -> Result<usize, ResponseError> {
+        let transient = self.level(k)?;
+        let load = follower_pressure_loads(self.mesh, &state.configuration, to)?;
+        match transient.step(state, &load, &Vec::new()) {
+            Ok(iterations) => Ok(iterations),
+            Err(NonlinearError::StepNoConvergence { .. }) if k < MAX_HALVINGS => {
+                let middle: Vec<f64> = from.iter().zip(to).map(|(a, b)| 0.5 * (a + b)).collect();
+                let first = self.advance(k + 1, state, from, &middle)?;
+                let second = self.advance(k + 1, state, &middle, to)?;
+                Ok(transient.max_iterations + first + second)
+            }
+            Err(e) => Err(e.into()),
+        }
+    }
+}
