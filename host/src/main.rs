@@ -11,6 +11,7 @@ mod cli {
     pub mod fly;
     pub mod kinematics;
     pub mod system;
+    pub mod topology;
 }
 use fwav::profile_file::ProfileFile;
 use fwav_protocol::document::ProfileDocument;
@@ -50,6 +51,10 @@ enum Command {
     /// ANOM, response surfaces + NSGA-II, confirmation runs) on 2D analyses
     /// of the deforming mid-span section.
     Kinematics(cli::kinematics::KinematicsArgs),
+    /// The structural discipline: the carbon reinforcement layout by
+    /// nonlinear dynamic topology optimization with equivalent static
+    /// loads (ESLSO) under the flapping pressure history.
+    Topology(cli::topology::TopologyArgs),
     /// List serial ports, marking those where an fwav device answers.
     Ports {
         /// Machine-readable output.
@@ -134,6 +139,7 @@ fn main() -> ExitCode {
         Command::Aero2d(args) => cli::aero::run(&args),
         Command::SystemAnalysis(args) => cli::system::run_command(&args),
         Command::Kinematics(args) => cli::kinematics::run_command(&args),
+        Command::Topology(args) => cli::topology::run_command(&args),
         Command::Ports { json } => cli::fly::ports(json),
         Command::Upload {
             port,

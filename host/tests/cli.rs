@@ -171,7 +171,7 @@ fn system_analysis_writes_what_the_disciplines_take() {
     let config = dir.join("wing.toml");
     std::fs::write(
         &config,
-        "[wing]\nspan_elements = 12\nchord_elements = 6\n[analysis]\ncycles = 2\nsteps_per_cycle = 16\nchordwise_panels = 3\nspanwise_panels = 6\n",
+        "[wing]\nspan_elements = 12\nchord_elements = 6\n[analysis]\ncycles = 2\nsteps_per_cycle = 16\nchordwise_panels = 3\nspanwise_panels = 6\n[topology]\nmax_cycles = 3\nsimp_iterations = 30\n",
     )
     .unwrap();
     let out_dir = dir.join("out");
@@ -220,6 +220,48 @@ fn system_analysis_writes_what_the_disciplines_take() {
         aero.status.success(),
         "{}",
         String::from_utf8_lossy(&aero.stderr)
+    );
+
+    // The structural discipline takes the pressure history.
+    let topology_dir = dir.join("topology");
+    let pressure_file = out_dir.join("pressure.json");
+    let topology = fwav(&[
+        "topology",
+        "--config",
+        config.to_str().unwrap(),
+        "--pressure",
+        pressure_file.to_str().unwrap(),
+        "--out",
+        topology_dir.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(
+        topology.status.success(),
+        "{}",
+        String::from_utf8_lossy(&topology.stderr)
+    );
+    let summary: serde_json::Value = serde_json::from_slice(&topology.stdout).unwrap();
+    let cycles = summary["cycles"].as_array().unwrap();
+    assert!(!cycles.is_empty() && cycles.len() <= 3, "{summary}");
+    assert!(cycles[0]["strain_energy_j"].as_f64().unwrap() > 0.0);
+    assert!(summary["converged"].is_boolean());
+    for file in ["layout.vtu", "layout.png", "cycles.csv", "topology.json"] {
+        assert!(topology_dir.join(file).exists(), "{file}");
+    }
+    // A pressure history for another mesh is refused, naming the file.
+    std::fs::write(&pressure_file, r#"{"dt_s": 0.01, "samples": [[1.0, 2.0]]}"#).unwrap();
+    let bad = fwav(&[
+        "topology",
+        "--config",
+        config.to_str().unwrap(),
+        "--pressure",
+        pressure_file.to_str().unwrap(),
+    ]);
+    assert!(!bad.status.success());
+    let stderr = String::from_utf8_lossy(&bad.stderr);
+    assert!(
+        stderr.contains("pressure.json") && stderr.contains("72 elements"),
+        "{stderr}"
     );
 
     std::fs::write(&config, "[kinematics]\namplitude_deg = 120\n").unwrap();

@@ -1,0 +1,191 @@
+//! `fwav topology`: the structural discipline alone — the carbon
+//! reinforcement layout by ESLSO under the flapping pressure history.
+
+use std::io::IsTerminal;
+use std::path::PathBuf;
+use std::time::Instant;
+
+use anyhow::{Context, Result};
+use fwav::aeroelastic::run;
+use fwav::shell::vtu::{self, Field};
+use fwav::topology::eslso::{optimize, DesignProblem, EslsoResult};
+use fwav::topology::picture;
+use fwav::topology::pressure::PressureHistory;
+
+/// The command's options.
+#[derive(clap::Args)]
+pub struct TopologyArgs {
+    /// Configuration (TOML; [wing] (the starting design), [topology] and,
+    /// without --pressure, [kinematics], [flight] and [analysis]); the
+    /// built-in FWAV when not given.
+    #[arg(long)]
+    pub config: Option<PathBuf>,
+    /// The pressure history (`pressure.json` of `fwav system-analysis
+    /// --out`); without it the system analysis is run first.
+    #[arg(long)]
+    pub pressure: Option<PathBuf>,
+    /// Write `layout.vtu`, `layout.png`, `cycles.csv` and `topology.json`
+    /// here.
+    #[arg(long, default_value = "topology")]
+    pub out: PathBuf,
+    /// Machine-readable summary on standard output.
+    #[arg(long)]
+    pub json: bool,
+    /// No progress lines.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// Runs the command.
+pub fn run_command(a: &TopologyArgs) -> Result<()> {
+    let config = super::system::read_config(a.config.as_deref())?;
+    let wing = config.wing_model()?;
+    let elements = wing.wing.mesh.elements.len();
+    let show = !a.quiet && std::io::stderr().is_terminal();
+    let started = Instant::now();
+    let pressure = match &a.pressure {
+        Some(path) => {
+            let text = std::fs::read_to_string(path)
+                .with_context(|| format!("reading {}", path.display()))?;
+            PressureHistory::from_json(&text, elements)
+                .with_context(|| format!("{}", path.display()))?
+        }
+        None => {
+            let result = run(
+                &wing,
+                &config.kinematics(),
+                &config.flight(),
+                &config.analysis,
+                0,
+                |done, total| {
+                    if show && (done % 10 == 0 || done == total) {
+                        eprint!("\rsystem analysis: step {done}/{total}");
+                        if done == total {
+                            eprintln!();
+                        }
+                    }
+                },
+            )?;
+            PressureHistory::new(result.dt_s, result.pressure_history, elements)?
+        }
+    };
+    let problem = DesignProblem::wing(
+        &wing.wing,
+        fwav::shell::material::Layer::CARBON,
+        fwav::shell::material::Layer::MYLAR,
+    );
+    let settings = config.topology.settings();
+    let result = optimize(&problem, &pressure, &wing.densities, &settings, |c| {
+        if show {
+            eprintln!(
+                "ESLSO cycle {}: strain energy {:.4e} J, mass fraction {:.3}, peak displacement {:.1} mm, {} elements changed ({:.0} s)",
+                c.cycle,
+                c.strain_energy_j,
+                c.mass_fraction,
+                1e3 * c.peak_displacement_m,
+                c.changed,
+                c.analysis_s + c.optimization_s
+            );
+        }
+    })?;
+    let seconds = started.elapsed().as_secs_f64();
+    write_outputs(a, &problem, &result)?;
+    let mass = problem.mass_fraction(&result.layout_densities());
+    if a.json {
+        let summary = serde_json::json!({
+            "converged": result.converged,
+            "cycles": result.cycles,
+            "layout_mass_fraction": mass,
+            "carbon_elements": result.layout.iter().filter(|&&c| c).count(),
+            "elements": elements,
+            "seconds": seconds,
+            "out": a.out,
+        });
+        println!("{summary:#}");
+    } else {
+        for c in &result.cycles {
+            println!(
+                "cycle {}: strain energy {:.4e} J, mass fraction {:.3}, {} elements changed",
+                c.cycle, c.strain_energy_j, c.mass_fraction, c.changed
+            );
+        }
+        println!(
+            "{} after {} cycles: carbon mass fraction {mass:.3}; results in {} ({seconds:.0} s)",
+            if result.converged {
+                "converged (the layout no longer changes)"
+            } else {
+                "NOT converged (the layout still changed at the cycle cap)"
+            },
+            result.cycles.len(),
+            a.out.display()
+        );
+    }
+    Ok(())
+}
+
+fn write_outputs(a: &TopologyArgs, problem: &DesignProblem, result: &EslsoResult) -> Result<()> {
+    let dir = &a.out;
+    std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+    let layout = result.layout_densities();
+    let design: Vec<f64> = problem
+        .design
+        .iter()
+        .map(|&d| f64::from(u8::from(d)))
+        .collect();
+    vtu::write(
+        &dir.join("layout.vtu"),
+        &problem.mesh,
+        &[
+            Field::CellScalar("carbon", &layout),
+            Field::CellScalar("simp_density", &result.densities),
+            Field::CellScalar("design_domain", &design),
+        ],
+    )?;
+    picture::planform(
+        &problem.mesh,
+        &result.layout,
+        &format!(
+            "carbon layout after {} ESLSO cycles{}",
+            result.cycles.len(),
+            if result.converged {
+                ""
+            } else {
+                " (not converged)"
+            }
+        ),
+        1200,
+        &dir.join("layout.png"),
+    )?;
+    let mut csv = String::from(
+        "cycle,strain_energy_j,mass_fraction,peak_displacement_m,newton_iterations,simp_iterations,simp_converged,simp_objective_j,changed,analysis_s,optimization_s\n",
+    );
+    for c in &result.cycles {
+        csv.push_str(&format!(
+            "{},{},{},{},{},{},{},{},{},{},{}\n",
+            c.cycle,
+            c.strain_energy_j,
+            c.mass_fraction,
+            c.peak_displacement_m,
+            c.newton_iterations,
+            c.simp_iterations,
+            c.simp_converged,
+            c.simp_objective_j,
+            c.changed,
+            c.analysis_s,
+            c.optimization_s
+        ));
+    }
+    let path = dir.join("cycles.csv");
+    std::fs::write(&path, csv).with_context(|| format!("writing {}", path.display()))?;
+    let path = dir.join("topology.json");
+    let text = serde_json::json!({
+        "description": "ESLSO result: carbon (1) or mylar only (0) per shell element, the last SIMP densities, every cycle",
+        "converged": result.converged,
+        "carbon": layout,
+        "simp_density": result.densities,
+        "cycles": result.cycles,
+    })
+    .to_string();
+    std::fs::write(&path, text).with_context(|| format!("writing {}", path.display()))?;
+    Ok(())
+}
