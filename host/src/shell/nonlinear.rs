@@ -5,17 +5,12 @@
 
 use std::sync::Arc;
 
-use faer::linalg::solvers::Solve;
-use faer::sparse::linalg::solvers::Llt;
-use faer::Mat;
-
 use super::assembly::{element_dofs, AssemblyError};
 use super::corotational::{Configuration, Corotational, ElementResponse};
-use super::dynamics::add_diagonal;
 use super::element::ElementMatrix;
 use super::material::Section;
 use super::mesh::ShellMesh;
-use super::structure::Structure;
+use super::structure::{OrderedFactor, Structure};
 
 /// Why a nonlinear solve stopped.
 #[derive(Debug, thiserror::Error)]
@@ -147,13 +142,7 @@ impl<'a> NonlinearStatic<'a> {
                     break;
                 }
                 let factor = factor_tangent(&self.structure, &responses, None)?;
-                let rhs = Mat::from_fn(residual.len(), 1, |i, _| residual[i]);
-                let delta = factor.solve(&rhs);
-                let increment = map.expand(
-                    &(0..residual.len())
-                        .map(|i| delta[(i, 0)])
-                        .collect::<Vec<_>>(),
-                );
+                let increment = factor.solve(&[map.expand(&residual)])?;
                 c.update(&increment);
             }
             if !converged {
@@ -189,18 +178,18 @@ pub(crate) fn internal_force(mesh: &ShellMesh, responses: &[ElementResponse]) ->
 /// if given: the full tangent, or its material part where the full one is
 /// not positive definite (far from equilibrium after a large step; Newton
 /// then converges linearly until it is again).
-pub(crate) fn factor_tangent(
-    structure: &Structure,
+pub(crate) fn factor_tangent<'s>(
+    structure: &'s Structure,
     responses: &[ElementResponse],
     diagonal: Option<&[f64]>,
-) -> Result<Llt<usize, f64>, AssemblyError> {
+) -> Result<OrderedFactor<'s>, AssemblyError> {
     let factor = |pick: fn(&ElementResponse) -> ElementMatrix| {
         let matrices: Vec<_> = responses.iter().map(pick).collect();
-        let mut k = structure.assemble(&matrices)?;
+        let mut k = structure.assemble_matrices_ordered(&matrices)?;
         if let Some(d) = diagonal {
-            add_diagonal(&mut k, d);
+            structure.add_diagonal(&mut k, d)?;
         }
-        structure.factorize(&k)
+        OrderedFactor::new(structure, &k)
     };
     factor(|r| r.tangent).or_else(|_| factor(|r| r.material))
 }

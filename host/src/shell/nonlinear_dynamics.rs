@@ -20,8 +20,6 @@
 
 use std::sync::Arc;
 
-use faer::linalg::solvers::Solve;
-use faer::Mat;
 use nalgebra::{Rotation3, Vector3};
 
 use super::assembly::{self, AssemblyError};
@@ -72,6 +70,15 @@ pub struct NonlinearTransient<'a> {
     /// where every force is small (a load brought in from zero) are not
     /// asked for a residual below the internal forces' round-off.
     pub reference_force: f64,
+    /// The Newton iteration of a step from which the matrix carries the
+    /// stress-dependent (geometric) part of the tangent (1 by default:
+    /// always). Before it an iteration costs a sixth of the element work
+    /// and converges linearly, fast where that part is small against the
+    /// material stiffness and the inertia shift; a step that needs more
+    /// (thin membranes under stress, whose stiffness is mostly
+    /// geometric) gets the full tangent from this iteration on. The
+    /// converged state is the same to the tolerance.
+    pub geometric_from: usize,
 }
 
 impl<'a> NonlinearTransient<'a> {
@@ -92,6 +99,7 @@ impl<'a> NonlinearTransient<'a> {
             tolerance: 1e-5,
             max_iterations: 25,
             reference_force: 0.0,
+            geometric_from: 1,
         })
     }
 
@@ -203,7 +211,11 @@ impl<'a> NonlinearTransient<'a> {
                         / (1.0 - af)
                 })
                 .collect();
-            let responses = self.elements.responses(self.mesh, &config);
+            let responses = if iteration >= self.geometric_from {
+                self.elements.responses(self.mesh, &config)
+            } else {
+                self.elements.material_responses(self.mesh, &config)
+            };
             let inertia: Vec<f64> = (0..n).map(|i| self.mass[i] * acc[i]).collect();
             let internal = internal_force(self.mesh, &responses);
             let residual: Vec<f64> = (0..n).map(|i| load[i] - inertia[i] - internal[i]).collect();
@@ -232,10 +244,7 @@ impl<'a> NonlinearTransient<'a> {
             let inertia_diagonal: Vec<f64> =
                 map.restrict(&self.mass).iter().map(|m| shift * m).collect();
             let factor = factor_tangent(&self.structure, &responses, Some(&inertia_diagonal))?;
-            let rhs = Mat::from_fn(free.len(), 1, |i, _| free[i]);
-            let dq = factor.solve(&rhs);
-            let mut dq_global =
-                map.expand(&(0..free.len()).map(|i| dq[(i, 0)]).collect::<Vec<_>>());
+            let mut dq_global = factor.solve(&[map.expand(&free)])?;
             // A Newton correction that turns some node by more than
             // MAX_TURN is shortened to it: far from the solution (a thin
             // flap snapping) the full correction overshoots into

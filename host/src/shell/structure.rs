@@ -310,6 +310,54 @@ impl Structure {
         Ok(OrderedStiffness { values })
     }
 
+    /// `sum_e K_e` over the free DOFs for one matrix per element (global
+    /// axes), as the ordered lower triangle for [`OrderedFactor`], gathered
+    /// straight from the matrices (for matrices that change every time,
+    /// such as tangents). Parallel over the values.
+    pub fn assemble_matrices_ordered(
+        &self,
+        matrices: &[ElementMatrix],
+    ) -> Result<OrderedStiffness, AssemblyError> {
+        if matrices.len() != self.connectivity.len() {
+            return Err(AssemblyError::Sections {
+                sections: matrices.len(),
+                elements: self.connectivity.len(),
+            });
+        }
+        let ordered = self.ordered()?;
+        let mut values = vec![0.0; ordered.pattern.row_idx().len()];
+        values.par_iter_mut().enumerate().for_each(|(q, value)| {
+            *value = ordered.gather[ordered.start[q]..ordered.start[q + 1]]
+                .iter()
+                .map(|&code| matrices[code as usize / 576].as_slice()[code as usize % 576])
+                .sum();
+        });
+        Ok(OrderedStiffness { values })
+    }
+
+    /// Adds `diagonal` (one value per free DOF, in the free numbering of
+    /// [`Self::map`]) to the diagonal of an ordered stiffness: a lumped
+    /// mass term of an iteration matrix, for instance.
+    pub fn add_diagonal(
+        &self,
+        k: &mut OrderedStiffness,
+        diagonal: &[f64],
+    ) -> Result<(), AssemblyError> {
+        let ordered = self.ordered()?;
+        if diagonal.len() != self.order.len() || k.values.len() != ordered.pattern.row_idx().len() {
+            return Err(AssemblyError::Length {
+                got: diagonal.len(),
+                expected: self.order.len(),
+            });
+        }
+        // Column k's rows start at k: its first value is the diagonal.
+        let col_ptr = ordered.pattern.col_ptr();
+        for (position, &free) in self.order.iter().enumerate() {
+            k.values[col_ptr[position]] += diagonal[free];
+        }
+        Ok(())
+    }
+
     /// The ordered lower triangle, built on first use.
     fn ordered(&self) -> Result<&Ordered, AssemblyError> {
         self.ordered

@@ -12,7 +12,8 @@
 //!    default, see [`EslForm`]) the d'Alembert loads `f - M a`, which
 //!    equal it for a linear response and stay free of the thin shell's
 //!    spurious membrane energy when the wing deflects many thicknesses;
-//! 3. linear static SIMP over all of them ([`super::simp`]);
+//! 3. linear static SIMP over all of them ([`super::simp`]), from the
+//!    previous cycle's design variables after the first;
 //! 4. transformation of the densities to 0/1 (carbon where the density
 //!    reaches the threshold, seed paper eq. (13));
 //! 5. stop when the 0/1 layout no longer changes, or at the cycle cap
@@ -265,6 +266,7 @@ pub fn optimize(
     let mut cycles = Vec::new();
     let mut densities = current.clone();
     let mut converged = false;
+    let mut warm: Option<Vec<f64>> = None;
     for cycle in 1..=settings.max_cycles {
         let clock = Instant::now();
         let sections = problem.sections(&current, penalty);
@@ -285,7 +287,9 @@ pub fn optimize(
             }
             EslForm::Dalembert => EquivalentStaticLoads::dalembert(response.dynamic_loads.clone()),
         };
-        let simp = simp::optimize(
+        // Each cycle's SIMP starts where the last one ended: the loads
+        // change little between cycles near convergence.
+        let simp = simp::optimize_from(
             &problem.mesh,
             &problem.fixed,
             &problem.design,
@@ -293,7 +297,9 @@ pub fn optimize(
             &problem.skin,
             &esl.loads,
             &settings.simp,
+            warm.as_deref(),
         )?;
+        warm = Some(simp.design_variables.clone());
         let next = transform(&simp.densities, &problem.design, settings.threshold);
         let changed = next.iter().zip(&layout).filter(|(a, b)| a != b).count();
         let record = EslsoCycle {

