@@ -12,7 +12,7 @@ use fwav::aeroelastic::analysis::{run, SystemSettings};
 use fwav::aeroelastic::kinematics::FlappingKinematics;
 use fwav::aeroelastic::model::{FlightCondition, WingModel};
 use fwav::shell::material::Layer;
-use fwav::topology::eslso::{optimize, DesignProblem, EslsoSettings};
+use fwav::topology::eslso::{optimize, DesignProblem, EslsoProgress, EslsoSettings};
 use fwav::topology::pressure::PressureHistory;
 use fwav::topology::response::nonlinear_response;
 
@@ -69,7 +69,18 @@ fn main() {
         1e3 * response.peak_displacement.iter().fold(0.0f64, |m, &p| m.max(p))
     );
     let clock = Instant::now();
-    let result = optimize(&problem, &pressure, &start, &settings, |c| {
+    let mut last = Instant::now();
+    let result = optimize(&problem, &pressure, &start, &settings, |p| {
+        let c = match p {
+            EslsoProgress::Step { cycle, done, total } => {
+                if last.elapsed().as_secs_f64() > 20.0 {
+                    last = Instant::now();
+                    println!("  cycle {cycle}: step {done}/{total} at {:.0} s", clock.elapsed().as_secs_f64());
+                }
+                return;
+            }
+            EslsoProgress::Cycle(c) => c,
+        };
         println!(
             "cycle {}: strain energy {:.4e} J, mass {:.3}, peak {:.2} mm, {} Newton, {} SIMP iterations, {} changed, {:.1} s + {:.1} s",
             c.cycle,

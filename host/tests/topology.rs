@@ -91,7 +91,7 @@ mod eslso {
     use fwav::shell::material::Section;
     use fwav::shell::mesh::ShellMesh;
     use fwav::topology::esl::{EquivalentStaticLoads, EslForm};
-    use fwav::topology::eslso::{optimize, DesignProblem, EslsoSettings};
+    use fwav::topology::eslso::{optimize, DesignProblem, EslsoProgress, EslsoSettings};
     use fwav::topology::pressure::PressureHistory;
     use fwav::topology::response::{nonlinear_response, ResponseSettings};
     use fwav::topology::simp::SimpSettings;
@@ -204,8 +204,10 @@ mod eslso {
         let pressure = pressure(&problem, scale);
         let settings = EslsoSettings { esl, ..settings() };
         let start = vec![start; problem.mesh.elements.len()];
-        let result = optimize(&problem, &pressure, &start, &settings, |c| {
-            eprintln!("{c:?}")
+        let result = optimize(&problem, &pressure, &start, &settings, |p| {
+            if let EslsoProgress::Cycle(c) = p {
+                eprintln!("{c:?}")
+            }
         })
         .unwrap();
         assert!(result.converged, "{:?}", result.cycles);

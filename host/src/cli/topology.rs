@@ -8,7 +8,7 @@ use std::time::Instant;
 use anyhow::{Context, Result};
 use fwav::aeroelastic::run;
 use fwav::shell::vtu::{self, Field};
-use fwav::topology::eslso::{optimize, DesignProblem, EslsoResult};
+use fwav::topology::eslso::{optimize, DesignProblem, EslsoProgress, EslsoResult};
 use fwav::topology::picture;
 use fwav::topology::pressure::PressureHistory;
 
@@ -75,10 +75,19 @@ pub fn run_command(a: &TopologyArgs) -> Result<()> {
         fwav::shell::material::Layer::MYLAR,
     );
     let settings = config.topology.settings();
-    let result = optimize(&problem, &pressure, &wing.densities, &settings, |c| {
-        if show {
+    let result = optimize(&problem, &pressure, &wing.densities, &settings, |p| {
+        if !show {
+            return;
+        }
+        if let EslsoProgress::Step { cycle, done, total } = p {
+            if done % 5 == 0 {
+                eprint!("\rESLSO cycle {cycle}: dynamic analysis step {done}/{total}");
+            }
+        }
+        if let EslsoProgress::Cycle(c) = p {
             eprintln!(
-                "ESLSO cycle {}: strain energy {:.4e} J, mass fraction {:.3}, peak displacement {:.1} mm, {} elements changed ({:.0} s)",
+                "\r
+ESLSO cycle {}: strain energy {:.4e} J, mass fraction {:.3}, peak displacement {:.1} mm, {} elements changed ({:.0} s)",
                 c.cycle,
                 c.strain_energy_j,
                 c.mass_fraction,

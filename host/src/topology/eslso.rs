@@ -213,6 +213,22 @@ pub enum EslsoError {
     Setting(String),
 }
 
+/// What [`optimize`] reports as it goes.
+#[derive(Clone, Copy, Debug)]
+pub enum EslsoProgress<'a> {
+    /// A step of a cycle's nonlinear dynamic analysis is done.
+    Step {
+        /// Cycle number from 1.
+        cycle: usize,
+        /// Steps done.
+        done: usize,
+        /// Steps in the analysis.
+        total: usize,
+    },
+    /// A cycle is done.
+    Cycle(&'a EslsoCycle),
+}
+
 /// 0/1 transformation (step 4): carbon where the density reaches
 /// `threshold`, and on every non-design element.
 pub fn transform(densities: &[f64], design: &[bool], threshold: f64) -> Vec<bool> {
@@ -225,7 +241,7 @@ pub fn transform(densities: &[f64], design: &[bool], threshold: f64) -> Vec<bool
 
 /// Runs ESLSO on `problem` under `pressure` from the design `start`
 /// (carbon density per element; the first cycle analyses it as given);
-/// `progress` hears of each finished cycle.
+/// `progress` hears of each analysis step and each finished cycle.
 ///
 /// Cost per cycle: one nonlinear dynamic analysis (see
 /// [`nonlinear_response`]) and one SIMP run (one factorization and one
@@ -235,7 +251,7 @@ pub fn optimize(
     pressure: &PressureHistory,
     start: &[f64],
     settings: &EslsoSettings,
-    mut progress: impl FnMut(&EslsoCycle),
+    mut progress: impl FnMut(EslsoProgress<'_>),
 ) -> Result<EslsoResult, EslsoError> {
     let n = problem.mesh.elements.len();
     if start.len() != n || problem.design.len() != n {
@@ -276,7 +292,7 @@ pub fn optimize(
             &problem.fixed,
             pressure,
             &settings.response,
-            |_, _| {},
+            |done, total| progress(EslsoProgress::Step { cycle, done, total }),
         )?;
         let analysis_s = clock.elapsed().as_secs_f64();
         let clock = Instant::now();
@@ -318,7 +334,7 @@ pub fn optimize(
             analysis_s,
             optimization_s: clock.elapsed().as_secs_f64(),
         };
-        progress(&record);
+        progress(EslsoProgress::Cycle(&record));
         cycles.push(record);
         densities = simp.densities;
         // The first cycle's start may be fractional: it has changed unless
