@@ -46,6 +46,25 @@ pub enum ConfigError {
     Wing(#[from] WingModelError),
 }
 
+/// A key's value, its allowed range (inclusive) and how the error names
+/// that range.
+pub(crate) type RangeCheck = (&'static str, f64, f64, f64, &'static str);
+
+/// Checks `(key, value, low, high, range text)` entries: the first value
+/// outside its range, or not finite, is the error.
+pub(crate) fn check_ranges(ranges: &[RangeCheck]) -> Result<(), ConfigError> {
+    for &(field, value, low, high, range) in ranges {
+        if !(value.is_finite() && (low..=high).contains(&value)) {
+            return Err(ConfigError::Range {
+                field,
+                value,
+                range,
+            });
+        }
+    }
+    Ok(())
+}
+
 /// The `[wing]` table.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -201,7 +220,7 @@ impl SystemConfig {
         let w = &self.wing;
         let k = &self.kinematics;
         let f = &self.flight;
-        let ranges: [(&'static str, f64, f64, f64, &'static str); 13] = [
+        let ranges: [RangeCheck; 13] = [
             ("wing.semi_span_m", w.semi_span_m, 0.01, 2.0, "[0.01, 2] m"),
             (
                 "wing.root_chord_m",
@@ -282,15 +301,7 @@ impl SystemConfig {
             ),
             ("flight.speed_m_s", f.speed_m_s, 0.1, 50.0, "[0.1, 50] m/s"),
         ];
-        for (field, value, low, high, range) in ranges {
-            if !(value.is_finite() && (low..=high).contains(&value)) {
-                return Err(ConfigError::Range {
-                    field,
-                    value,
-                    range,
-                });
-            }
-        }
+        check_ranges(&ranges)?;
         let d = &self.design;
         let level_sets: [(&'static str, [f64; 3], f64, f64, &'static str); 4] = [
             (

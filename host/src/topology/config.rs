@@ -12,7 +12,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::aeroelastic::config::ConfigError;
+use crate::aeroelastic::config::{check_ranges, ConfigError, RangeCheck};
 
 use super::esl::EslForm;
 use super::eslso::EslsoSettings;
@@ -107,7 +107,7 @@ impl TopologyConfig {
 
     /// Checks every key's range; the error names the key.
     pub fn check(&self) -> Result<(), ConfigError> {
-        let ranges: [(&'static str, f64, f64, f64, &'static str); 12] = [
+        let ranges: [RangeCheck; 12] = [
             (
                 "topology.mass_fraction",
                 self.mass_fraction,
@@ -175,16 +175,7 @@ impl TopologyConfig {
                 "[1e-12, 0.1]",
             ),
         ];
-        for (field, value, low, high, range) in ranges {
-            if !(value.is_finite() && (low..=high).contains(&value)) {
-                return Err(ConfigError::Range {
-                    field,
-                    value,
-                    range,
-                });
-            }
-        }
-        Ok(())
+        check_ranges(&ranges)
     }
 }
 
