@@ -130,9 +130,10 @@ impl<'a> NonlinearTransient<'a> {
                 .zip(&self.mass)
                 .map(|(v, m)| m * v * v)
                 .sum::<f64>();
+        // The energy needs no stress-dependent tangent.
         let strain = self
             .elements
-            .responses(self.mesh, &state.configuration)
+            .material_responses(self.mesh, &state.configuration)
             .iter()
             .map(|r| r.energy)
             .sum();
