@@ -65,6 +65,14 @@ impl ShellMesh {
         self.elements[e].map(|n| self.nodes[n])
     }
 
+    /// Area of element `e`, m²: half the cross product of its diagonals
+    /// (exact for a flat quadrilateral, the mean projection for a warped
+    /// one).
+    pub fn element_area(&self, e: usize) -> f64 {
+        let x = self.corners(e);
+        0.5 * (x[2] - x[0]).cross(&(x[3] - x[1])).norm()
+    }
+
     /// Number of degrees of freedom (six a node).
     pub fn dofs(&self) -> usize {
         6 * self.nodes.len()

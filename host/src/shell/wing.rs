@@ -145,10 +145,7 @@ mod tests {
         // 15 mm of 75 mm at 52 elements: nodes 0..=10.
         assert_eq!(w.root_nodes.len(), 11);
         let area: f64 = (0..w.mesh.elements.len())
-            .map(|e| {
-                let x = w.mesh.corners(e);
-                0.5 * (x[2] - x[0]).cross(&(x[3] - x[1])).norm()
-            })
+            .map(|e| w.mesh.element_area(e))
             .sum();
         assert!((area - 0.15 * (0.075 + 0.045) / 2.0).abs() < 1e-12);
         let bad = Planform {

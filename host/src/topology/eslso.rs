@@ -100,8 +100,7 @@ impl DesignProblem {
         let (mut carbon, mut full) = (0.0, 0.0);
         for (e, (&r, &d)) in densities.iter().zip(&self.design).enumerate() {
             if d {
-                let x = self.mesh.corners(e);
-                let area = 0.5 * (x[2] - x[0]).cross(&(x[3] - x[1])).norm();
+                let area = self.mesh.element_area(e);
                 carbon += r * area;
                 full += area;
             }

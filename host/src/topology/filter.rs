@@ -29,10 +29,7 @@ impl DensityFilter {
             .map(|e| mesh.corners(e).iter().sum::<Vector3<f64>>() / 4.0)
             .collect();
         let areas: Vec<f64> = (0..mesh.elements.len())
-            .map(|e| {
-                let x = mesh.corners(e);
-                0.5 * (x[2] - x[0]).cross(&(x[3] - x[1])).norm()
-            })
+            .map(|e| mesh.element_area(e))
             .collect();
         let cell = |p: &Vector3<f64>| {
             (

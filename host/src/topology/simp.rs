@@ -158,12 +158,7 @@ pub fn optimize_from(
         )));
     }
     let n = mesh.elements.len();
-    let area: Vec<f64> = (0..n)
-        .map(|e| {
-            let x = mesh.corners(e);
-            0.5 * (x[2] - x[0]).cross(&(x[3] - x[1])).norm()
-        })
-        .collect();
+    let area: Vec<f64> = (0..n).map(|e| mesh.element_area(e)).collect();
     let design_area: f64 = (0..n).filter(|&e| design[e]).map(|e| area[e]).sum();
     let filter = DensityFilter::new(mesh, s.filter_radius);
     let structure = Structure::new(mesh, fixed)?;
