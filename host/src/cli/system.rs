@@ -153,14 +153,18 @@ pub fn run_command(a: &SystemArgs) -> Result<()> {
     Ok(())
 }
 
+/// Writes `text` to `dir/name` through a temporary file renamed into
+/// place, so a reader never sees half a file.
+pub fn write_atomic(dir: &Path, name: &str, text: String) -> Result<()> {
+    let path = dir.join(name);
+    let temporary = dir.join(format!("{name}.partial"));
+    std::fs::write(&temporary, text).with_context(|| format!("writing {}", path.display()))?;
+    std::fs::rename(&temporary, &path).with_context(|| format!("writing {}", path.display()))
+}
+
 fn write_outputs(dir: &Path, elements: &[[usize; 4]], result: &SystemResult) -> Result<()> {
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-    let atomic = |name: &str, text: String| -> Result<()> {
-        let path = dir.join(name);
-        let temporary = dir.join(format!("{name}.partial"));
-        std::fs::write(&temporary, text).with_context(|| format!("writing {}", path.display()))?;
-        std::fs::rename(&temporary, &path).with_context(|| format!("writing {}", path.display()))
-    };
+    let atomic = |name: &str, text: String| write_atomic(dir, name, text);
     atomic(
         "section.json",
         serde_json::json!({

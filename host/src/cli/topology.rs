@@ -184,9 +184,7 @@ fn write_outputs(a: &TopologyArgs, problem: &DesignProblem, result: &EslsoResult
             c.optimization_s
         ));
     }
-    let path = dir.join("cycles.csv");
-    std::fs::write(&path, csv).with_context(|| format!("writing {}", path.display()))?;
-    let path = dir.join("topology.json");
+    super::system::write_atomic(dir, "cycles.csv", csv)?;
     let text = serde_json::json!({
         "description": "ESLSO result: carbon (1) or mylar only (0) per shell element, the last SIMP densities, every cycle",
         "converged": result.converged,
@@ -195,6 +193,5 @@ fn write_outputs(a: &TopologyArgs, problem: &DesignProblem, result: &EslsoResult
         "cycles": result.cycles,
     })
     .to_string();
-    std::fs::write(&path, text).with_context(|| format!("writing {}", path.display()))?;
-    Ok(())
+    super::system::write_atomic(dir, "topology.json", text)
 }
