@@ -148,8 +148,29 @@ impl<'a> NonlinearTransient<'a> {
         load: &[f64],
         prescribed: &Prescribed,
     ) -> Result<usize, NonlinearError> {
+        self.step_with(
+            state,
+            load,
+            prescribed,
+            self.settings.dt,
+            self.max_iterations,
+        )
+    }
+
+    /// [`Self::step`] with a step of `h` seconds instead of the settings'
+    /// and at most `max_iterations` Newton iterations (the generalized-α
+    /// parameters do not depend on the step, so one model serves steps of
+    /// any length, e.g. a step retried as two halves). `state` is left as
+    /// it was if Newton does not converge.
+    pub fn step_with(
+        &self,
+        state: &mut DynamicState,
+        load: &[f64],
+        prescribed: &Prescribed,
+        h: f64,
+        max_iterations: usize,
+    ) -> Result<usize, NonlinearError> {
         let (am, af, gamma, beta) = self.settings.parameters();
-        let h = self.settings.dt;
         let n = self.mesh.dofs();
         if load.len() != n {
             return Err(AssemblyError::Length {
@@ -205,7 +226,7 @@ impl<'a> NonlinearTransient<'a> {
         let acc_per_a = (1.0 - am) / (1.0 - af);
         let shift = acc_per_a / (beta * h * h);
         let mut last_relative = f64::NAN;
-        for iteration in 1..=self.max_iterations {
+        for iteration in 1..=max_iterations {
             let acc: Vec<f64> = (0..n)
                 .map(|i| {
                     (((1.0 - am) * a_new[i] + am * old.algorithmic[i]) - af * old.acceleration[i])
@@ -268,7 +289,7 @@ impl<'a> NonlinearTransient<'a> {
         Err(NonlinearError::StepNoConvergence {
             step: (state.time / h).round() as usize + 1,
             time: state.time + h,
-            iterations: self.max_iterations,
+            iterations: max_iterations,
             residual: last_relative,
         })
     }

@@ -19,11 +19,10 @@
 //! rotation vectors, rad, per node, the form of a linear displacement
 //! vector) and the strain energies of the co-rotational elements.
 
-use std::sync::OnceLock;
-
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
+use crate::shell::assembly::DofMap;
 use crate::shell::corotational::Configuration;
 use crate::shell::dynamics::GeneralizedAlpha;
 use crate::shell::material::Section;
@@ -141,29 +140,14 @@ pub fn nonlinear_response(
     // The largest load of the history sets the force scale of Newton's
     // tolerance where the ramped-in load is still small.
     let initial = Configuration::initial(mesh.nodes.len());
-    let held: std::collections::HashSet<usize> = fixed.iter().copied().collect();
+    let map = DofMap::new(mesh.dofs(), fixed).map_err(NonlinearError::from)?;
     let mut reference_force = 0.0f64;
     for sample in &pressure.samples {
-        let f = follower_pressure_loads(mesh, &initial, sample)?;
-        let norm = f
-            .iter()
-            .enumerate()
-            .filter(|(i, _)| !held.contains(i))
-            .map(|(_, v)| v * v)
-            .sum::<f64>()
-            .sqrt();
-        reference_force = reference_force.max(norm);
+        let free = map.restrict(&follower_pressure_loads(mesh, &initial, sample)?);
+        reference_force = reference_force.max(free.iter().map(|v| v * v).sum::<f64>().sqrt());
     }
-    let stepper = Stepper {
-        mesh,
-        sections,
-        fixed,
-        settings: *s,
-        reference_force,
-        dt,
-        levels: (0..=MAX_HALVINGS).map(|_| OnceLock::new()).collect(),
-    };
-    let transient = stepper.level(0)?;
+    let stepper = Stepper::new(mesh, sections, fixed, s, reference_force, dt)?;
+    let transient = &stepper.transient;
     let mut state = transient.rest();
     let mut out = SampledResponse {
         times: Vec::new(),
@@ -223,16 +207,12 @@ pub fn nonlinear_response(
 
 /// Steps that halve themselves where Newton fails: a step that does not
 /// converge is retried as two steps of half the length with the pressure
-/// interpolated linearly, down to `MAX_HALVINGS` halvings.
+/// interpolated linearly, down to `MAX_HALVINGS` halvings, all on one
+/// transient model.
 struct Stepper<'a> {
     mesh: &'a ShellMesh,
-    sections: &'a [Section],
-    fixed: &'a [usize],
-    settings: ResponseSettings,
-    reference_force: f64,
+    transient: NonlinearTransient<'a>,
     dt: f64,
-    /// The transient at `dt / 2^k`, built when first needed.
-    levels: Vec<OnceLock<NonlinearTransient<'a>>>,
 }
 
 /// The Newton iteration from which a step uses the full tangent.
@@ -242,40 +222,46 @@ const GEOMETRIC_FROM: usize = 5;
 const MAX_HALVINGS: usize = 3;
 
 /// Newton iterations a step before it is halved (at the deepest level,
-/// the transient's own allowance).
+/// [`ITERATIONS_AT_THE_DEEPEST`]).
 const ITERATIONS_BEFORE_HALVING: usize = 15;
 
+/// Newton iterations allowed a step that can no longer be halved.
+const ITERATIONS_AT_THE_DEEPEST: usize = 40;
+
 impl<'a> Stepper<'a> {
-    fn level(&self, k: usize) -> Result<&NonlinearTransient<'a>, ResponseError> {
-        if let Some(t) = self.levels[k].get() {
-            return Ok(t);
-        }
-        let mut t = NonlinearTransient::new(
-            self.mesh,
-            self.sections,
-            self.fixed,
+    fn new(
+        mesh: &'a ShellMesh,
+        sections: &[Section],
+        fixed: &[usize],
+        settings: &ResponseSettings,
+        reference_force: f64,
+        dt: f64,
+    ) -> Result<Self, ResponseError> {
+        let mut transient = NonlinearTransient::new(
+            mesh,
+            sections,
+            fixed,
             GeneralizedAlpha {
-                dt: self.dt / f64::from(1u32 << k),
-                rho_inf: self.settings.rho_inf,
+                dt,
+                rho_inf: settings.rho_inf,
                 mass_damping: 0.0,
                 stiffness_damping: 0.0,
             },
         )?;
-        t.tolerance = self.settings.tolerance;
-        t.reference_force = self.reference_force;
+        transient.tolerance = settings.tolerance;
+        transient.reference_force = reference_force;
         // The first iterations without the stress-dependent part of the
         // tangent: the inertia shift of a step this short dominates it
         // except on mylar-only regions, whose steps then get the full
         // tangent. On the small ESLSO test case the material tangent alone
         // made the analyses 2.4 times faster to summed strain energies
         // 0.14% apart.
-        t.geometric_from = GEOMETRIC_FROM;
-        t.max_iterations = if k == MAX_HALVINGS {
-            40
-        } else {
-            ITERATIONS_BEFORE_HALVING
-        };
-        Ok(self.levels[k].get_or_init(|| t))
+        transient.geometric_from = GEOMETRIC_FROM;
+        Ok(Self {
+            mesh,
+            transient,
+            dt,
+        })
     }
 
     /// Advances `state` by one step of level `k` from the pressure `from`
@@ -288,15 +274,20 @@ impl<'a> Stepper<'a> {
         from: &[f64],
         to: &[f64],
     ) -> Result<usize, ResponseError> {
-        let transient = self.level(k)?;
         let load = follower_pressure_loads(self.mesh, &state.configuration, to)?;
-        match transient.step(state, &load, &Vec::new()) {
+        let cap = if k == MAX_HALVINGS {
+            ITERATIONS_AT_THE_DEEPEST
+        } else {
+            ITERATIONS_BEFORE_HALVING
+        };
+        let h = self.dt / f64::from(1u32 << k);
+        match self.transient.step_with(state, &load, &Vec::new(), h, cap) {
             Ok(iterations) => Ok(iterations),
             Err(NonlinearError::StepNoConvergence { .. }) if k < MAX_HALVINGS => {
                 let middle: Vec<f64> = from.iter().zip(to).map(|(a, b)| 0.5 * (a + b)).collect();
                 let first = self.advance(k + 1, state, from, &middle)?;
                 let second = self.advance(k + 1, state, &middle, to)?;
-                Ok(transient.max_iterations + first + second)
+                Ok(cap + first + second)
             }
             Err(e) => Err(e.into()),
         }
