@@ -7,7 +7,6 @@ use std::sync::Arc;
 
 use super::assembly::{element_dofs, AssemblyError};
 use super::corotational::{Configuration, Corotational, ElementResponse};
-use super::element::ElementMatrix;
 use super::material::Section;
 use super::mesh::ShellMesh;
 use super::structure::{OrderedFactor, Structure};
@@ -141,7 +140,9 @@ impl<'a> NonlinearStatic<'a> {
                     converged = true;
                     break;
                 }
-                let factor = factor_tangent(&self.structure, &responses, None)?;
+                let factor = factor_tangent(&self.structure, &responses, None, || {
+                    self.elements.material_responses(self.mesh, &c)
+                })?;
                 let increment = factor.solve(&[map.expand(&residual)])?;
                 c.update(&increment);
             }
@@ -175,21 +176,22 @@ pub(crate) fn internal_force(mesh: &ShellMesh, responses: &[ElementResponse]) ->
 }
 
 /// The factorized tangent over the free DOFs, plus `diagonal` (free DOFs)
-/// if given: the full tangent, or its material part where the full one is
+/// if given: the full tangent, or the material part of `material()` (the
+/// responses' material tangents, computed only then) where the full one is
 /// not positive definite (far from equilibrium after a large step; Newton
 /// then converges linearly until it is again).
 pub(crate) fn factor_tangent<'s>(
     structure: &'s Structure,
     responses: &[ElementResponse],
     diagonal: Option<&[f64]>,
+    material: impl FnOnce() -> Vec<ElementResponse>,
 ) -> Result<OrderedFactor<'s>, AssemblyError> {
-    let factor = |pick: fn(&ElementResponse) -> ElementMatrix| {
-        let matrices: Vec<_> = responses.iter().map(pick).collect();
-        let mut k = structure.assemble_matrices_ordered(&matrices)?;
+    let factor = |responses: &[ElementResponse]| {
+        let mut k = structure.assemble_ordered_from(responses.len(), |e| &responses[e].tangent)?;
         if let Some(d) = diagonal {
             structure.add_diagonal(&mut k, d)?;
         }
         OrderedFactor::new(structure, &k)
     };
-    factor(|r| r.tangent).or_else(|_| factor(|r| r.material))
+    factor(responses).or_else(|_| factor(&material()))
 }

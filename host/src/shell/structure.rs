@@ -318,9 +318,20 @@ impl Structure {
         &self,
         matrices: &[ElementMatrix],
     ) -> Result<OrderedStiffness, AssemblyError> {
-        if matrices.len() != self.connectivity.len() {
+        self.assemble_ordered_from(matrices.len(), |e| &matrices[e])
+    }
+
+    /// [`Self::assemble_matrices_ordered`] with element `e`'s matrix given
+    /// by `matrix(e)` for `count` elements (so that matrices kept inside
+    /// other per-element results need not be copied out first).
+    pub fn assemble_ordered_from<'m>(
+        &self,
+        count: usize,
+        matrix: impl Fn(usize) -> &'m ElementMatrix + Sync,
+    ) -> Result<OrderedStiffness, AssemblyError> {
+        if count != self.connectivity.len() {
             return Err(AssemblyError::Sections {
-                sections: matrices.len(),
+                sections: count,
                 elements: self.connectivity.len(),
             });
         }
@@ -329,7 +340,7 @@ impl Structure {
         values.par_iter_mut().enumerate().for_each(|(q, value)| {
             *value = ordered.gather[ordered.start[q]..ordered.start[q + 1]]
                 .iter()
-                .map(|&code| matrices[code as usize / 576].as_slice()[code as usize % 576])
+                .map(|&code| matrix(code as usize / 576).as_slice()[code as usize % 576])
                 .sum();
         });
         Ok(OrderedStiffness { values })
