@@ -26,3 +26,4 @@ pub mod profile_file;
 pub mod shell;
 pub mod topology;
 pub mod uvlm;
+pub mod validation;

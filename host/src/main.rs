@@ -12,6 +12,7 @@ mod cli {
     pub mod kinematics;
     pub mod system;
     pub mod topology;
+    pub mod validate;
 }
 use fwav::profile_file::ProfileFile;
 use fwav_protocol::document::ProfileDocument;
@@ -55,6 +56,10 @@ enum Command {
     /// nonlinear dynamic topology optimization with equivalent static
     /// loads (ESLSO) under the flapping pressure history.
     Topology(cli::topology::TopologyArgs),
+    /// Run the solvers' validation cases (aero2d, shell FE, UVLM,
+    /// optimizers) against published and analytic references: value,
+    /// reference, error, tolerance and pass for each; exit 1 if any fails.
+    Validate(cli::validate::ValidateArgs),
     /// List serial ports, marking those where an fwav device answers.
     Ports {
         /// Machine-readable output.
@@ -140,6 +145,7 @@ fn main() -> ExitCode {
         Command::SystemAnalysis(args) => cli::system::run_command(&args),
         Command::Kinematics(args) => cli::kinematics::run_command(&args),
         Command::Topology(args) => cli::topology::run_command(&args),
+        Command::Validate(args) => cli::validate::run_command(&args),
         Command::Ports { json } => cli::fly::ports(json),
         Command::Upload {
             port,

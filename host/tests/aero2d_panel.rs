@@ -10,203 +10,17 @@ use fwav::aero2d::panel::{
     solve_steady, PanelSettings, PanelSolver, SectionShape, ShapeHistory, DEFAULT_PANELS,
 };
 use fwav::aero2d::theory::{garrick_plunge, wagner};
-
-/// Minimal complex arithmetic for the conformal map.
-#[derive(Clone, Copy, Debug)]
-struct C(f64, f64);
-
-impl C {
-    fn add(self, o: C) -> C {
-        C(self.0 + o.0, self.1 + o.1)
-    }
-    fn sub(self, o: C) -> C {
-        C(self.0 - o.0, self.1 - o.1)
-    }
-    fn mul(self, o: C) -> C {
-        C(self.0 * o.0 - self.1 * o.1, self.0 * o.1 + self.1 * o.0)
-    }
-    fn div(self, o: C) -> C {
-        let d = o.0 * o.0 + o.1 * o.1;
-        C(
-            (self.0 * o.0 + self.1 * o.1) / d,
-            (self.1 * o.0 - self.0 * o.1) / d,
-        )
-    }
-    fn scale(self, s: f64) -> C {
-        C(self.0 * s, self.1 * s)
-    }
-    fn abs(self) -> f64 {
-        self.0.hypot(self.1)
-    }
-    fn arg(self) -> f64 {
-        self.1.atan2(self.0)
-    }
-    fn polar(r: f64, t: f64) -> C {
-        C(r * t.cos(), r * t.sin())
-    }
-    /// Principal power.
-    fn powf(self, n: f64) -> C {
-        C::polar(self.abs().powf(n), n * self.arg())
-    }
-}
-
-/// A Kármán–Trefftz section and its exact potential flow (conformal map of
-/// the flow past a circle; Milne-Thomson, Theoretical Aerodynamics, 1958,
-/// ch. 7; Katz & Plotkin 2001, section 6.7 for the Joukowski special case):
-/// circle of centre `zeta_c = (-mx, my)` through `zeta = a`,
-/// `z = n a [(zeta + a)^n + (zeta - a)^n] / [(zeta + a)^n - (zeta - a)^n]`,
-/// `n = 2 - tau/pi` for a trailing-edge angle `tau` (n = 2: Joukowski).
-/// In the circle plane the flow at angle `alpha'` with the clockwise
-/// circulation `Gamma = 4 pi U R sin(alpha' + beta)` (Kutta: stagnation at
-/// `zeta = a`, `beta = atan(my / (a + mx))`) has complex velocity
-/// `W = U [e^(-i alpha') - R^2 e^(i alpha') / (zeta - zeta_c)^2] + i Gamma / (2 pi (zeta - zeta_c))`;
-/// in the section plane `W / (dz/dzeta)`, with
-/// `dz/dzeta = 4 n^2 a^2 w / ((1 - w)^2 (zeta^2 - a^2))`,
-/// `w = ((zeta - a)/(zeta + a))^n`; `dz/dzeta -> 1` far away, so the lift
-/// is `rho U Gamma` and `CL = 2 Gamma / (U c)`.
-struct KarmanTrefftz {
-    a: f64,
-    n: f64,
-    centre: C,
-    radius: f64,
-    beta: f64,
-    /// Leading edge (farthest point from the trailing edge), chord, and
-    /// chord-line angle, in the section plane.
-    le: C,
-    chord: f64,
-    chord_angle: f64,
-}
-
-impl KarmanTrefftz {
-    fn new(a: f64, tau: f64, mx: f64, my: f64) -> Self {
-        let centre = C(-mx, my);
-        let radius = (a + mx).hypot(my);
-        let beta = my.atan2(a + mx);
-        let mut s = Self {
-            a,
-            n: 2.0 - tau / PI,
-            centre,
-            radius,
-            beta,
-            le: C(0.0, 0.0),
-            chord: 0.0,
-            chord_angle: 0.0,
-        };
-        // Leading edge: the farthest point from the trailing edge (dense
-        // sampling, then golden-section refinement).
-        let te = s.z(-beta);
-        let dist = |t: f64| s.z(t).sub(te).abs();
-        let k = (0..3600)
-            .max_by(|&i, &j| dist(i as f64 * PI / 1800.0).total_cmp(&dist(j as f64 * PI / 1800.0)))
-            .unwrap();
-        let (mut lo, mut hi) = (
-            (k as f64 - 1.0) * PI / 1800.0,
-            (k as f64 + 1.0) * PI / 1800.0,
-        );
-        let g = 0.5 * (5f64.sqrt() - 1.0);
-        for _ in 0..100 {
-            let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
-            if dist(x1) > dist(x2) {
-                hi = x2;
-            } else {
-                lo = x1;
-            }
-        }
-        s.le = s.z(0.5 * (lo + hi));
-        s.chord = te.sub(s.le).abs();
-        s.chord_angle = te.sub(s.le).arg();
-        s
-    }
-
-    fn zeta(&self, theta: f64) -> C {
-        self.centre.add(C::polar(self.radius, theta))
-    }
-
-    fn z(&self, theta: f64) -> C {
-        let zeta = self.zeta(theta);
-        let a = C(self.a, 0.0);
-        let w = zeta.sub(a).div(zeta.add(a)).powf(self.n);
-        C(1.0, 0.0)
-            .add(w)
-            .div(C(1.0, 0.0).sub(w))
-            .scale(self.n * self.a)
-    }
-
-    /// Body frame: leading edge at 0, trailing edge at (1, 0).
-    fn body(&self, theta: f64) -> (f64, f64) {
-        let p = self
-            .z(theta)
-            .sub(self.le)
-            .mul(C::polar(1.0, -self.chord_angle))
-            .scale(1.0 / self.chord);
-        (p.0, p.1)
-    }
-
-    /// `panels + 1` points clockwise from the trailing edge (decreasing
-    /// circle angle: the map keeps the sense of travel), uniform in the
-    /// circle angle.
-    fn points(&self, panels: usize) -> Vec<(f64, f64)> {
-        let mut p: Vec<(f64, f64)> = (0..=panels)
-            .map(|j| self.body(self.theta(j as f64, panels)))
-            .collect();
-        p[panels] = p[0];
-        p
-    }
-
-    /// Circle angle of point `j` of `panels`: clustered towards the
-    /// trailing edge, `u - sin(2 pi u) / (4 pi)` of the way round.
-    fn theta(&self, j: f64, panels: usize) -> f64 {
-        let u = j / panels as f64;
-        -self.beta - 2.0 * PI * (u - 0.8 * (4.0 * PI * u).sin() / (4.0 * PI))
-    }
-
-    /// The circle angle of the surface point nearest `p` (body frame),
-    /// between the circle angles `t0` and `t1` (golden section).
-    fn nearest(&self, p: [f64; 2], t0: f64, t1: f64) -> f64 {
-        let dist = |t: f64| {
-            let q = self.body(t);
-            (q.0 - p[0]).hypot(q.1 - p[1])
-        };
-        let (mut lo, mut hi) = (t0.min(t1), t0.max(t1));
-        let g = 0.5 * (5f64.sqrt() - 1.0);
-        for _ in 0..80 {
-            let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
-            if dist(x1) < dist(x2) {
-                hi = x2;
-            } else {
-                lo = x1;
-            }
-        }
-        0.5 * (lo + hi)
-    }
-
-    /// Exact `(CL, Cp(theta))` at angle of attack `alpha` to the chord.
-    fn flow(&self, alpha: f64) -> (f64, impl Fn(f64) -> f64 + '_) {
-        let alpha_z = alpha + self.chord_angle;
-        let gamma = 4.0 * PI * self.radius * (alpha_z + self.beta).sin();
-        let cl = 2.0 * gamma / self.chord;
-        let cp = move |theta: f64| {
-            let zeta = self.zeta(theta);
-            let r = zeta.sub(self.centre);
-            let a = C(self.a, 0.0);
-            let w = zeta.sub(a).div(zeta.add(a)).powf(self.n);
-            let one_minus = C(1.0, 0.0).sub(w);
-            let dz = w
-                .scale(4.0 * self.n * self.n * self.a * self.a)
-                .div(one_minus.mul(one_minus).mul(zeta.mul(zeta).sub(a.mul(a))));
-            let big_w = C::polar(1.0, -alpha_z)
-                .sub(C::polar(self.radius * self.radius, alpha_z).div(r.mul(r)))
-                .add(C(0.0, gamma / (2.0 * PI)).div(r));
-            1.0 - (big_w.abs() / dz.abs()).powi(2)
-        };
-        (cl, cp)
-    }
-}
+use fwav::validation::aero2d::{
+    karman_trefftz_section, panel_karman_trefftz_lift, panel_naca0012_lift_slope,
+};
 
 /// A cambered Kármán–Trefftz section (10° trailing-edge angle, 11%
 /// thick, 1% camber) at 5° in steady flow against its exact solution
-/// (derived above): the lift within 1% and the surface pressure within 0.02
-/// ahead of 95% chord, compared at the surface point nearest each
+/// (`fwav::validation::karman_trefftz`, a conformal map: Milne-Thomson,
+/// Theoretical Aerodynamics, 1958, ch. 7; Katz & Plotkin 2001, section 6.7
+/// for the Joukowski special case): the lift within 1% (the validation
+/// case `aero2d/panel-karman-trefftz-lift`) and the surface pressure within
+/// 0.02 ahead of 95% chord, compared at the surface point nearest each
 /// collocation point. Points uniform in `u - 0.8 sin(4 pi u) / (4 pi)` of
 /// the way round the circle (clustered at both edges). Measured at 160
 /// panels: CL -0.78%, max |Cp error| 0.015 (at the leading edge); at 320
@@ -215,7 +29,7 @@ impl KarmanTrefftz {
 /// -0.20% at 640): the trailing-edge corner dominates the error.
 #[test]
 fn karman_trefftz_steady_lift_and_pressure() {
-    let section = KarmanTrefftz::new(0.25, 10f64.to_radians(), 0.02, 0.01);
+    let section = karman_trefftz_section();
     let alpha = 5f64.to_radians();
     let (cl_exact, cp_exact) = section.flow(alpha);
     let panels = DEFAULT_PANELS;
@@ -243,7 +57,10 @@ fn karman_trefftz_steady_lift_and_pressure() {
         worst.0,
         worst.1
     );
-    assert!(error.abs() < 0.01, "{:+.3}%", 100.0 * error);
+    let case = panel_karman_trefftz_lift().run();
+    assert_eq!(case.value, Some(steady.cl));
+    assert_eq!((case.reference_value, case.tolerance), (cl_exact, 0.01));
+    assert!(case.pass, "{case:?}");
     assert!(worst.0 < 0.02, "{worst:?}");
     // Kutta–Joukowski from the circulation, and no pressure drag.
     assert!((steady.cl / (2.0 * steady.circulation) - 1.0).abs() < 0.005);
@@ -262,19 +79,22 @@ fn naca(designation: &str, panels: usize) -> SectionShape {
 /// brief of this work quotes it, and Abbott & von Doenhoff's 6.9–7.0 / rad
 /// for the NACA 0012, as the reference: a secondary source). Measured
 /// 6.883 (+0.28%) at the default 160 panels; the panel count converges it
-/// to about 6.92 (6.900 at 320, 6.910 at 640, 6.914 at 1280), +0.8%.
+/// to about 6.92 (6.900 at 320, 6.910 at 640, 6.914 at 1280), +0.8%. The
+/// validation case `aero2d/panel-naca0012-lift-slope`.
 #[test]
 fn naca_0012_lift_slope() {
-    let alpha = 2f64.to_radians();
-    let steady = solve_steady(&naca("0012", DEFAULT_PANELS), alpha);
-    let slope = steady.cl / alpha.sin();
-    let reference = 2.0 * PI * (1.0 + 0.77 * 0.12);
+    let case = panel_naca0012_lift_slope().run();
     println!(
-        "NACA 0012 lift slope {slope:.4} / rad vs {reference:.4} ({:+.2}%), Cm_c/4 {:.5}",
-        100.0 * (slope / reference - 1.0),
-        steady.cm_quarter_chord
+        "NACA 0012 lift slope {:.4} / rad vs {:.4} ({:+.2}%)",
+        case.value.unwrap_or(f64::NAN),
+        case.reference_value,
+        100.0 * case.error.unwrap_or(f64::NAN)
     );
-    assert!((slope / reference - 1.0).abs() < 0.02);
+    assert_eq!(
+        (case.reference_value, case.tolerance),
+        (2.0 * PI * (1.0 + 0.77 * 0.12), 0.02)
+    );
+    assert!(case.pass, "{case:?}");
     // Symmetric section: zero lift at zero incidence.
     assert!(solve_steady(&naca("0012", DEFAULT_PANELS), 0.0).cl.abs() < 1e-10);
 }

@@ -11,48 +11,33 @@ use fwav::optimize::doe::{
 use fwav::optimize::metrics::igd;
 use fwav::optimize::nsga2::{minimize, Bounds, Evaluation, Nsga2Config, Nsga2Result};
 use fwav::optimize::rsm::{
-    fit, fit_reduced, quadratic_terms, Coding, DropReason, ReduceOptions, ResponseSurface, Term,
+    fit, fit_reduced, quadratic_terms, Coding, DropReason, ReduceOptions, Term,
 };
 use fwav::optimize::zdt::Zdt;
+use fwav::validation::optimizers::{
+    evaluate_quadratic, fit_known_quadratic, known_quadratic, l18_orthogonality,
+    rsm_exact_quadratic, L18_PRINTED,
+};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
 
-/// The L18 exactly as printed (1-based) in REFERENCES.md, a second,
-/// independent transcription to check the library's 0-based table.
-const L18_PRINTED: [&str; 18] = [
-    "1 1 1 1 1 1 1 1",
-    "1 1 2 2 2 2 2 2",
-    "1 1 3 3 3 3 3 3",
-    "1 2 1 1 2 2 3 3",
-    "1 2 2 2 3 3 1 1",
-    "1 2 3 3 1 1 2 2",
-    "1 3 1 2 1 3 2 3",
-    "1 3 2 3 2 1 3 1",
-    "1 3 3 1 3 2 1 2",
-    "2 1 1 3 3 2 2 1",
-    "2 1 2 1 1 3 3 2",
-    "2 1 3 2 2 1 1 3",
-    "2 2 1 2 3 1 3 2",
-    "2 2 2 3 1 2 1 3",
-    "2 2 3 1 2 3 2 1",
-    "2 3 1 3 2 3 1 2",
-    "2 3 2 1 3 1 2 3",
-    "2 3 3 2 1 2 3 1",
-];
-
 /// Taguchi L18 (REFERENCES.md table): the library's table is the printed
-/// one less 1, every column is balanced and every pair of columns meets
-/// every level pair equally often (strength 2), counted here directly.
+/// one less 1 and every pair of columns meets every level pair equally
+/// often (strength 2), counted directly (the validation case
+/// `optimizers/l18-orthogonality`); every column is balanced.
 #[test]
 fn l18_is_an_orthogonal_array_of_strength_two() {
-    for (row, printed) in L18_RUNS.iter().zip(L18_PRINTED) {
-        let levels: Vec<u8> = printed
-            .split_whitespace()
-            .map(|s| s.parse::<u8>().unwrap() - 1)
-            .collect();
-        assert_eq!(row.to_vec(), levels);
-    }
+    let case = l18_orthogonality().run();
+    println!(
+        "L18 against the printed table and strength 2: {:?} defects ({})",
+        case.value,
+        case.note.as_deref().unwrap_or("")
+    );
+    assert_eq!((case.reference_value, case.tolerance), (0.0, 0.0));
+    assert_eq!(case.value, Some(0.0), "{case:?}");
+    assert!(case.pass);
+    assert_eq!(L18_PRINTED.len(), L18_RUNS.len());
     for c in 0..8 {
         let n = usize::from(L18_LEVELS[c]);
         let mut counts = vec![0; n];
@@ -61,20 +46,6 @@ fn l18_is_an_orthogonal_array_of_strength_two() {
             counts.iter().all(|&k| k == 18 / n),
             "column {c}: {counts:?}"
         );
-    }
-    for a in 0..8 {
-        for b in (a + 1)..8 {
-            let (la, lb) = (usize::from(L18_LEVELS[a]), usize::from(L18_LEVELS[b]));
-            let mut counts = vec![vec![0; lb]; la];
-            L18_RUNS
-                .iter()
-                .for_each(|r| counts[usize::from(r[a])][usize::from(r[b])] += 1);
-            let expected = 18 / (la * lb);
-            assert!(
-                counts.iter().flatten().all(|&k| k == expected),
-                "columns {a},{b}: {counts:?}"
-            );
-        }
     }
     let array = OrthogonalArray::l18();
     assert!(array.is_strength_two());
@@ -159,41 +130,6 @@ fn anom_recovers_an_additive_response() {
     }
 }
 
-/// A quadratic in k coded variables with known, all-nonzero coefficients.
-fn known_quadratic(k: usize) -> (Vec<Term>, Vec<f64>) {
-    let terms = quadratic_terms(k);
-    let coefficients = (0..terms.len())
-        .map(|i| 0.3 + 0.17 * i as f64 * if i % 2 == 0 { 1.0 } else { -1.0 })
-        .collect();
-    (terms, coefficients)
-}
-
-fn evaluate_quadratic(terms: &[Term], coefficients: &[f64], x: &[f64]) -> f64 {
-    terms
-        .iter()
-        .zip(coefficients)
-        .map(|(t, b)| b * t.value(x))
-        .sum()
-}
-
-/// Fits the full quadratic to exact values of [`known_quadratic`] at the
-/// points `x`: the surface, the responses and the largest coefficient error.
-fn fit_known_quadratic(x: &[Vec<f64>], k: usize) -> (ResponseSurface, Vec<f64>, f64) {
-    let (terms, beta) = known_quadratic(k);
-    let y: Vec<f64> = x
-        .iter()
-        .map(|p| evaluate_quadratic(&terms, &beta, p))
-        .collect();
-    let s = fit(x, &y, &terms).unwrap();
-    let max_error = s
-        .coefficients
-        .iter()
-        .zip(&beta)
-        .map(|(a, b)| (a - b).abs())
-        .fold(0.0, f64::max);
-    (s, y, max_error)
-}
-
 /// Quadratic RSM (REFERENCES.md: (k+1)(k+2)/2 terms, 18 runs support a
 /// full quadratic in at most 4 variables, QR least squares): exact data
 /// from a quadratic it can represent is recovered coefficient for
@@ -204,13 +140,16 @@ fn rsm_recovers_an_exact_quadratic() {
     let array = OrthogonalArray::l18();
     let columns = l18_quadratic_columns(4).unwrap();
     let x = array.design(&columns, &vec![coded_levels(3); 4]).unwrap();
-    let (s, y, max_error) = fit_known_quadratic(&x, 4);
+    let (s, y, max_error) = fit_known_quadratic(&x, 4).unwrap();
     assert_eq!(s.coefficients.len(), 15);
     println!(
         "RSM on L18 C..F (4 factors, 15 terms): max coefficient error {max_error:.2e}, R² = {}, adj R² = {}, PRESS = {:?}",
         s.r_squared, s.adjusted_r_squared, s.press
     );
-    assert!(max_error < 1e-10);
+    let case = rsm_exact_quadratic().run();
+    assert_eq!(case.value, Some(max_error));
+    assert_eq!(case.tolerance, 1e-10);
+    assert!(case.pass, "{case:?}");
     assert!((s.r_squared - 1.0).abs() < 1e-12);
     let reduced = fit_reduced(&x, &y, ReduceOptions::default()).unwrap();
     assert!(reduced.dropped.is_empty(), "{:?}", reduced.dropped);
@@ -219,7 +158,7 @@ fn rsm_recovers_an_exact_quadratic() {
     let x: Vec<Vec<f64>> = (0..20)
         .map(|_| (0..3).map(|_| rng.random_range(-1.0..=1.0)).collect())
         .collect();
-    let (s, _, max_error) = fit_known_quadratic(&x, 3);
+    let (s, _, max_error) = fit_known_quadratic(&x, 3).unwrap();
     println!(
         "RSM on 20 random runs (3 factors, 10 terms): max coefficient error {max_error:.2e}, R² = {}, PRESS = {:?}",
         s.r_squared, s.press

@@ -7,69 +7,9 @@
 use std::f64::consts::PI;
 
 use fwav::aero2d::theory::{garrick_plunge, theodorsen};
-use fwav::uvlm::{Lattice, PotentialRate, TimeDerivative, Uvlm, UvlmSettings};
+use fwav::uvlm::{Lattice, Uvlm, UvlmSettings};
+use fwav::validation::uvlm::{heave, katz_plotkin, sudden_start, Heave};
 use nalgebra::Vector3;
-
-/// Katz & Plotkin's Program 16 output for aspect ratio `ar`
-/// (tests/data/katz_plotkin_sudden_start_ar*.dat): `CL` per step (step 1 at
-/// t = 0) and the steady `CL` of the same program.
-fn katz_plotkin(ar: u32) -> (Vec<f64>, f64) {
-    let path = format!(
-        "{}/tests/data/katz_plotkin_sudden_start_ar{ar}.dat",
-        env!("CARGO_MANIFEST_DIR")
-    );
-    let text = std::fs::read_to_string(&path).expect("reference data");
-    // "Steady-state CL from the same program's mode 1\n# (dt = 10
-    // chords, 5 steps): 0.3218"
-    let steady = text
-        .split_once("Steady-state CL")
-        .and_then(|(_, rest)| rest.split_once(':'))
-        .and_then(|(_, rest)| rest.split_whitespace().next())
-        .and_then(|v| v.parse().ok())
-        .expect("steady CL in the header");
-    let cl = text
-        .lines()
-        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
-        .map(|l| {
-            let columns: Vec<f64> = l
-                .split_whitespace()
-                .map(|v| v.parse().expect("number"))
-                .collect();
-            columns[2]
-        })
-        .collect();
-    (cl, steady)
-}
-
-/// CL per step (total force `z` and normal-pressure force `z`, on the
-/// semi-span area) of Program 16's case: flat rectangular wing, chord 1,
-/// alpha = 5 deg, 4 x 13 rings on the semi-span `semi_span` with the mirror
-/// image, `U dt = dt_chords c`, the youngest `free_rows` wake rows free,
-/// the shed vortex 0.3 U dt behind the trailing edge, `∂Φ/∂t` from the
-/// mean of neighbouring rings by a first-order difference, no core (the
-/// program's cut-off only).
-fn sudden_start(semi_span: f64, steps: usize, dt_chords: f64, free_rows: usize) -> Vec<(f64, f64)> {
-    let (u, chord) = (10.0, 1.0);
-    let wing = Lattice::rectangle(chord, semi_span, 4, 13, 5f64.to_radians()).expect("wing");
-    let mut settings = UvlmSettings::new(dt_chords * chord / u, 1.0, Vector3::new(u, 0.0, 0.0));
-    settings.symmetric = true;
-    settings.free_wake_rows = free_rows;
-    settings.core_radius = 0.0;
-    settings.shed_offset = 0.3;
-    settings.potential_rate = PotentialRate::NeighbourMean;
-    settings.time_derivative = TimeDerivative::FirstOrder;
-    let mut uvlm = Uvlm::new(4, 13, settings).expect("solver");
-    let at_rest = vec![Vector3::zeros(); wing.corner_count()];
-    let q_area = 0.5 * u * u * chord * semi_span;
-    (0..steps)
-        .map(|_| {
-            let solution = uvlm.solve(&wing, &at_rest).expect("solve");
-            uvlm.advance(&wing, &solution).expect("advance");
-            let normal: f64 = solution.panel_force.iter().map(|f| f.z).sum();
-            (solution.force.z / q_area, normal / q_area)
-        })
-        .collect()
-}
 
 /// Katz & Plotkin (2001), *Low-Speed Aerodynamics*, 2nd ed., §13.12,
 /// Fig. 13.34: lift after the sudden start of rectangular wings (alpha = 5
@@ -82,8 +22,8 @@ fn sudden_start(semi_span: f64, steps: usize, dt_chords: f64, free_rows: usize) 
 #[test]
 fn sudden_start_matches_katz_plotkin_program_16() {
     for (ar, semi_span) in [(4, 2.0), (8, 4.0)] {
-        let (reference, steady_reference) = katz_plotkin(ar);
-        let cl = sudden_start(semi_span, reference.len(), 1.0 / 16.0, 5);
+        let (reference, steady_reference) = katz_plotkin(ar).expect("reference data");
+        let cl = sudden_start(semi_span, reference.len(), 1.0 / 16.0, 5).expect("run");
         let error = |step: usize| cl[step].0 / reference[step] - 1.0;
         let (worst_step, worst) =
             (1..cl.len())
@@ -123,7 +63,7 @@ fn sudden_start_matches_katz_plotkin_program_16() {
             "AR {ar} spike {:.2}%",
             100.0 * error(0)
         );
-        let steady = sudden_start(semi_span, 5, 10.0, 0)[4].0;
+        let steady = sudden_start(semi_span, 5, 10.0, 0).expect("run")[4].0;
         let steady_error = steady / steady_reference - 1.0;
         println!(
             "AR {ar}: steady CL {steady:.4} (frozen wake, U dt = 10 c, 5 steps) vs Program 16 \
@@ -137,89 +77,6 @@ fn sudden_start_matches_katz_plotkin_program_16() {
             "AR {ar}: {:.2}%",
             100.0 * steady_error
         );
-    }
-}
-
-/// A rigid flat rectangular plate of chord 1 heaving `h = h0 c sin(ωt)` in
-/// a unit stream, `k = ωc / (2U)`: cycle means and first harmonics over
-/// the last cycle.
-struct Heave {
-    /// Thrust coefficient `−F_x / (q c b)`, last cycle and the one before.
-    ct: f64,
-    ct_before: f64,
-    /// Power coefficient `P / (q U c b)`.
-    cp: f64,
-    /// Lift coefficient `F_z / (q c b)` = `sin` x sin(ωt) + `cos` x cos(ωt)
-    /// + ..., and its peak.
-    cl_sin: f64,
-    cl_cos: f64,
-    cl_peak: f64,
-}
-
-/// The heaving case: `nc x ns` panels on the semi-span `semi_span` (chords)
-/// with the mirror image, spanwise stations clustered towards the tip
-/// (`y = b sin(π/2 j/ns)`) where the load falls off, `steps_per_chord`
-/// steps per chord travelled, `cycles` cycles from an impulsive start;
-/// default settings otherwise (second-order `∂Φ/∂t`, mean of neighbouring
-/// rings) with the wake options given.
-#[allow(clippy::too_many_arguments)]
-fn heave(
-    k: f64,
-    h0: f64,
-    nc: usize,
-    ns: usize,
-    semi_span: f64,
-    steps_per_chord: usize,
-    cycles: usize,
-    wake: (usize, usize),
-) -> Heave {
-    let (chord, u) = (1.0, 1.0);
-    let omega = 2.0 * k * u / chord;
-    let period = 2.0 * PI / omega;
-    let per_cycle = (period * u / chord * steps_per_chord as f64).round() as usize;
-    let dt = period / per_cycle as f64;
-    let mut settings = UvlmSettings::new(dt, 1.0, Vector3::new(u, 0.0, 0.0));
-    settings.symmetric = true;
-    (settings.free_wake_rows, settings.wake_rows) = wake;
-    let corners = (0..=nc)
-        .flat_map(|i| {
-            (0..=ns).map(move |j| {
-                let y = semi_span * (0.5 * PI * j as f64 / ns as f64).sin();
-                Vector3::new(chord * i as f64 / nc as f64, y, 0.0)
-            })
-        })
-        .collect();
-    let wing = Lattice::new(nc, ns, corners).expect("wing");
-    let mut uvlm = Uvlm::new(nc, ns, settings).expect("solver");
-    let q_area = 0.5 * u * u * chord * semi_span;
-    let mut history = Vec::new();
-    for _ in 0..cycles * per_cycle {
-        let t = uvlm.time();
-        let (s, c) = (omega * t).sin_cos();
-        let surface = wing.translated(&Vector3::new(0.0, 0.0, h0 * chord * s));
-        let velocity = vec![Vector3::new(0.0, 0.0, h0 * chord * omega * c); wing.corner_count()];
-        let solution = uvlm.solve(&surface, &velocity).expect("solve");
-        uvlm.advance(&surface, &solution).expect("advance");
-        history.push((
-            t,
-            -solution.force.x / q_area,
-            solution.power / (q_area * u),
-            solution.force.z / q_area,
-        ));
-    }
-    let last = &history[history.len() - per_cycle..];
-    let before = &history[history.len() - 2 * per_cycle..history.len() - per_cycle];
-    let n = per_cycle as f64;
-    let mean = |rows: &[(f64, f64, f64, f64)], f: fn(&(f64, f64, f64, f64)) -> f64| {
-        rows.iter().map(f).sum::<f64>() / n
-    };
-    Heave {
-        ct: mean(last, |r| r.1),
-        ct_before: mean(before, |r| r.1),
-        cp: mean(last, |r| r.2),
-        cl_sin: 2.0 * last.iter().map(|r| r.3 * (omega * r.0).sin()).sum::<f64>() / n,
-        cl_cos: 2.0 * last.iter().map(|r| r.3 * (omega * r.0).cos()).sum::<f64>() / n,
-        cl_peak: last.iter().map(|r| r.3.abs()).fold(0.0, f64::max),
     }
 }
 
@@ -249,7 +106,7 @@ fn theodorsen_lift(k: f64, h0: f64) -> (f64, f64, f64) {
 #[test]
 fn heaving_plate_thrust_matches_garrick() {
     for (k, h0) in [(0.5, 0.1), (1.0, 0.05)] {
-        let r = heave(k, h0, 8, 6, 20.0, 8, 3, (0, usize::MAX));
+        let r = heave(k, h0, 8, 6, 20.0, 8, 3, (0, usize::MAX)).expect("heave");
         let (ct, cp, _) = garrick_plunge(k, h0);
         let (lift_sin, lift_cos, lift_amplitude) = theodorsen_lift(k, h0);
         let error = r.ct / ct - 1.0;
@@ -284,9 +141,9 @@ fn heaving_plate_thrust_matches_garrick() {
 #[test]
 fn partial_rollup_and_truncation_change_thrust_below_one_percent() {
     let (k, h0) = (0.5, 0.2);
-    let full = heave(k, h0, 4, 8, 4.0, 8, 3, (usize::MAX, usize::MAX));
-    let reduced = heave(k, h0, 4, 8, 4.0, 8, 3, (25, 100));
-    let frozen = heave(k, h0, 4, 8, 4.0, 8, 3, (0, 100));
+    let full = heave(k, h0, 4, 8, 4.0, 8, 3, (usize::MAX, usize::MAX)).expect("heave");
+    let reduced = heave(k, h0, 4, 8, 4.0, 8, 3, (25, 100)).expect("heave");
+    let frozen = heave(k, h0, 4, 8, 4.0, 8, 3, (0, 100)).expect("heave");
     let change = reduced.ct / full.ct - 1.0;
     println!(
         "AR 8, k = {k}, h0 = {h0} c: CT fully free, untruncated {:.5}; 25 free rows, 100 kept \
@@ -307,8 +164,8 @@ fn partial_rollup_and_truncation_change_thrust_below_one_percent() {
 #[test]
 fn heaving_plate_converges_in_time_step_and_lattice() {
     let (k, h0) = (1.0, 0.05);
-    let coarse = heave(k, h0, 8, 6, 20.0, 8, 3, (0, usize::MAX));
-    let fine = heave(k, h0, 16, 12, 20.0, 16, 3, (0, usize::MAX));
+    let coarse = heave(k, h0, 8, 6, 20.0, 8, 3, (0, usize::MAX)).expect("heave");
+    let fine = heave(k, h0, 16, 12, 20.0, 16, 3, (0, usize::MAX)).expect("heave");
     let change = |a: f64, b: f64| 100.0 * (b / a - 1.0);
     let (ct, cp, _) = garrick_plunge(k, h0);
     let (_, _, lift) = theodorsen_lift(k, h0);
