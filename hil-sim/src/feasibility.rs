@@ -59,7 +59,7 @@ use serde::Serialize;
 use crate::config::{ConfigError, PlantParams};
 use crate::plant::FRICTION_SLOPE;
 
-mod nearest;
+pub mod nearest;
 pub use nearest::{nearest_feasible, within_envelope, Alternative, Change, NearestFeasible};
 
 /// Samples per flapping cycle of the steady-state analysis.

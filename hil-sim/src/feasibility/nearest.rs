@@ -247,7 +247,7 @@ fn boundary(
 }
 
 /// The nearest feasible kinematics to `demand` on plant `p` under `limits`
-/// inside the device's `envelope` (method in the module docs).
+/// inside the device's `envelope` (method in the [module docs](self)).
 pub fn nearest_feasible(
     p: &PlantParams,
     limits: &ActuatorLimits,
