@@ -6,7 +6,9 @@
 //! unchanged, at its control rate in simulated time ([`sim`]). A host reaches
 //! it over the same framed link as a board: in process ([`scenario`]) or
 //! through a pseudo-terminal ([`serve`]), so `fwav upload --port <pty>`
-//! talks to it exactly as to a flight controller.
+//! talks to it exactly as to a flight controller. [`feasibility`] runs the
+//! plant's equations backwards: can the actuator fly a given frequency and
+//! amplitude, and if not, what nearest kinematics it can.
 //!
 //! The invariant it exists to keep: **the code hil-sim runs is the code the
 //! microcontroller runs.** There is no second copy of the controller or of
@@ -16,6 +18,7 @@
 #![warn(missing_docs)]
 
 pub mod config;
+pub mod feasibility;
 pub mod metrics;
 pub mod plant;
 pub mod plot;

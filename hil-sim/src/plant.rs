@@ -30,7 +30,7 @@ use serde::{Deserialize, Serialize};
 use crate::config::PlantParams;
 
 /// 1 / rate scale of the regularized sign of friction (0.05 rad/s), s/rad.
-const FRICTION_SLOPE: f64 = 1.0 / 0.05;
+pub(crate) const FRICTION_SLOPE: f64 = 1.0 / 0.05;
 
 /// The state of the plant.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
