@@ -14,6 +14,8 @@
 //! cycles = 4
 //! [topology]
 //! mass_fraction = 0.3
+//! [mdois]
+//! max_cycles = 5
 //! ```
 
 use serde::{Deserialize, Serialize};
@@ -206,6 +208,8 @@ pub struct SystemConfig {
     pub design: DesignConfig,
     /// The structural discipline (ESLSO).
     pub topology: crate::topology::config::TopologyConfig,
+    /// The MDOIS cycle loop (cycle cap, "unchanged" tolerances).
+    pub mdois: crate::mdois::config::MdoisConfig,
 }
 
 impl SystemConfig {
@@ -217,7 +221,7 @@ impl SystemConfig {
     }
 
     /// Checks the ranges of every field: wing, kinematics, flight,
-    /// analysis, design and topology.
+    /// analysis, design, topology and mdois.
     pub fn check(&self) -> Result<(), ConfigError> {
         let w = &self.wing;
         let k = &self.kinematics;
@@ -368,7 +372,8 @@ impl SystemConfig {
                 range: "[0.01, 2000] kg/m^3",
             });
         }
-        self.topology.check()
+        self.topology.check()?;
+        self.mdois.check()
     }
 
     /// The `[analysis]` ranges (those [`super::analysis::run`] accepts,
