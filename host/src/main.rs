@@ -8,6 +8,7 @@ use clap::{Parser, Subcommand};
 
 mod cli {
     pub mod aero;
+    pub mod design;
     pub mod fly;
     pub mod kinematics;
     pub mod system;
@@ -31,6 +32,13 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
+    /// The whole design (MDOIS): system analysis, then the aerodynamic and
+    /// structural disciplines side by side, repeated until no design
+    /// variable changes; resumable with --resume.
+    Design(cli::design::DesignArgs),
+    /// Write the built-in FWAV's configuration as a commented TOML file to
+    /// start from.
+    Init(cli::design::InitArgs),
     /// Kinematics profiles: the file `fwav design` writes and the flight
     /// controller flies.
     #[command(subcommand)]
@@ -141,6 +149,8 @@ fn main() -> ExitCode {
             protocol_info(json);
             Ok(())
         }
+        Command::Design(args) => cli::design::run_command(&args),
+        Command::Init(args) => cli::design::init(&args),
         Command::Aero2d(args) => cli::aero::run(&args),
         Command::SystemAnalysis(args) => cli::system::run_command(&args),
         Command::Kinematics(args) => cli::kinematics::run_command(&args),

@@ -14,6 +14,8 @@
 //! cycles = 4
 //! [topology]
 //! mass_fraction = 0.3
+//! [mdois]
+//! max_cycles = 5
 //! ```
 
 use serde::{Deserialize, Serialize};
@@ -122,13 +124,15 @@ pub struct KinematicsConfig {
 }
 
 impl Default for KinematicsConfig {
+    /// [`FlappingKinematics::INITIAL`] in degrees as a person types them
+    /// (11 Hz, ±30°, 0°, 90°; `to_degrees` of the radians would give
+    /// 29.999999999999996°, which `fwav init` would then write).
     fn default() -> Self {
-        let k = FlappingKinematics::INITIAL;
         Self {
-            frequency_hz: k.frequency,
-            amplitude_deg: k.amplitude.to_degrees(),
-            mean_angle_deg: k.mean_angle.to_degrees(),
-            stroke_plane_deg: k.stroke_plane.to_degrees(),
+            frequency_hz: FlappingKinematics::INITIAL.frequency,
+            amplitude_deg: 30.0,
+            mean_angle_deg: 0.0,
+            stroke_plane_deg: 90.0,
         }
     }
 }
@@ -204,6 +208,8 @@ pub struct SystemConfig {
     pub design: DesignConfig,
     /// The structural discipline (ESLSO).
     pub topology: crate::topology::config::TopologyConfig,
+    /// The MDOIS cycle loop (cycle cap, "unchanged" tolerances).
+    pub mdois: crate::mdois::config::MdoisConfig,
 }
 
 impl SystemConfig {
@@ -214,8 +220,8 @@ impl SystemConfig {
         Ok(config)
     }
 
-    /// Checks the ranges of the wing, kinematics and flight fields (the
-    /// analysis settings are checked by [`super::analysis::run`]).
+    /// Checks the ranges of every field: wing, kinematics, flight,
+    /// analysis, design, topology and mdois.
     pub fn check(&self) -> Result<(), ConfigError> {
         let w = &self.wing;
         let k = &self.kinematics;
@@ -302,6 +308,7 @@ impl SystemConfig {
             ("flight.speed_m_s", f.speed_m_s, 0.1, 50.0, "[0.1, 50] m/s"),
         ];
         check_ranges(&ranges)?;
+        self.check_analysis()?;
         let d = &self.design;
         let level_sets: [(&'static str, [f64; 3], f64, f64, &'static str); 4] = [
             (
@@ -365,7 +372,76 @@ impl SystemConfig {
                 range: "[0.01, 2000] kg/m^3",
             });
         }
-        self.topology.check()
+        self.topology.check()?;
+        self.mdois.check()
+    }
+
+    /// The `[analysis]` ranges (those [`super::analysis::run`] accepts,
+    /// named as `analysis.key`, so a design run is refused before it
+    /// starts).
+    fn check_analysis(&self) -> Result<(), ConfigError> {
+        let a = &self.analysis;
+        let ranges: [RangeCheck; 10] = [
+            ("analysis.cycles", a.cycles as f64, 1.0, 100.0, "1..=100"),
+            (
+                "analysis.steps_per_cycle",
+                a.steps_per_cycle as f64,
+                8.0,
+                2000.0,
+                "8..=2000",
+            ),
+            (
+                "analysis.chordwise_panels",
+                a.chordwise_panels as f64,
+                1.0,
+                64.0,
+                "1..=64",
+            ),
+            (
+                "analysis.spanwise_panels",
+                a.spanwise_panels as f64,
+                1.0,
+                200.0,
+                "1..=200",
+            ),
+            (
+                "analysis.coupling_tolerance",
+                a.coupling_tolerance,
+                1e-12,
+                0.5,
+                "[1e-12, 0.5]",
+            ),
+            (
+                "analysis.max_subiterations",
+                a.max_subiterations as f64,
+                1.0,
+                1000.0,
+                "1..=1000",
+            ),
+            ("analysis.rho_inf", a.rho_inf, 0.0, 1.0, "[0, 1]"),
+            (
+                "analysis.free_wake_cycles",
+                a.free_wake_cycles,
+                0.0,
+                100.0,
+                "[0, 100] cycles",
+            ),
+            (
+                "analysis.wake_cycles",
+                a.wake_cycles,
+                0.01,
+                100.0,
+                "[0.01, 100] cycles",
+            ),
+            (
+                "analysis.core_radius_chords",
+                a.core_radius_chords,
+                1e-6,
+                0.49,
+                "[1e-6, 0.49] root chords",
+            ),
+        ];
+        check_ranges(&ranges)
     }
 
     /// The planform.
@@ -384,11 +460,17 @@ impl SystemConfig {
 
     /// The wing model at the uniform starting design (paper's materials).
     pub fn wing_model(&self) -> Result<WingModel, ConfigError> {
+        self.wing_model_with(None)
+    }
+
+    /// The wing model with carbon `densities` per element (a layout of the
+    /// structural discipline), or the uniform starting design for `None`.
+    pub fn wing_model_with(&self, densities: Option<&[f64]>) -> Result<WingModel, ConfigError> {
         Ok(WingModel::new(
             self.planform(),
             &Layer::CARBON,
             &Layer::MYLAR,
-            None,
+            densities,
             self.wing.carbon_fraction,
         )?)
     }

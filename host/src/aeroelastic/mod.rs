@@ -16,11 +16,14 @@
 //! - [`interface`]: the lattice on the shell mesh, conservative transfer.
 //! - [`floating_frame`]: the shell's elastic dynamics in the flapping frame.
 //! - [`analysis`]: the coupled time stepping, results.
+//! - [`handoff`]: the section and pressure histories as the disciplines'
+//!   input files.
 //! - [`series`]: `.vtu`/`.pvd` output of the wing and wake.
 
 pub mod analysis;
 pub mod config;
 pub mod floating_frame;
+pub mod handoff;
 pub mod interface;
 pub mod kinematics;
 pub mod model;

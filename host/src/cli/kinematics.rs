@@ -5,6 +5,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{Context, Result};
+use fwav::aeroelastic::handoff::SectionFile;
 use fwav::discipline::cache::EvaluationCache;
 use fwav::discipline::kinematic::{optimize, Weights};
 use fwav::discipline::section::SectionCase;
@@ -34,11 +35,6 @@ pub struct KinematicsArgs {
     pub json: bool,
 }
 
-#[derive(serde::Deserialize)]
-struct SectionFile {
-    samples: Vec<Vec<[f64; 2]>>,
-}
-
 /// Runs the command.
 pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     let config = super::system::read_config(a.config.as_deref())?;
@@ -53,7 +49,7 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     if let Some(path) = &a.section {
         let text =
             std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
-        let file: SectionFile = serde_json::from_str(&text)
+        let file = SectionFile::from_json(&text)
             .with_context(|| format!("{}: not a section history", path.display()))?;
         case.deformation = file.samples;
     }

@@ -7,8 +7,10 @@ use std::time::Instant;
 
 use anyhow::{Context, Result};
 use fwav::aeroelastic::config::SystemConfig;
+use fwav::aeroelastic::handoff;
 use fwav::aeroelastic::series::write_series;
 use fwav::aeroelastic::{run, SystemResult};
+use fwav::files::write_atomic;
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -153,59 +155,11 @@ pub fn run_command(a: &SystemArgs) -> Result<()> {
     Ok(())
 }
 
-/// Writes `text` to `dir/name` through a temporary file renamed into
-/// place, so a reader never sees half a file.
-pub fn write_atomic(dir: &Path, name: &str, text: String) -> Result<()> {
-    let path = dir.join(name);
-    let temporary = dir.join(format!("{name}.partial"));
-    std::fs::write(&temporary, text).with_context(|| format!("writing {}", path.display()))?;
-    std::fs::rename(&temporary, &path).with_context(|| format!("writing {}", path.display()))
-}
-
 fn write_outputs(dir: &Path, elements: &[[usize; 4]], result: &SystemResult) -> Result<()> {
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-    let atomic = |name: &str, text: String| write_atomic(dir, name, text);
-    atomic(
-        "section.json",
-        serde_json::json!({
-            "description": "mid-span section (mid-line x, y in chords, flapping frame, leading edge undeformed at (0, 0)) over the last cycle; sample k at (k + 1) dt after a cycle start, where the flapping angle is mean + amplitude cos(2 pi f t)",
-            "period_s": result.dt_s * result.section_history.len() as f64,
-            "samples": result.section_history,
-        })
-        .to_string(),
-    )?;
-    atomic(
-        "pressure.json",
-        serde_json::json!({
-            "description": "pressure jump (lower minus upper) per shell element over the last cycle, Pa",
-            "dt_s": result.dt_s,
-            "samples": result.pressure_history,
-        })
-        .to_string(),
-    )?;
-    let mut csv = String::from(
-        "time_s,fx_n,fy_n,fz_n,power_w,ct,cl,cp,drive_torque_nm,tip_dx_m,tip_dy_m,tip_dz_m,subiterations,residual\n",
-    );
-    for s in &result.steps {
-        csv.push_str(&format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
-            s.time_s,
-            s.force_n[0],
-            s.force_n[1],
-            s.force_n[2],
-            s.power_w,
-            s.ct,
-            s.cl,
-            s.cp,
-            s.drive_torque_nm,
-            s.tip_displacement_m[0],
-            s.tip_displacement_m[1],
-            s.tip_displacement_m[2],
-            s.subiterations,
-            s.residual
-        ));
-    }
-    atomic("steps.csv", csv)?;
+    write_atomic(dir, "section.json", handoff::section_json(result))?;
+    write_atomic(dir, "pressure.json", handoff::pressure_json(result))?;
+    write_atomic(dir, "steps.csv", handoff::steps_csv(result))?;
     write_series(dir, elements, &result.snapshots)?;
     Ok(())
 }

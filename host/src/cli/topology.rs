@@ -7,6 +7,7 @@ use std::time::Instant;
 
 use anyhow::{Context, Result};
 use fwav::aeroelastic::run;
+use fwav::files::write_atomic;
 use fwav::shell::vtu::{self, Field};
 use fwav::topology::eslso::{optimize, DesignProblem, EslsoProgress, EslsoResult};
 use fwav::topology::picture;
@@ -184,7 +185,7 @@ fn write_outputs(a: &TopologyArgs, problem: &DesignProblem, result: &EslsoResult
             c.optimization_s
         ));
     }
-    super::system::write_atomic(dir, "cycles.csv", csv)?;
+    write_atomic(dir, "cycles.csv", csv)?;
     let text = serde_json::json!({
         "description": "ESLSO result: carbon (1) or mylar only (0) per shell element, the last SIMP densities, every cycle",
         "converged": result.converged,
@@ -193,5 +194,6 @@ fn write_outputs(a: &TopologyArgs, problem: &DesignProblem, result: &EslsoResult
         "cycles": result.cycles,
     })
     .to_string();
-    super::system::write_atomic(dir, "topology.json", text)
+    write_atomic(dir, "topology.json", text)?;
+    Ok(())
 }

@@ -156,6 +156,10 @@ pub struct Weights {
     pub efficiency: f64,
 }
 
+/// Direct evaluations a run of the discipline makes: the initial design,
+/// the 18 array rows and the ANOM and RSM confirmations.
+pub const EVALUATIONS: usize = 21;
+
 /// Runs the discipline on `case` over `space` from `initial` physical
 /// values; `cache` supplies evaluations already done and receives the new
 /// ones.
@@ -167,7 +171,27 @@ pub fn optimize(
     nsga: &Nsga2Config,
     cache: &EvaluationCache,
 ) -> Result<KinematicResult, KinematicError> {
+    optimize_reporting(case, space, initial, weights, nsga, cache, &|_, _| {})
+}
+
+/// [`optimize`], calling `progress(done, total)` after each direct
+/// evaluation (cached ones included; `total` is [`EVALUATIONS`]) from
+/// whichever thread made it.
+pub fn optimize_reporting(
+    case: &SectionCase,
+    space: &DesignSpace,
+    initial: [f64; 4],
+    weights: Weights,
+    nsga: &Nsga2Config,
+    cache: &EvaluationCache,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<KinematicResult, KinematicError> {
     let method = |e: &dyn std::fmt::Display| KinematicError::Method(e.to_string());
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let report = || {
+        let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+        progress(n, EVALUATIONS);
+    };
     let run = |design: [f64; 4]| {
         let result = match cache.get(case, &design) {
             Some(r) => Ok(r),
@@ -181,6 +205,7 @@ pub fn optimize(
                 r
             }
         };
+        report();
         Evaluated { design, result }
     };
     let initial = run(initial);

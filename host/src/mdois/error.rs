@@ -1,0 +1,132 @@
+//! Why a design run stopped: each error names the cycle and stage, the
+//! file, or the configuration field concerned.
+
+use std::path::PathBuf;
+
+use crate::aeroelastic::config::ConfigError;
+use crate::aeroelastic::SystemError;
+use crate::discipline::cache::CacheError;
+use crate::discipline::kinematic::KinematicError;
+use crate::files::WriteError;
+use crate::topology::eslso::EslsoError;
+use crate::topology::pressure::PressureError;
+
+use super::state::Stage;
+
+/// Why a design run stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum DesignError {
+    /// The configuration was refused (the message names the field).
+    #[error(transparent)]
+    Config(#[from] ConfigError),
+    /// A file could not be read or a directory made.
+    #[error("{path}: {source}")]
+    Io {
+        /// The file or directory.
+        path: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
+    /// A file could not be written.
+    #[error(transparent)]
+    Write(#[from] WriteError),
+    /// A file of the run is not what the driver wrote.
+    #[error("{path}: {message}")]
+    State {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong.
+        message: String,
+    },
+    /// A new run was asked for in a directory that holds one.
+    #[error("{d} already holds a design run; continue it with --resume {d} or choose another output directory", d = .dir.display())]
+    Exists {
+        /// The directory.
+        dir: PathBuf,
+    },
+    /// A resume was asked for where there is no run.
+    #[error("{d} holds no design run to resume (no state.json)", d = .dir.display())]
+    NoRun {
+        /// The directory.
+        dir: PathBuf,
+    },
+    /// The configuration given to a resume differs from the run's.
+    #[error("the configuration differs from the one {d}/config.toml was started with ({field}: {given} here, {stored} there); resume without a configuration, or start a new run", d = .dir.display())]
+    ConfigMismatch {
+        /// The run's directory.
+        dir: PathBuf,
+        /// The first differing field, `table.key`.
+        field: String,
+        /// Its value in the configuration given.
+        given: String,
+        /// Its value in the run's `config.toml`.
+        stored: String,
+    },
+    /// The system analysis failed.
+    #[error("cycle {cycle}, system analysis: {source}")]
+    System {
+        /// The design cycle.
+        cycle: usize,
+        /// The cause.
+        source: SystemError,
+    },
+    /// The aerodynamic discipline failed.
+    #[error("cycle {cycle}, aerodynamic discipline: {source}")]
+    Kinematics {
+        /// The design cycle.
+        cycle: usize,
+        /// The cause.
+        source: KinematicError,
+    },
+    /// The structural discipline failed.
+    #[error("cycle {cycle}, structural discipline: {source}")]
+    Topology {
+        /// The design cycle.
+        cycle: usize,
+        /// The cause.
+        source: EslsoError,
+    },
+    /// A pressure history file did not fit the wing.
+    #[error("cycle {cycle}, pressure history: {source}")]
+    Pressure {
+        /// The design cycle.
+        cycle: usize,
+        /// The cause.
+        source: PressureError,
+    },
+    /// The evaluation cache could not be read or written.
+    #[error(transparent)]
+    Cache(#[from] CacheError),
+    /// A picture, plot or ParaView file could not be written.
+    #[error("{file}: {message}")]
+    Output {
+        /// The output file.
+        file: String,
+        /// What went wrong.
+        message: String,
+    },
+    /// A discipline's thread panicked (a bug).
+    #[error("cycle {cycle}, {stage}: the stage panicked")]
+    Panicked {
+        /// The design cycle.
+        cycle: usize,
+        /// The stage.
+        stage: Stage,
+    },
+}
+
+impl DesignError {
+    /// An I/O error on `path`.
+    pub(crate) fn io(path: impl Into<PathBuf>) -> impl FnOnce(std::io::Error) -> Self {
+        let path = path.into();
+        move |source| Self::Io { path, source }
+    }
+
+    /// An output error on `file`.
+    pub(crate) fn output(file: &str, message: impl std::fmt::Display) -> Self {
+        Self::Output {
+            file: file.to_string(),
+            message: message.to_string(),
+        }
+    }
+}

@@ -1,0 +1,41 @@
+//! The MDOIS design process (seed paper, "Design process using MDOIS"):
+//! multidisciplinary design optimization based on independent subspaces.
+//! A cycle is one coupled 3D aeroelastic system analysis of the current
+//! design, whose results go to two disciplines that optimize independently
+//! and side by side — the flapping kinematics on 2D analyses of the
+//! deforming mid-span section ([`crate::discipline`]) and the carbon
+//! layout by ESLSO under the pressure history ([`crate::topology`]) — and
+//! whose proposals make the next cycle's design. The process stops when no
+//! design variable changes.
+//!
+//! - [`config`]: the `[mdois]` table (cycle cap, "unchanged" tolerances).
+//! - [`driver`]: the cycle loop, [`start`] and [`resume`].
+//! - [`stage`]: the three stages as functions from files to files.
+//! - [`state`]: which stages are finished (`state.json`), resumable.
+//! - [`progress`]: what the driver reports as it goes.
+//! - [`summary`]: `summary.json`, per cycle and initial against final.
+//! - [`outputs`], [`plot`], [`report`]: the result files, pictures and
+//!   `report.md`.
+//! - [`profile`]: the final kinematics as a flight-controller profile
+//!   (a stand-in to be replaced).
+//! - [`template`]: the default configuration as commented TOML
+//!   (`fwav init`).
+//! - [`error`]: why a run stopped.
+
+pub mod config;
+pub mod driver;
+pub mod error;
+pub mod outputs;
+pub mod plot;
+pub mod profile;
+pub mod progress;
+pub mod report;
+pub mod stage;
+pub mod state;
+pub mod summary;
+pub mod template;
+
+pub use driver::{resume, start, DesignRun, RunOptions};
+pub use error::DesignError;
+pub use progress::{Event, Progress};
+pub use state::{Outcome, Stage};

@@ -1,0 +1,151 @@
+//! The run's result files: `summary.json` (rewritten after every stage,
+//! `"finished": false` until the end), and at the end `topology.vtu` and
+//! `topology.png` (the final layout), the plots (`convergence.png`,
+//! `pareto.png`, `main-effects.png`, `thrust-history.png`),
+//! `kinematics.json` and `report.md`. Every file is written atomically.
+
+use std::path::Path;
+
+use crate::discipline::plot as discipline_plot;
+use crate::files::write_atomic;
+use crate::shell::vtu::{self, Field};
+use crate::topology::eslso::transform;
+use crate::topology::picture;
+
+use super::error::DesignError;
+use super::plot;
+use super::profile::write_kinematics;
+use super::report;
+use super::stage::{layout_densities, load_kinematics, load_system, load_topology, Context};
+use super::state::{Outcome, RunState, Stage};
+use super::summary::Summary;
+
+/// The summary's file name.
+pub const SUMMARY_FILE: &str = "summary.json";
+
+/// Writes `summary.json`.
+pub fn write_summary(dir: &Path, summary: &Summary) -> Result<(), DesignError> {
+    let text =
+        serde_json::to_string_pretty(summary).map_err(|e| DesignError::output(SUMMARY_FILE, e))?;
+    write_atomic(dir, SUMMARY_FILE, text)?;
+    Ok(())
+}
+
+/// A temporary name for a picture, renamed into place once drawn (the
+/// plotting backend writes the file itself).
+fn draw_atomic(
+    dir: &Path,
+    name: &str,
+    draw: impl FnOnce(&Path) -> Result<(), String>,
+) -> Result<(), DesignError> {
+    let temporary = dir.join(format!("partial-{name}"));
+    draw(&temporary).map_err(|e| DesignError::output(name, e))?;
+    let path = dir.join(name);
+    std::fs::rename(&temporary, &path).map_err(DesignError::io(&path))
+}
+
+/// Writes the final outputs of a run that ended with `outcome`.
+pub(crate) fn write_final(
+    ctx: &Context<'_>,
+    state: &RunState,
+    outcome: Outcome,
+    summary: &Summary,
+) -> Result<(), DesignError> {
+    let dir = ctx.dir.as_path();
+    let final_cycle = match outcome {
+        Outcome::Converged { cycle } => cycle,
+        Outcome::CycleCap { max_cycles } => max_cycles + 1,
+    };
+    let design = ctx.design(final_cycle)?;
+    let problem = &ctx.problem;
+    let layout = transform(
+        &design.densities,
+        &problem.design,
+        ctx.config.topology.threshold,
+    );
+    let simp = if final_cycle > 1 {
+        load_topology(dir, final_cycle - 1)?.result.densities
+    } else {
+        design.densities.clone()
+    };
+    let carbon = layout_densities(&layout);
+    let domain = layout_densities(&problem.design);
+    vtu::write(
+        &dir.join("topology.vtu"),
+        &problem.mesh,
+        &[
+            Field::CellScalar("carbon", &carbon),
+            Field::CellScalar("simp_density", &simp),
+            Field::CellScalar("design_domain", &domain),
+        ],
+    )
+    .map_err(|e| DesignError::output("topology.vtu", e))?;
+    let converged = matches!(outcome, Outcome::Converged { .. });
+    let title = format!(
+        "carbon layout of the final design (cycle {final_cycle}{})",
+        if converged { "" } else { ", not converged" }
+    );
+    draw_atomic(dir, "topology.png", |p| {
+        picture::planform(&problem.mesh, &layout, &title, 1200, p).map_err(|e| e.to_string())
+    })?;
+    let mut pictures = vec![
+        ("convergence.png", "MDOIS convergence: 3D thrust and efficiency, kinematics analysed, layout changes per cycle."),
+        ("thrust-history.png", "Thrust coefficient over the last flapping cycle, initial and final design."),
+        ("topology.png", "Carbon layout of the final design (black carbon, white mylar only)."),
+    ];
+    draw_atomic(dir, "convergence.png", |p| {
+        plot::convergence(summary, &ctx.config.design_space(), p).map_err(|e| e.to_string())
+    })?;
+    let first = load_system(dir, 1)?;
+    let last = load_system(dir, final_cycle)?;
+    let curves = [
+        ("initial design (cycle 1)".to_string(), &first),
+        (format!("final design (cycle {final_cycle})"), &last),
+    ];
+    draw_atomic(dir, "thrust-history.png", |p| {
+        plot::thrust_history(&curves, p).map_err(|e| e.to_string())
+    })?;
+    let last_kinematics = state
+        .cycles
+        .iter()
+        .rev()
+        .find(|c| c.get(Stage::Kinematics).is_some())
+        .map(|c| c.cycle);
+    if let Some(cycle) = last_kinematics {
+        let record = load_kinematics(dir, cycle)?;
+        draw_atomic(dir, "pareto.png", |p| {
+            discipline_plot::pareto(&record.result, p).map_err(|e| e.to_string())
+        })?;
+        draw_atomic(dir, "main-effects.png", |p| {
+            discipline_plot::main_effects(&record.result, &ctx.config.design_space(), p)
+                .map_err(|e| e.to_string())
+        })?;
+        pictures.push(("pareto.png", "Aerodynamic discipline of the last cycle: CT and efficiency of the L18 runs, the response surfaces' Pareto front, the initial design and the three candidates."));
+        pictures.push(("main-effects.png", "Aerodynamic discipline of the last cycle: main effects (ANOM level means of the combined objective)."));
+    }
+    write_kinematics(
+        dir,
+        &design.kinematics,
+        &format!(
+            "fwav design: final kinematics of cycle {final_cycle} ({}).",
+            if converged {
+                "converged"
+            } else {
+                "cycle cap reached, not converged"
+            }
+        ),
+    )?;
+    write_summary(dir, summary)?;
+    let cycle_files: Vec<String> = state
+        .cycles
+        .iter()
+        .filter(|c| c.get(Stage::Topology).is_some())
+        .map(|c| format!("wing-cycle-{}.vtu", c.cycle))
+        .collect();
+    write_atomic(
+        dir,
+        "report.md",
+        report::markdown(summary, &pictures, &cycle_files),
+    )?;
+    Ok(())
+}

@@ -1,0 +1,459 @@
+//! The MDOIS design run end to end on a coarse wing: it converges, writes
+//! every output, resumes after an interruption or a kill without redoing
+//! finished stages and with the same answer, and refuses bad
+//! configurations naming the field.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::{Duration, Instant};
+
+use fwav::aeroelastic::config::SystemConfig;
+use fwav::mdois::state::RunState;
+use fwav::mdois::{resume, start, DesignError, Outcome, RunOptions, Stage};
+
+/// The coarse design of the tests (and of the README): a 16 x 6 wing, two
+/// flapping cycles of 20 steps on a 4 x 8 lattice, kinematic levels
+/// within ±1 Hz, ±5° of the initial design, a carbon mass fraction of
+/// 0.7, and a layout counted as unchanged when at most 5% of its 94
+/// design elements flip (on so coarse a mesh a few elements toggle
+/// between near-equal layouts as the pressure changes). It converges in
+/// cycle 2, in about 20 s of the dev test profile.
+const COARSE: &str = "
+[wing]
+span_elements = 16
+chord_elements = 6
+[analysis]
+cycles = 2
+steps_per_cycle = 20
+chordwise_panels = 4
+spanwise_panels = 8
+[design]
+frequency_hz = [10.0, 11.0, 12.0]
+amplitude_deg = [25.0, 30.0, 35.0]
+mean_angle_deg = [-5.0, 0.0, 5.0]
+stroke_plane_deg = [80.0, 90.0, 100.0]
+[topology]
+mass_fraction = 0.7
+max_cycles = 4
+simp_iterations = 30
+[mdois]
+max_cycles = 4
+layout_tolerance = 0.05
+";
+
+fn coarse() -> SystemConfig {
+    SystemConfig::from_toml(COARSE).unwrap()
+}
+
+fn temp(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("fwav-design-{name}-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    dir
+}
+
+fn fwav(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_fwav"))
+        .args(args)
+        .output()
+        .expect("the fwav binary runs")
+}
+
+fn json(path: &Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+/// The numbers of a run that do not depend on how it was run (stage
+/// times and invocation numbers left out): per cycle the design analysed,
+/// its 3D means, the proposals and their 2D values, the structural
+/// results; and the final layout.
+fn answer(dir: &Path) -> Vec<f64> {
+    let summary = json(&dir.join("summary.json"));
+    let mut values = Vec::new();
+    for c in summary["cycles"].as_array().unwrap() {
+        for key in [
+            "frequency_hz",
+            "amplitude_deg",
+            "mean_angle_deg",
+            "stroke_plane_deg",
+        ] {
+            values.push(c["kinematics"][key].as_f64().unwrap());
+            values.push(c["aerodynamic"]["proposed"][key].as_f64().unwrap_or(-1.0));
+        }
+        values.push(c["carbon_mass_fraction"].as_f64().unwrap());
+        for key in ["ct", "cp", "efficiency", "wing_mass_kg"] {
+            values.push(c["system"][key].as_f64().unwrap());
+        }
+        for key in ["ct", "efficiency"] {
+            values.push(
+                c["aerodynamic"]["proposed_2d"][key]
+                    .as_f64()
+                    .unwrap_or(-1.0),
+            );
+        }
+        for key in ["strain_energy_j", "mass_fraction", "elements_changed"] {
+            values.push(c["structural"][key].as_f64().unwrap_or(-1.0));
+        }
+    }
+    let topology = std::fs::read_to_string(dir.join("topology.vtu")).unwrap();
+    values.extend(
+        topology
+            .split("Name=\"carbon\"")
+            .nth(1)
+            .unwrap()
+            .split('>')
+            .nth(1)
+            .unwrap()
+            .split('<')
+            .next()
+            .unwrap()
+            .split_whitespace()
+            .map(|v| v.parse::<f64>().unwrap()),
+    );
+    values
+}
+
+fn assert_same(a: &[f64], b: &[f64]) {
+    assert_eq!(a.len(), b.len());
+    for (i, (x, y)) in a.iter().zip(b).enumerate() {
+        assert!(
+            (x - y).abs() <= 1e-9 * x.abs().max(1e-12),
+            "value {i}: {x} != {y}"
+        );
+    }
+}
+
+fn run_of(state: &RunState, cycle: usize, stage: Stage) -> Option<usize> {
+    state.stage(cycle, stage).map(|r| r.run)
+}
+
+/// The coarse design converges (the documented case: cycle 2) and writes
+/// every output; summary.json has every number the issue asks for; the
+/// kinematics file is a valid profile document. Then the same design run
+/// a piece at a time: stopped after cycle 1's three stages, and cycle
+/// 2's system analysis lost as if killed between its files and the state
+/// — the resume reuses cycle 1 (computed by invocation 1), recomputes the
+/// rest (invocation 2) and gives the same answer.
+#[test]
+fn coarse_design_converges_writes_everything_and_resumes() {
+    let clock = Instant::now();
+    let dir = temp("full");
+    let run = start(&coarse(), &dir, &RunOptions::default(), &|_| {}).unwrap();
+    println!("uninterrupted run: {:.1} s", clock.elapsed().as_secs_f64());
+    assert_eq!(run.outcome, Some(Outcome::Converged { cycle: 2 }));
+    assert_eq!(run.stages_computed, 6);
+    for file in [
+        "summary.json",
+        "report.md",
+        "config.toml",
+        "state.json",
+        "topology.vtu",
+        "topology.png",
+        "convergence.png",
+        "pareto.png",
+        "main-effects.png",
+        "thrust-history.png",
+        "kinematics.json",
+        "wing-cycle-1.vtu",
+        "wing-cycle-2.vtu",
+        "cycle-1/system.json",
+        "cycle-1/section.json",
+        "cycle-1/pressure.json",
+        "cycle-1/kinematics.json",
+        "cycle-2/topology.json",
+    ] {
+        let size = std::fs::metadata(dir.join(file)).map_or(0, |m| m.len());
+        assert!(size > 100, "{file}: {size} bytes");
+    }
+    let summary = json(&dir.join("summary.json"));
+    assert_eq!(summary["finished"], true);
+    assert_eq!(summary["outcome"], "converged");
+    let cycles = summary["cycles"].as_array().unwrap();
+    assert_eq!(cycles.len(), 2);
+    for c in cycles {
+        for key in ["ct", "cp", "efficiency", "seconds"] {
+            assert!(c["system"][key].is_f64(), "system.{key}: {c}");
+        }
+        for key in [
+            "frequency_hz",
+            "amplitude_deg",
+            "mean_angle_deg",
+            "stroke_plane_deg",
+        ] {
+            assert!(c["kinematics"][key].is_f64(), "{key}");
+        }
+        assert!(c["aerodynamic"]["proposed_2d"]["efficiency"].is_f64());
+        assert!(c["aerodynamic"]["proposed_2d"]["ct"].is_f64());
+        assert!(c["structural"]["strain_energy_j"].as_f64().unwrap() > 0.0);
+        assert!(c["structural"]["mass_fraction"].is_f64());
+        assert!(c["structural"]["elements_changed"].is_u64());
+        assert!(c["structural"]["seconds"].is_f64());
+        assert!(c["change"]["design_unchanged"].is_boolean());
+    }
+    assert_eq!(cycles[1]["change"]["design_unchanged"], true);
+    assert_eq!(cycles[0]["change"]["design_unchanged"], false);
+    for key in ["initial", "final"] {
+        assert!(summary[key]["ct"].is_f64(), "{key}");
+    }
+    assert_eq!(summary["final"]["cycle"], 2);
+    assert!(summary["comparison"]["ct_relative_change"].is_f64());
+    let report = std::fs::read_to_string(dir.join("report.md")).unwrap();
+    assert!(report.contains("Converged in cycle 2") && report.contains("convergence.png"));
+    let profile = fwav::profile_file::ProfileFile::load(dir.join("kinematics.json")).unwrap();
+    let f = summary["final"]["kinematics"]["frequency_hz"]
+        .as_f64()
+        .unwrap();
+    assert!((profile.document.segments[0].frequency_hz - f).abs() < 1e-4 * f);
+    let reference = answer(&dir);
+
+    // A finished run is not started over, and resuming it computes nothing.
+    let again = start(&coarse(), &dir, &RunOptions::default(), &|_| {}).unwrap_err();
+    assert!(matches!(again, DesignError::Exists { .. }), "{again}");
+    let done = resume(&dir, None, &RunOptions::default(), &|_| {}).unwrap();
+    assert_eq!(done.stages_computed, 0);
+    assert_eq!(done.outcome, run.outcome);
+
+    // The same design in pieces.
+    let pieces = temp("pieces");
+    let stop = RunOptions {
+        stage_limit: Some(4),
+    };
+    let first = start(&coarse(), &pieces, &stop, &|_| {}).unwrap();
+    assert_eq!(first.outcome, None);
+    assert_eq!(first.stages_computed, 4);
+    assert_eq!(json(&pieces.join("summary.json"))["finished"], false);
+    // Killed after cycle 2's system analysis wrote its files but before
+    // the state marked it finished; and a half-written file left behind.
+    let mut state = RunState::load(&pieces).unwrap();
+    state.cycles.truncate(1);
+    state.save(&pieces).unwrap();
+    std::fs::write(pieces.join("cycle-2/system.json.partial"), "{\"ste").unwrap();
+    let events = std::sync::Mutex::new(Vec::new());
+    let second = resume(&pieces, Some(&coarse()), &RunOptions::default(), &|p| {
+        events.lock().unwrap().push((p.cycle, p.stage, p.event))
+    })
+    .unwrap();
+    assert_eq!(second.outcome, Some(Outcome::Converged { cycle: 2 }));
+    assert_eq!((second.stages_reused, second.stages_computed), (3, 3));
+    let state = RunState::load(&pieces).unwrap();
+    assert_eq!(state.runs.len(), 2);
+    for stage in [Stage::System, Stage::Kinematics, Stage::Topology] {
+        assert_eq!(run_of(&state, 1, stage), Some(1), "cycle 1 {stage}");
+        assert_eq!(run_of(&state, 2, stage), Some(2), "cycle 2 {stage}");
+    }
+    let events = events.into_inner().unwrap();
+    let started = |cycle: usize| {
+        events
+            .iter()
+            .filter(|(c, _, e)| *c == cycle && *e == fwav::mdois::Event::Started)
+            .count()
+    };
+    assert_eq!((started(1), started(2)), (0, 3), "{events:?}");
+    assert_same(&reference, &answer(&pieces));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::remove_dir_all(&pieces).ok();
+    println!("whole test: {:.1} s", clock.elapsed().as_secs_f64());
+}
+
+/// `fwav design` killed (SIGKILL) once cycle 1's system analysis is
+/// finished, then `fwav design --resume`: the finished stage is not
+/// redone (invocation 1 computed it), the rest is, and the answer is the
+/// uninterrupted run's.
+#[test]
+fn killed_design_resumes_with_the_same_answer() {
+    let dir = temp("killed");
+    std::fs::create_dir_all(&dir).unwrap();
+    let config = dir.join("coarse.toml");
+    std::fs::write(&config, COARSE).unwrap();
+    let out = dir.join("run");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_fwav"))
+        .args(["design", "--quiet", "--config"])
+        .arg(&config)
+        .arg("--out")
+        .arg(&out)
+        .stdout(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let clock = Instant::now();
+    loop {
+        let finished = RunState::load(&out)
+            .ok()
+            .is_some_and(|s| s.stage(1, Stage::System).is_some());
+        if finished {
+            break;
+        }
+        assert!(clock.elapsed() < Duration::from_secs(120), "no progress");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    let before = RunState::load(&out).unwrap();
+    assert_eq!(before.outcome, None, "killed after the end");
+    let resumed = fwav(&[
+        "design",
+        "--quiet",
+        "--json",
+        "--resume",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        resumed.status.success(),
+        "{}",
+        String::from_utf8_lossy(&resumed.stderr)
+    );
+    let summary: serde_json::Value = serde_json::from_slice(&resumed.stdout).unwrap();
+    assert_eq!(summary["outcome"], "converged");
+    let after = RunState::load(&out).unwrap();
+    assert_eq!(run_of(&after, 1, Stage::System), Some(1));
+    for c in &before.cycles {
+        for stage in [Stage::System, Stage::Kinematics, Stage::Topology] {
+            if c.get(stage).is_some() {
+                assert_eq!(run_of(&after, c.cycle, stage), Some(1), "{stage}");
+            }
+        }
+    }
+    assert_eq!(run_of(&after, 2, Stage::System), Some(2));
+
+    // The uninterrupted answer (computed here rather than shared with the
+    // other test, which runs at the same time).
+    let reference = temp("reference");
+    start(&coarse(), &reference, &RunOptions::default(), &|_| {}).unwrap();
+    assert_same(&answer(&reference), &answer(&out));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::remove_dir_all(&reference).ok();
+}
+
+/// At the cycle cap the run ends as "cycle cap reached", never as
+/// converged: with one cycle allowed, the coarse design still changes in
+/// cycle 1, and cycle 2 is only the system analysis of its proposal,
+/// reported as the final design.
+#[test]
+fn cycle_cap_is_reported_not_converged() {
+    let dir = temp("cap");
+    let mut config = coarse();
+    config.mdois.max_cycles = 1;
+    let run = start(&config, &dir, &RunOptions::default(), &|_| {}).unwrap();
+    assert_eq!(run.outcome, Some(Outcome::CycleCap { max_cycles: 1 }));
+    assert_eq!(run.stages_computed, 4);
+    let summary = json(&dir.join("summary.json"));
+    assert_eq!(summary["outcome"], "cycle cap reached");
+    assert!(summary["converged_cycle"].is_null());
+    assert_eq!(summary["final"]["cycle"], 2);
+    assert_eq!(summary["cycles"][0]["change"]["design_unchanged"], false);
+    assert!(summary["cycles"][1]["aerodynamic"].is_null());
+    let report = std::fs::read_to_string(dir.join("report.md")).unwrap();
+    assert!(report.contains("Not converged: the cycle cap of 1 was reached"));
+    assert!(dir.join("topology.png").exists() && dir.join("kinematics.json").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `fwav init` writes the default configuration, which parses back to
+/// the built-in FWAV's, and refuses to overwrite it without --force.
+#[test]
+fn init_writes_the_default_configuration() {
+    let dir = temp("init");
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("fwav.toml");
+    let path = file.to_str().unwrap();
+    let out = fwav(&["init", "--out", path]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&file).unwrap();
+    assert_eq!(
+        SystemConfig::from_toml(&text).unwrap(),
+        SystemConfig::default()
+    );
+    for table in ["[wing]", "[analysis]", "[design]", "[topology]", "[mdois]"] {
+        assert!(text.contains(table), "{table}");
+    }
+    assert!(text.contains("max_cycles = 5") && text.contains("# Design cycles allowed; 1..=50"));
+    let again = fwav(&["init", "--out", path]);
+    assert!(!again.status.success());
+    assert!(String::from_utf8_lossy(&again.stderr).contains("--force"));
+    assert!(fwav(&["init", "--out", path, "--force"]).status.success());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Bad configurations are refused before anything runs, the error naming
+/// the field and its range; a resume with another configuration names
+/// the first differing field.
+#[test]
+fn configuration_errors_name_the_field() {
+    let dir = temp("errors");
+    std::fs::create_dir_all(&dir).unwrap();
+    let config = dir.join("bad.toml");
+    for (text, field, range) in [
+        ("[mdois]\nmax_cycles = 0\n", "mdois.max_cycles", "1..=50"),
+        (
+            "[mdois]\nkinematics_tolerance = 2\n",
+            "mdois.kinematics_tolerance",
+            "[0, 0.5]",
+        ),
+        (
+            "[analysis]\nsteps_per_cycle = 3\n",
+            "analysis.steps_per_cycle",
+            "8..=2000",
+        ),
+        (
+            "[topology]\nthreshold = 2.0\n",
+            "topology.threshold",
+            "[0.01, 0.99]",
+        ),
+        (
+            "[kinematics]\namplitude_deg = 100.0\n",
+            "kinematics.amplitude_deg",
+            "[0, 80]",
+        ),
+        ("[mdois]\ntolerance = 1\n", "tolerance", "unknown field"),
+    ] {
+        std::fs::write(&config, text).unwrap();
+        let out_dir = dir.join("never");
+        let out = fwav(&[
+            "design",
+            "--config",
+            config.to_str().unwrap(),
+            "--out",
+            out_dir.to_str().unwrap(),
+        ]);
+        assert!(!out.status.success(), "{text}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            stderr.contains(field) && stderr.contains(range) && stderr.contains("bad.toml"),
+            "{text}: {stderr}"
+        );
+        assert!(!out_dir.exists(), "{text}");
+    }
+    // A run directory with nothing computed yet (stage limit 0).
+    let run = dir.join("run");
+    let empty = start(
+        &coarse(),
+        &run,
+        &RunOptions {
+            stage_limit: Some(0),
+        },
+        &|_| {},
+    )
+    .unwrap();
+    assert_eq!((empty.outcome, empty.stages_computed), (None, 0));
+    let mut other = coarse();
+    other.topology.mass_fraction = 0.6;
+    let e = resume(
+        &run,
+        Some(&other),
+        &RunOptions {
+            stage_limit: Some(0),
+        },
+        &|_| {},
+    )
+    .unwrap_err();
+    let message = e.to_string();
+    assert!(
+        message.contains("topology.mass_fraction") && message.contains("0.6"),
+        "{message}"
+    );
+    let nothing = resume(&dir.join("nothing"), None, &RunOptions::default(), &|_| {}).unwrap_err();
+    assert!(matches!(nothing, DesignError::NoRun { .. }), "{nothing}");
+    std::fs::remove_dir_all(&dir).ok();
+}
