@@ -11,35 +11,8 @@ use fwav::aeroelastic::config::SystemConfig;
 use fwav::mdois::state::RunState;
 use fwav::mdois::{resume, start, DesignError, Outcome, RunOptions, Stage};
 
-/// The coarse design of the tests (and of the README): a 16 x 6 wing, two
-/// flapping cycles of 20 steps on a 4 x 8 lattice, kinematic levels
-/// within ±1 Hz, ±5° of the initial design, a carbon mass fraction of
-/// 0.7, and a layout counted as unchanged when at most 5% of its 94
-/// design elements flip (on so coarse a mesh a few elements toggle
-/// between near-equal layouts as the pressure changes). It converges in
-/// cycle 2, in about 20 s of the dev test profile.
-const COARSE: &str = "
-[wing]
-span_elements = 16
-chord_elements = 6
-[analysis]
-cycles = 2
-steps_per_cycle = 20
-chordwise_panels = 4
-spanwise_panels = 8
-[design]
-frequency_hz = [10.0, 11.0, 12.0]
-amplitude_deg = [25.0, 30.0, 35.0]
-mean_angle_deg = [-5.0, 0.0, 5.0]
-stroke_plane_deg = [80.0, 90.0, 100.0]
-[topology]
-mass_fraction = 0.7
-max_cycles = 4
-simp_iterations = 30
-[mdois]
-max_cycles = 4
-layout_tolerance = 0.05
-";
+/// The coarse design of the tests and the README (documented in the file).
+const COARSE: &str = include_str!("../../configs/coarse.toml");
 
 fn coarse() -> SystemConfig {
     SystemConfig::from_toml(COARSE).unwrap()

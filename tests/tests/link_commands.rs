@@ -5,53 +5,16 @@
 use std::io::{Read, Write};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
-use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
 
 use fwav::device::{Device, DeviceError};
 use fwav::link::LinkError;
 use fwav::port;
 use fwav::profile_file::ProfileFile;
-use fwav_hil_sim::config::PlantParams;
-use fwav_hil_sim::serve::Server;
+use fwav_e2e::Served;
 use fwav_protocol::frame::encode_frame_vec;
 use fwav_protocol::{Command, DeviceHello, DeviceMessage, FrameDecoder, Hello, Request};
 use serialport::{SerialPort, TTYPort};
-
-/// hil-sim serving in real time on a pty, until dropped.
-struct Served {
-    path: String,
-    stop: Arc<AtomicBool>,
-    thread: Option<JoinHandle<()>>,
-}
-
-impl Served {
-    fn start() -> Self {
-        let mut server = Server::new(&PlantParams::default(), 1.0).expect("pty");
-        let path = server.path().to_owned();
-        let stop = Arc::new(AtomicBool::new(false));
-        let flag = stop.clone();
-        let thread = std::thread::spawn(move || {
-            server
-                .run(|| flag.load(Ordering::Relaxed))
-                .expect("server runs");
-        });
-        Self {
-            path,
-            stop,
-            thread: Some(thread),
-        }
-    }
-}
-
-impl Drop for Served {
-    fn drop(&mut self) {
-        self.stop.store(true, Ordering::Relaxed);
-        if let Some(t) = self.thread.take() {
-            let _ = t.join();
-        }
-    }
-}
 
 fn initial_design() -> ProfileFile {
     ProfileFile::load(concat!(

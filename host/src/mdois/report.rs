@@ -134,7 +134,7 @@ pub fn markdown(summary: &Summary, pictures: &[(&str, &str)], cycle_files: &[Str
             }
             let _ = writeln!(
                 s,
-                "\nChange from the initial design: CT {}, CP {}, efficiency {}, wing mass {}.\n\nThe final kinematics are in [kinematics.json](kinematics.json) (flight-controller profile; written by a stand-in without the actuator feasibility check).",
+                "\nChange from the initial design: CT {}, CP {}, efficiency {}, wing mass {}.",
                 percent(c.ct_relative_change),
                 percent(c.cp_relative_change),
                 percent(c.efficiency_relative_change),
@@ -144,6 +144,55 @@ pub fn markdown(summary: &Summary, pictures: &[(&str, &str)], cycle_files: &[Str
         _ => {
             let _ = writeln!(s, "Not available until the run is over.");
         }
+    }
+    if let Some(a) = &summary.actuator {
+        let _ = writeln!(s, "\n## Actuator\n");
+        let margins: Vec<String> = a
+            .margins
+            .iter()
+            .map(|m| {
+                format!(
+                    "{} {:.4} {} of {:.4} {} (margin {:.1}%)",
+                    m.quantity,
+                    m.value,
+                    m.unit,
+                    m.limit,
+                    m.unit,
+                    100.0 * m.margin
+                )
+            })
+            .collect();
+        let verdict = if a.optimum_feasible && !a.clamped_to_envelope {
+            format!(
+                "The final kinematics are **feasible** on the simulator's default actuator (every margin at least {:.0}%; limiting: {}). [kinematics.json](kinematics.json) flies them: {} Hz, {} deg amplitude, {} deg mean.",
+                100.0 * a.reserve,
+                a.limiting.quantity,
+                a.flown_frequency_hz,
+                a.flown_amplitude_deg,
+                a.flown_mean_angle_deg
+            )
+        } else {
+            format!(
+                "The final kinematics are **not feasible** on the simulator's default actuator (limiting: {}, {:.4} {} against {:.4} {}; reserve {:.0}%). [kinematics.json](kinematics.json) flies the nearest feasible kinematics instead: {} Hz, {} deg amplitude, {} deg mean ({} reduced by {:.1}%{}).",
+                a.limiting.quantity,
+                a.limiting.value,
+                a.limiting.unit,
+                a.limiting.limit,
+                a.limiting.unit,
+                100.0 * a.reserve,
+                a.flown_frequency_hz,
+                a.flown_amplitude_deg,
+                a.flown_mean_angle_deg,
+                a.change,
+                100.0 * a.relative_change,
+                if a.clamped_to_envelope { ", after clamping into the flight controller's envelope" } else { "" }
+            )
+        };
+        let _ = writeln!(
+            s,
+            "{verdict}\n\nMargins of the optimum: {}.",
+            margins.join("; ")
+        );
     }
 
     if !pictures.is_empty() {

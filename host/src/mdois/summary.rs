@@ -14,6 +14,7 @@ use crate::aeroelastic::config::SystemConfig;
 use crate::discipline::section::SectionResult;
 
 use super::error::DesignError;
+use super::profile::{actuator_check, ActuatorCheck};
 use super::stage::{
     load_kinematics, load_system, load_topology, KinematicRecord, KinematicValues, TopologyRecord,
 };
@@ -224,6 +225,10 @@ pub struct Summary {
     pub stage_seconds: f64,
     /// Invocations of the driver (1 + resumes).
     pub runs: usize,
+    /// The actuator verdict on the final kinematics and what
+    /// `kinematics.json` flies (once the run is over).
+    #[serde(default)]
+    pub actuator: Option<ActuatorCheck>,
 }
 
 /// Builds the summary of the run in `dir` from its `state`.
@@ -333,6 +338,10 @@ pub fn build(config: &SystemConfig, dir: &Path, state: &RunState) -> Result<Summ
     };
     let initial = point(1);
     let final_design = final_cycle.and_then(point);
+    let actuator = match &final_design {
+        Some(f) => Some(actuator_check(&f.kinematics)?),
+        None => None,
+    };
     let relative = |a: f64, b: f64| if a != 0.0 { b / a - 1.0 } else { f64::NAN };
     let comparison = match (&initial, &final_design) {
         (Some(i), Some(f)) => Some(Comparison {
@@ -357,5 +366,6 @@ pub fn build(config: &SystemConfig, dir: &Path, state: &RunState) -> Result<Summ
         final_design,
         comparison,
         runs: state.runs.len(),
+        actuator,
     })
 }

@@ -1,0 +1,89 @@
+//! The whole chain: the MDOIS design of the coarse case
+//! (`configs/coarse.toml`) converges, its `kinematics.json` passes the
+//! actuator check and the flight controller's limits, is uploaded over the
+//! framed serial link to the simulated flight controller (`hil-sim serve`
+//! on a pseudo-terminal, the firmware's core driving the simulated motor
+//! and wing in real time) and flown: the wing reaches the commanded
+//! amplitude within 2% and the commanded frequency.
+
+use std::time::{Duration, Instant};
+
+use fwav::aeroelastic::config::SystemConfig;
+use fwav::device::Device;
+use fwav::mdois::{start, Outcome, RunOptions};
+use fwav::port;
+use fwav::profile_file::ProfileFile;
+use fwav_e2e::Served;
+use fwav_protocol::{Command, Limits};
+
+#[test]
+fn the_coarse_design_converges_and_its_kinematics_fly_in_hil_sim() {
+    let config =
+        SystemConfig::from_toml(include_str!("../../configs/coarse.toml")).expect("coarse case");
+    let dir = std::env::temp_dir().join(format!("fwav-design-to-flight-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    let started = Instant::now();
+    let run = start(&config, &dir, &RunOptions::default(), &|_| {}).expect("the design runs");
+    let seconds = started.elapsed().as_secs_f64();
+    println!("coarse design: {:?} in {seconds:.1} s", run.outcome);
+    assert!(
+        matches!(run.outcome, Some(Outcome::Converged { .. })),
+        "{:?}",
+        run.outcome
+    );
+    let actuator = run.summary.actuator.as_ref().expect("actuator verdict");
+    println!(
+        "actuator: feasible {}, limiting {} {:.4} {} of {:.4}",
+        actuator.optimum_feasible,
+        actuator.limiting.quantity,
+        actuator.limiting.value,
+        actuator.limiting.unit,
+        actuator.limiting.limit
+    );
+
+    let file = ProfileFile::load(dir.join("kinematics.json")).expect("kinematics.json loads");
+    assert!(file.violations(&Limits::REFERENCE_FWAV).is_empty());
+    let segment = file.document.segments[0];
+    assert_eq!(segment.frequency_hz, actuator.flown_frequency_hz);
+    assert_eq!(segment.amplitude_deg, actuator.flown_amplitude_deg);
+
+    let served = Served::start();
+    let mut device =
+        Device::connect(port::open(&served.path).expect("pty")).expect("handshake with hil-sim");
+    device
+        .upload(&file.profile)
+        .expect("accepted and read back");
+    device.command(Command::Arm).unwrap();
+    device.command(Command::Start).unwrap();
+    device.telemetry(true, 100).unwrap();
+    // The ramp, then 1.5 s (16 or more flapping cycles) to settle.
+    let flight = Duration::from_secs_f64(segment.ramp_s + 1.5);
+    let clock = Instant::now();
+    let mut samples = Vec::new();
+    while clock.elapsed() < flight {
+        let status = device.status().unwrap();
+        assert!(status.armed && status.running, "{status:?}");
+        device.link.listen(Duration::from_millis(100)).unwrap();
+        samples.extend(device.link.take_telemetry());
+    }
+    let last = samples.last().expect("telemetry");
+    let amplitude = f64::from(last.amplitude_est_rad).to_degrees();
+    let frequency = f64::from(last.frequency_est_hz);
+    println!(
+        "flown: amplitude {amplitude:.3} deg (commanded {}), frequency {frequency:.3} Hz (commanded {})",
+        segment.amplitude_deg, segment.frequency_hz
+    );
+    assert!(
+        (amplitude - segment.amplitude_deg).abs() < 0.02 * segment.amplitude_deg,
+        "amplitude {amplitude} deg against {}",
+        segment.amplitude_deg
+    );
+    assert!(
+        (frequency - segment.frequency_hz).abs() < 0.01 * segment.frequency_hz,
+        "frequency {frequency} Hz against {}",
+        segment.frequency_hz
+    );
+    device.command(Command::Stop).unwrap();
+    device.command(Command::Disarm).unwrap();
+    std::fs::remove_dir_all(&dir).ok();
+}
