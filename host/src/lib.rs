@@ -19,6 +19,7 @@ pub mod aero2d;
 pub mod aeroelastic;
 pub mod device;
 pub mod discipline;
+pub mod drawing;
 pub mod files;
 pub mod link;
 pub mod mdois;

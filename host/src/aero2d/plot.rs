@@ -5,7 +5,6 @@
 //! Non-finite values (NaN, infinities) and absurd ones (beyond `1e12`) are
 //! skipped; empty inputs give empty axes with a default range.
 
-use std::error::Error;
 use std::ops::Range;
 use std::path::Path;
 
@@ -15,16 +14,8 @@ use plotters::prelude::*;
 
 use super::ldvm::{FreeVortex, History};
 
-/// The picture could not be drawn (font, file or backend error), as a message.
-#[derive(Debug, thiserror::Error)]
-#[error("aero2d plot: {0}")]
-pub struct PlotError(String);
-
-impl<E: Error + Send + Sync> From<DrawingAreaErrorKind<E>> for PlotError {
-    fn from(e: DrawingAreaErrorKind<E>) -> Self {
-        Self(e.to_string())
-    }
-}
+/// A picture could not be drawn (the crate's one drawing error).
+pub use crate::drawing::DrawingError as PlotError;
 
 /// Picture size, pixels.
 const SIZE: (u32, u32) = (1200, 1350);

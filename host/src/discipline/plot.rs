@@ -4,23 +4,14 @@
 //! Pareto front, the 18 array runs, the initial design and the three
 //! confirmed candidates.
 
-use std::error::Error;
 use std::path::Path;
 
 use plotters::prelude::*;
 
 use super::kinematic::{DesignSpace, KinematicResult};
 
-/// The picture could not be drawn (font, file or backend), as a message.
-#[derive(Debug, thiserror::Error)]
-#[error("kinematics plot: {0}")]
-pub struct PlotError(String);
-
-impl<E: Error + Send + Sync> From<DrawingAreaErrorKind<E>> for PlotError {
-    fn from(e: DrawingAreaErrorKind<E>) -> Self {
-        Self(e.to_string())
-    }
-}
+/// A picture could not be drawn (the crate's one drawing error).
+pub use crate::drawing::DrawingError as PlotError;
 
 const FONT: &str = "sans-serif";
 

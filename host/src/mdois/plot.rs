@@ -5,7 +5,6 @@
 //! cycle. (The Pareto front and main effects come from
 //! [`crate::discipline::plot`].)
 
-use std::error::Error;
 use std::ops::Range;
 use std::path::Path;
 
@@ -16,16 +15,8 @@ use crate::discipline::kinematic::DesignSpace;
 use super::stage::SystemRecord;
 use super::summary::Summary;
 
-/// The picture could not be drawn (font, file or backend), as a message.
-#[derive(Debug, thiserror::Error)]
-#[error("design plot: {0}")]
-pub struct PlotError(String);
-
-impl<E: Error + Send + Sync> From<DrawingAreaErrorKind<E>> for PlotError {
-    fn from(e: DrawingAreaErrorKind<E>) -> Self {
-        Self(e.to_string())
-    }
-}
+/// A picture could not be drawn (the crate's one drawing error).
+pub use crate::drawing::DrawingError as PlotError;
 
 const FONT: &str = "sans-serif";
 const COLOURS: [RGBColor; 4] = [

@@ -2,23 +2,14 @@
 //! span to the right and the leading edge at the top, carbon elements
 //! black and mylar-only elements white (the seed paper's Fig. 20 style).
 
-use std::error::Error;
 use std::path::Path;
 
 use plotters::prelude::*;
 
 use crate::shell::mesh::ShellMesh;
 
-/// The picture could not be drawn (font, file or backend), as a message.
-#[derive(Debug, thiserror::Error)]
-#[error("topology picture: {0}")]
-pub struct PictureError(String);
-
-impl<E: Error + Send + Sync> From<DrawingAreaErrorKind<E>> for PictureError {
-    fn from(e: DrawingAreaErrorKind<E>) -> Self {
-        Self(e.to_string())
-    }
-}
+/// A picture could not be drawn (the crate's one drawing error).
+pub use crate::drawing::DrawingError as PictureError;
 
 /// Draws `layout` (carbon or not per element of `mesh`) to `png`, about
 /// `width` pixels wide, with `title` above.
