@@ -31,7 +31,7 @@ use crate::shell::wing::WingMesh;
 
 use super::esl::{EquivalentStaticLoads, EslForm};
 use super::pressure::PressureHistory;
-use super::response::{nonlinear_response_from, ResponseError, ResponseSettings, SampledResponse};
+use super::response::{nonlinear_response, ResponseError, ResponseSettings, SampledResponse};
 use super::simp::{self, SimpError, SimpSettings};
 
 /// The structure whose reinforcement is designed.
@@ -238,20 +238,12 @@ pub fn transform(densities: &[f64], design: &[bool], threshold: f64) -> Vec<bool
         .collect()
 }
 
-/// The fraction of the design elements below which a cycle's change of
-/// layout lets the next cycle's dynamic analysis start from the end state
-/// of this one (a state at the start of a period, near the periodic
-/// response of so close a design) and skip the period that brings the
-/// load in from rest: half the analysis. (The first 0/1 layout, far from
-/// the full-carbon start, is analysed from rest.)
-pub const WARM_START_BELOW: f64 = 0.05;
-
 /// Runs ESLSO on `problem` under `pressure` from the design `start`
 /// (carbon density per element; the first cycle analyses it as given);
 /// `progress` hears of each analysis step and each finished cycle.
 ///
 /// Cost per cycle: one nonlinear dynamic analysis (see
-/// [`nonlinear_response_from`]) and one SIMP run (one factorization and one
+/// [`nonlinear_response`]) and one SIMP run (one factorization and one
 /// multi-case solve an iteration).
 pub fn optimize(
     problem: &DesignProblem,
@@ -290,20 +282,15 @@ pub fn optimize(
     let mut densities = current.clone();
     let mut converged = false;
     let mut warm: Option<Vec<f64>> = None;
-    let design_elements = problem.design.iter().filter(|&&d| d).count().max(1);
-    // The last analysis's end state, kept when the layout then changed
-    // by less than WARM_START_BELOW of the design elements.
-    let mut last_state = None;
     for cycle in 1..=settings.max_cycles {
         let clock = Instant::now();
         let sections = problem.sections(&current, penalty);
-        let (response, end): (SampledResponse, _) = nonlinear_response_from(
+        let response: SampledResponse = nonlinear_response(
             &problem.mesh,
             &sections,
             &problem.fixed,
             pressure,
             &settings.response,
-            last_state.take(),
             |done, total| progress(EslsoProgress::Step { cycle, done, total }),
         )?;
         let analysis_s = clock.elapsed().as_secs_f64();
@@ -356,9 +343,6 @@ pub fn optimize(
             .zip(&next)
             .all(|(&r, &c)| r == f64::from(u8::from(c)));
         layout = next;
-        if (changed as f64) < WARM_START_BELOW * design_elements as f64 {
-            last_state = Some(end);
-        }
         if changed == 0 && start_was_layout {
             converged = true;
             break;

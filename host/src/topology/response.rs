@@ -11,9 +11,7 @@
 //!
 //! The run starts at rest, undeformed, and brings the load in over the
 //! first period (factor `(1 - cos(pi t / T)) / 2`), then runs `periods - 1`
-//! more periods and samples the last; or, given the end state of a nearly
-//! equal design's run ([`nonlinear_response_from`], ESLSO's later cycles),
-//! starts there and runs only the `periods - 1`. (A static start under the first
+//! more periods and samples the last. (A static start under the first
 //! load fails on the thin mylar-only regions of a 0/1 layout: without the
 //! inertia shift their compressed membranes make the tangent indefinite.)
 //! A step where Newton fails is halved (pressure interpolated), up to
@@ -113,8 +111,8 @@ pub enum ResponseError {
 }
 
 /// The nonlinear dynamic response of `mesh` with `sections` and the global
-/// DOFs `fixed` held, under `pressure` repeated periodically, from rest;
-/// `progress` is told each step and the total.
+/// DOFs `fixed` held, under `pressure` repeated periodically; `progress`
+/// is told each step and the total.
 ///
 /// Cost: per step, a few Newton iterations, each an element pass and a
 /// sparse Cholesky factorization of the tangent.
@@ -124,28 +122,8 @@ pub fn nonlinear_response(
     fixed: &[usize],
     pressure: &PressureHistory,
     settings: &ResponseSettings,
-    progress: impl FnMut(usize, usize),
-) -> Result<SampledResponse, ResponseError> {
-    Ok(nonlinear_response_from(mesh, sections, fixed, pressure, settings, None, progress)?.0)
-}
-
-/// [`nonlinear_response`], from `start` if given, and the state at the
-/// end of the sampled period (which, the history being periodic, is a
-/// state at the start of a period).
-///
-/// From rest the first of `periods` brings the load in; from `start` (the
-/// end state of an analysis of a nearly equal design under the same
-/// pressure, e.g. the previous ESLSO cycle's) the run is already near its
-/// periodic response, so it skips that period and runs `periods - 1`.
-pub fn nonlinear_response_from(
-    mesh: &ShellMesh,
-    sections: &[Section],
-    fixed: &[usize],
-    pressure: &PressureHistory,
-    settings: &ResponseSettings,
-    start: Option<DynamicState>,
     mut progress: impl FnMut(usize, usize),
-) -> Result<(SampledResponse, DynamicState), ResponseError> {
+) -> Result<SampledResponse, ResponseError> {
     pressure.check(mesh.elements.len())?;
     let steps = pressure.samples.len();
     let s = settings;
@@ -158,17 +136,6 @@ pub fn nonlinear_response_from(
         return Err(ResponseError::Setting(format!(
             "{s:?} with {steps} steps a period (periods >= 2, 1 <= sample_every <= steps, rho_inf in [0, 1], tolerance > 0)"
         )));
-    }
-    let dofs = mesh.dofs();
-    if let Some(state) = &start {
-        if state.velocity.len() != dofs
-            || state.configuration.displacement.len() != mesh.nodes.len()
-        {
-            return Err(ResponseError::Setting(format!(
-                "a start state of {} DOFs for a mesh of {dofs}",
-                state.velocity.len()
-            )));
-        }
     }
     let dt = pressure.dt;
     let mut iterations = 0;
@@ -183,16 +150,7 @@ pub fn nonlinear_response_from(
     }
     let stepper = Stepper::new(mesh, sections, fixed, s, reference_force, dt)?;
     let transient = &stepper.transient;
-    let warm = start.is_some();
-    let mut state = match start {
-        Some(mut state) => {
-            state.time = 0.0;
-            state
-        }
-        None => transient.rest(),
-    };
-    // From a start state the ramp period is skipped.
-    let first = usize::from(warm);
+    let mut state = transient.rest();
     let mut out = SampledResponse {
         times: Vec::new(),
         displacements: Vec::new(),
@@ -201,8 +159,8 @@ pub fn nonlinear_response_from(
         dynamic_loads: Vec::new(),
         newton_iterations: 0,
     };
-    let total = (s.periods - first) * steps;
-    for period in first..s.periods {
+    let total = s.periods * steps;
+    for period in 0..s.periods {
         for (k, sample) in pressure.samples.iter().enumerate() {
             let before = &pressure.samples[(k + steps - 1) % steps];
             // The first period brings the load in smoothly from rest.
@@ -220,7 +178,7 @@ pub fn nonlinear_response_from(
                 &scaled(before, ramp(k)),
                 &scaled(sample, ramp(k + 1)),
             )?;
-            progress((period - first) * steps + k + 1, total);
+            progress(period * steps + k + 1, total);
             if period + 1 == s.periods && (k + 1) % s.sample_every == 0 {
                 let c = &state.configuration;
                 let mut u = vec![0.0; mesh.dofs()];
@@ -246,7 +204,7 @@ pub fn nonlinear_response_from(
         }
     }
     out.newton_iterations = iterations;
-    Ok((out, state))
+    Ok(out)
 }
 
 /// Steps that halve themselves where Newton fails: a step that does not
