@@ -182,10 +182,16 @@ pub fn cycle_dir(cycle: usize) -> String {
     format!("cycle-{cycle}")
 }
 
-/// Reads a JSON file of the run (`relative` to `dir`).
-pub fn load_json<T: DeserializeOwned>(dir: &Path, relative: &str) -> Result<T, DesignError> {
+/// Reads a file of the run (`relative` to `dir`): its path and text.
+fn read_run_file(dir: &Path, relative: &str) -> Result<(PathBuf, String), DesignError> {
     let path = dir.join(relative);
     let text = std::fs::read_to_string(&path).map_err(DesignError::io(&path))?;
+    Ok((path, text))
+}
+
+/// Reads a JSON file of the run (`relative` to `dir`).
+pub fn load_json<T: DeserializeOwned>(dir: &Path, relative: &str) -> Result<T, DesignError> {
+    let (path, text) = read_run_file(dir, relative)?;
     serde_json::from_str(&text).map_err(|e| DesignError::State {
         path,
         message: e.to_string(),
@@ -339,11 +345,9 @@ impl Context<'_> {
         self.report(cycle, stage, Event::Started);
         let design = self.design(cycle)?;
         let prefix = cycle_dir(cycle);
-        let section_path = self.dir.join(format!("{prefix}/section.json"));
-        let text =
-            std::fs::read_to_string(&section_path).map_err(DesignError::io(&section_path))?;
+        let (section_path, text) = read_run_file(&self.dir, &format!("{prefix}/section.json"))?;
         let section = SectionFile::from_json(&text).map_err(|e| DesignError::State {
-            path: section_path.clone(),
+            path: section_path,
             message: e.to_string(),
         })?;
         let planform = self.config.planform();
@@ -436,9 +440,7 @@ impl Context<'_> {
         self.report(cycle, stage, Event::Started);
         let design = self.design(cycle)?;
         let prefix = cycle_dir(cycle);
-        let pressure_path = self.dir.join(format!("{prefix}/pressure.json"));
-        let text =
-            std::fs::read_to_string(&pressure_path).map_err(DesignError::io(&pressure_path))?;
+        let (_, text) = read_run_file(&self.dir, &format!("{prefix}/pressure.json"))?;
         let elements = self.problem.mesh.elements.len();
         let pressure = PressureHistory::from_json(&text, elements)
             .map_err(|source| DesignError::Pressure { cycle, source })?;
