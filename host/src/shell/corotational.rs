@@ -452,11 +452,7 @@ mod tests {
     fn transposed_jacobian_product_matches_the_jacobian() {
         let (mesh, sections) = one();
         let cr = Corotational::new(&mesh, &sections).unwrap();
-        let mut c = Configuration::initial(4);
-        let u: Vec<f64> = (0..24)
-            .map(|i| 0.05 * ((i * 7 % 11) as f64 - 5.0) / 5.0)
-            .collect();
-        c.update(&u);
+        let c = super::tests::bent();
         let (x, r) = element_state(&mesh, 0, &c);
         let reference = &cr.references[0];
         let (_, jac) = deformation(reference, &x, &r);
@@ -468,6 +464,17 @@ mod tests {
             "{}",
             (direct - blocks).norm()
         );
+    }
+
+    /// [`one`]'s nodes moved and turned by up to 0.05 m and 0.05 rad: a
+    /// large, general configuration.
+    pub(super) fn bent() -> Configuration {
+        let mut c = Configuration::initial(4);
+        let u: Vec<f64> = (0..24)
+            .map(|i| 0.05 * ((i * 7 % 11) as f64 - 5.0) / 5.0)
+            .collect();
+        c.update(&u);
+        c
     }
 
     /// A large rigid rotation and translation stores nothing and loads
@@ -503,11 +510,7 @@ mod consistency {
     fn force_and_tangent_are_derivatives() {
         let (mesh, sections) = super::tests::one();
         let cr = Corotational::new(&mesh, &sections).unwrap();
-        let mut c = Configuration::initial(4);
-        let u: Vec<f64> = (0..24)
-            .map(|i| 0.05 * ((i * 7 % 11) as f64 - 5.0) / 5.0)
-            .collect();
-        c.update(&u);
+        let c = super::tests::bent();
         let r = cr.element(&mesh, 0, &c);
         let h = 1e-6;
         let mut worst_f: f64 = 0.0;
