@@ -203,18 +203,16 @@ impl<'a> NonlinearTransient<'a> {
             .into());
         }
         let map = self.structure.map();
-        // Constant-acceleration predictor: a_{n+1} from acc_n
-        // (acc_{n+1} = acc_n).
         let old = state.clone();
-        let a_pred: Vec<f64> = (0..n)
-            .map(|i| {
-                ((1.0 - af) * old.acceleration[i] + af * old.acceleration[i]
-                    - am * old.algorithmic[i])
-                    / (1.0 - am)
-            })
-            .collect();
-        let mut a_new = match self.predictor {
-            Predictor::ConstantAcceleration => a_pred,
+        let mut a_new: Vec<f64> = match self.predictor {
+            // a_{n+1} from acc_n (acc_{n+1} = acc_n).
+            Predictor::ConstantAcceleration => (0..n)
+                .map(|i| {
+                    ((1.0 - af) * old.acceleration[i] + af * old.acceleration[i]
+                        - am * old.algorithmic[i])
+                        / (1.0 - am)
+                })
+                .collect(),
             // The a_{n+1} that makes the increment vanish.
             Predictor::ConstantDisplacement => (0..n)
                 .map(|i| -(old.velocity[i] + h * (0.5 - beta) * old.algorithmic[i]) / (h * beta))
