@@ -216,41 +216,108 @@ fn deformation(
     (d, jac)
 }
 
-/// `J^T f` for a vector `f` over the deformational DOFs at the
-/// configuration `x`, `r`, from the blocks of `J` (see [`deformation`])
-/// without forming it: per node `j`, translations
+/// The pieces of `J^T f` for a vector `f` over the deformational DOFs at
+/// the configuration `x`, `r` (see [`deformation`] for `J`'s blocks),
+/// without forming `J`: per node `j`, translations
 /// `E f_u_j - 1/4 sum_i E f_u_i + G_j^T (a - b)` with
-/// `a = sum_i (E f_u_i) x (x_i - c)` and `b = sum_i E T_i^-T f_theta_i`,
-/// spins `E T_j^-T f_theta_j`. A few hundred flops against the 24 x 24
+/// `a = sum_i (E f_u_i) x (x_i - c)` and `b = sum_i s_i`, spins
+/// `s_j = E T_j^-T f_theta_j`. A few hundred flops against the 24 x 24
 /// Jacobian's thousands: the stress-dependent part of the tangent takes
-/// this 24 times an element.
+/// this once per corner translation, and a turned node changes only its
+/// own `s_j` (the frame does not depend on the nodal rotations).
+struct PulledForce {
+    /// Frame (columns).
+    e: Matrix3<f64>,
+    /// Frame spin per corner translation.
+    g: SMatrix<f64, 3, 12>,
+    /// `E f_u_i` per corner.
+    pulled: [Vector3<f64>; 4],
+    /// `sum_i E f_u_i`.
+    sum: Vector3<f64>,
+    /// `sum_i (E f_u_i) x (x_i - c)`.
+    a: Vector3<f64>,
+    /// `s_i` per corner.
+    spin: [Vector3<f64>; 4],
+    /// `sum_i s_i`.
+    b: Vector3<f64>,
+}
+
+impl PulledForce {
+    fn new(
+        reference: &Reference,
+        x: &[Vector3<f64>; 4],
+        r: &[Rotation3<f64>; 4],
+        f: &ElementVector,
+    ) -> Self {
+        let (e, g) = frame_and_spin(x);
+        let c = (x[0] + x[1] + x[2] + x[3]) / 4.0;
+        let mut out = Self {
+            e,
+            g,
+            pulled: [Vector3::zeros(); 4],
+            sum: Vector3::zeros(),
+            a: Vector3::zeros(),
+            spin: [Vector3::zeros(); 4],
+            b: Vector3::zeros(),
+        };
+        for i in 0..4 {
+            out.pulled[i] = e * f.fixed_rows::<3>(6 * i);
+            out.sum += out.pulled[i];
+            out.a += out.pulled[i].cross(&(x[i] - c));
+            out.spin[i] = out.spin_force(reference, &r[i], f, i);
+            out.b += out.spin[i];
+        }
+        out
+    }
+
+    /// `s_i` for node `i` at rotation `r_i` in this frame.
+    fn spin_force(
+        &self,
+        reference: &Reference,
+        r_i: &Rotation3<f64>,
+        f: &ElementVector,
+        i: usize,
+    ) -> Vector3<f64> {
+        let theta = log_so3(&(self.e.transpose() * r_i.matrix() * reference.e0));
+        self.e * (tangent_inverse(&theta).transpose() * f.fixed_rows::<3>(6 * i + 3))
+    }
+
+    /// `J^T f`.
+    fn vector(&self) -> ElementVector {
+        let mut out = ElementVector::zeros();
+        let ab = self.a - self.b;
+        for j in 0..4 {
+            let t = self.pulled[j] - 0.25 * self.sum
+                + self.g.fixed_view::<3, 3>(0, 3 * j).transpose() * ab;
+            out.fixed_rows_mut::<3>(6 * j).copy_from(&t);
+            out.fixed_rows_mut::<3>(6 * j + 3).copy_from(&self.spin[j]);
+        }
+        out
+    }
+
+    /// The change of `J^T f` when node `j`'s `s_j` changes by `ds` (its
+    /// rotation turned, everything else held).
+    fn spin_change(&self, j: usize, ds: &Vector3<f64>) -> ElementVector {
+        let mut out = ElementVector::zeros();
+        for k in 0..4 {
+            let t = -(self.g.fixed_view::<3, 3>(0, 3 * k).transpose() * ds);
+            out.fixed_rows_mut::<3>(6 * k).copy_from(&t);
+        }
+        out.fixed_rows_mut::<3>(6 * j + 3).copy_from(ds);
+        out
+    }
+}
+
+/// `J^T f` for a vector `f` over the deformational DOFs at the
+/// configuration `x`, `r`, from the blocks of `J` ([`PulledForce`]).
+#[cfg(test)]
 fn transposed_jacobian_times(
     reference: &Reference,
     x: &[Vector3<f64>; 4],
     r: &[Rotation3<f64>; 4],
     f: &ElementVector,
 ) -> ElementVector {
-    let (e, g) = frame_and_spin(x);
-    let c = (x[0] + x[1] + x[2] + x[3]) / 4.0;
-    let et = e.transpose();
-    let mut out = ElementVector::zeros();
-    let mut pulled = [Vector3::zeros(); 4];
-    let (mut a, mut b, mut sum) = (Vector3::zeros(), Vector3::zeros(), Vector3::zeros());
-    for i in 0..4 {
-        pulled[i] = e * f.fixed_rows::<3>(6 * i);
-        sum += pulled[i];
-        a += pulled[i].cross(&(x[i] - c));
-        let theta = log_so3(&(et * r[i].matrix() * reference.e0));
-        let spin_force = e * (tangent_inverse(&theta).transpose() * f.fixed_rows::<3>(6 * i + 3));
-        b += spin_force;
-        out.fixed_rows_mut::<3>(6 * i + 3).copy_from(&spin_force);
-    }
-    let ab = a - b;
-    for (j, own) in pulled.iter().enumerate() {
-        let t = own - 0.25 * sum + g.fixed_view::<3, 3>(0, 3 * j).transpose() * ab;
-        out.fixed_rows_mut::<3>(6 * j).copy_from(&t);
-    }
-    out
+    PulledForce::new(reference, x, r, f).vector()
 }
 
 /// The co-rotational element set of a mesh.
@@ -300,21 +367,27 @@ impl Corotational {
         // Stress-dependent part: d(J^T f_local)/dq with f_local held (the
         // base point by the same block formula, so that the difference
         // carries no round-off of two ways of computing it).
-        let base = transposed_jacobian_times(reference, &x, &r, &local_force);
+        let pieces = PulledForce::new(reference, &x, &r, &local_force);
+        let base = pieces.vector();
         let size = (x[2] - x[0]).norm().max((x[3] - x[1]).norm());
         for col in 0..24 {
             let (node, dof) = (col / 6, col % 6);
-            let (mut xp, mut rp) = (x, r);
             // J is closed-form (round-off ~1e-16 of it), so a forward
             // step of 1e-7 leaves a truncation error near 1e-7 and a
             // round-off near 1e-9.
-            let h = if dof < 3 { 1e-7 * size } else { 1e-7 };
-            if dof < 3 {
+            let column = if dof < 3 {
+                let h = 1e-7 * size;
+                let mut xp = x;
                 xp[node][dof] += h;
+                (PulledForce::new(reference, &xp, &r, &local_force).vector() - base) / h
             } else {
-                rp[node] = Rotation3::from_scaled_axis(Vector3::ith(dof - 3, h)) * rp[node];
-            }
-            let column = (transposed_jacobian_times(reference, &xp, &rp, &local_force) - base) / h;
+                // A turned node moves no frame: only its own s_j changes.
+                let h = 1e-7;
+                let turned = Rotation3::from_scaled_axis(Vector3::ith(dof - 3, h)) * r[node];
+                let ds = pieces.spin_force(reference, &turned, &local_force, node)
+                    - pieces.spin[node];
+                pieces.spin_change(node, &ds) / h
+            };
             for row in 0..24 {
                 tangent[(row, col)] += column[row];
             }
@@ -373,6 +446,34 @@ impl Corotational {
             .into_par_iter()
             .map(|e| self.element(mesh, e, c))
             .collect()
+    }
+
+    /// [`Self::responses`] (`full`) or [`Self::material_responses`] into
+    /// `out`, whose storage is kept: on the default wing the responses
+    /// take about 33 MB, which a fresh vector every Newton iteration paid
+    /// for again in page faults and zeroing (about a sixth of an
+    /// iteration's time).
+    pub fn responses_into(
+        &self,
+        mesh: &ShellMesh,
+        c: &Configuration,
+        full: bool,
+        out: &mut Vec<ElementResponse>,
+    ) {
+        let n = self.references.len();
+        out.truncate(n);
+        out.resize_with(n, || ElementResponse {
+            force: ElementVector::zeros(),
+            tangent: ElementMatrix::zeros(),
+            energy: 0.0,
+        });
+        out.par_iter_mut().enumerate().for_each(|(e, r)| {
+            *r = if full {
+                self.element(mesh, e, c)
+            } else {
+                self.element_material(mesh, e, c)
+            };
+        });
     }
 }
 

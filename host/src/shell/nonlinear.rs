@@ -9,7 +9,7 @@ use super::assembly::{element_dofs, AssemblyError};
 use super::corotational::{Configuration, Corotational, ElementResponse};
 use super::material::Section;
 use super::mesh::ShellMesh;
-use super::structure::{OrderedFactor, Structure};
+use super::structure::{OrderedFactor, OrderedStiffness, Structure};
 
 /// Why a nonlinear solve stopped.
 #[derive(Debug, thiserror::Error)]
@@ -120,6 +120,7 @@ impl<'a> NonlinearStatic<'a> {
         let mut c = Configuration::initial(self.mesh.nodes.len());
         let mut previous = c.clone();
         let mut path = Vec::with_capacity(settings.steps);
+        let mut workspace = TangentWorkspace::new(&self.structure);
         for step in 1..=settings.steps {
             let lambda = step as f64 / settings.steps as f64;
             // Predictor: repeat the last step's motion (translations and
@@ -132,17 +133,17 @@ impl<'a> NonlinearStatic<'a> {
             let mut residual_norm = f64::INFINITY;
             let mut converged = false;
             for _ in 0..settings.max_iterations {
-                let responses = self.elements.responses(self.mesh, &c);
-                let internal = internal_force(self.mesh, &responses);
+                self.elements
+                    .responses_into(self.mesh, &c, true, &mut workspace.responses);
+                let internal = internal_force(self.mesh, &workspace.responses);
                 let residual = self.residual(load, &internal, lambda);
                 residual_norm = norm(&residual) / load_norm;
                 if residual_norm < settings.tolerance {
                     converged = true;
                     break;
                 }
-                let factor = factor_tangent(&self.structure, &responses, None, || {
-                    self.elements.material_responses(self.mesh, &c)
-                })?;
+                let factor =
+                    workspace.factor(None, || self.elements.material_responses(self.mesh, &c))?;
                 let increment = factor.solve(&[map.expand(&residual)])?;
                 c.update(&increment);
             }
@@ -175,23 +176,65 @@ pub(crate) fn internal_force(mesh: &ShellMesh, responses: &[ElementResponse]) ->
     force
 }
 
-/// The factorized tangent over the free DOFs, plus `diagonal` (free DOFs)
-/// if given: the full tangent, or the material part of `material()` (the
-/// responses' material tangents, computed only then) where the full one is
-/// not positive definite (far from equilibrium after a large step; Newton
-/// then converges linearly until it is again).
-pub(crate) fn factor_tangent<'s>(
+/// The storage a Newton iteration's tangent reuses from one iteration to
+/// the next: the element responses, the assembled matrix and the Cholesky
+/// factor (on the default wing about 33 MB, 8 MB and the factor, which
+/// fresh allocations every iteration paid for again in page faults and
+/// zeroing).
+pub(crate) struct TangentWorkspace<'s> {
     structure: &'s Structure,
-    responses: &[ElementResponse],
-    diagonal: Option<&[f64]>,
-    material: impl FnOnce() -> Vec<ElementResponse>,
-) -> Result<OrderedFactor<'s>, AssemblyError> {
-    let factor = |responses: &[ElementResponse]| {
-        let mut k = structure.assemble_ordered_from(responses.len(), |e| &responses[e].tangent)?;
-        if let Some(d) = diagonal {
-            structure.add_diagonal(&mut k, d)?;
+    /// The element responses of the current iterate.
+    pub responses: Vec<ElementResponse>,
+    stiffness: OrderedStiffness,
+    factor: Option<OrderedFactor<'s>>,
+}
+
+impl<'s> TangentWorkspace<'s> {
+    /// Empty storage for tangents on `structure`.
+    pub fn new(structure: &'s Structure) -> Self {
+        Self {
+            structure,
+            responses: Vec::new(),
+            stiffness: OrderedStiffness::default(),
+            factor: None,
         }
-        OrderedFactor::new(structure, &k)
-    };
-    factor(responses).or_else(|_| factor(&material()))
+    }
+
+    /// The factorized tangent over the free DOFs from [`Self::responses`],
+    /// plus `diagonal` (free DOFs) if given: the full tangent, or the
+    /// material part of `material()` (the responses' material tangents,
+    /// computed only then) where the full one is not positive definite
+    /// (far from equilibrium after a large step; Newton then converges
+    /// linearly until it is again).
+    pub fn factor(
+        &mut self,
+        diagonal: Option<&[f64]>,
+        material: impl FnOnce() -> Vec<ElementResponse>,
+    ) -> Result<&OrderedFactor<'s>, AssemblyError> {
+        let structure = self.structure;
+        let assemble = |responses: &[ElementResponse], k: &mut OrderedStiffness| {
+            structure.assemble_ordered_into(responses.len(), |e| &responses[e].tangent, k)?;
+            if let Some(d) = diagonal {
+                structure.add_diagonal(k, d)?;
+            }
+            Ok::<(), AssemblyError>(())
+        };
+        assemble(&self.responses, &mut self.stiffness)?;
+        let full = match &mut self.factor {
+            Some(f) => f.refactorize(&self.stiffness).map(|_| ()),
+            None => OrderedFactor::new(structure, &self.stiffness).map(|f| {
+                self.factor = Some(f);
+            }),
+        };
+        if full.is_err() {
+            assemble(&material(), &mut self.stiffness)?;
+            match &mut self.factor {
+                Some(f) => f.refactorize(&self.stiffness)?,
+                None => self.factor = Some(OrderedFactor::new(structure, &self.stiffness)?),
+            }
+        }
+        self.factor
+            .as_ref()
+            .ok_or_else(|| AssemblyError::Singular("no factorization".into()))
+    }
 }

@@ -27,7 +27,7 @@ use super::corotational::{Configuration, Corotational};
 use super::dynamics::GeneralizedAlpha;
 use super::material::Section;
 use super::mesh::ShellMesh;
-use super::nonlinear::{factor_tangent, internal_force, NonlinearError};
+use super::nonlinear::{internal_force, NonlinearError, TangentWorkspace};
 use super::structure::Structure;
 
 /// The largest nodal rotation a Newton correction may make, rad.
@@ -256,6 +256,7 @@ impl<'a> NonlinearTransient<'a> {
         let mut last_relative = f64::NAN;
         let mut full = self.geometric_from <= 1;
         let mut last_norm = f64::INFINITY;
+        let mut workspace = TangentWorkspace::new(&self.structure);
         for iteration in 1..=max_iterations {
             let acc: Vec<f64> = (0..n)
                 .map(|i| {
@@ -264,13 +265,10 @@ impl<'a> NonlinearTransient<'a> {
                 })
                 .collect();
             full |= iteration >= self.geometric_from;
-            let mut responses = if full {
-                self.elements.responses(self.mesh, &config)
-            } else {
-                self.elements.material_responses(self.mesh, &config)
-            };
+            self.elements
+                .responses_into(self.mesh, &config, full, &mut workspace.responses);
             let inertia: Vec<f64> = (0..n).map(|i| self.mass[i] * acc[i]).collect();
-            let internal = internal_force(self.mesh, &responses);
+            let internal = internal_force(self.mesh, &workspace.responses);
             let residual: Vec<f64> = (0..n).map(|i| load[i] - inertia[i] - internal[i]).collect();
             let free = map.restrict(&residual);
             let norm = free_norm(&free);
@@ -300,15 +298,15 @@ impl<'a> NonlinearTransient<'a> {
             // matrix included.
             if !full && norm > 0.5 * last_norm {
                 full = true;
-                responses = self.elements.responses(self.mesh, &config);
+                self.elements
+                    .responses_into(self.mesh, &config, true, &mut workspace.responses);
             }
             last_norm = norm;
             let inertia_diagonal: Vec<f64> =
                 map.restrict(&self.mass).iter().map(|m| shift * m).collect();
-            let factor =
-                factor_tangent(&self.structure, &responses, Some(&inertia_diagonal), || {
-                    self.elements.material_responses(self.mesh, &config)
-                })?;
+            let factor = workspace.factor(Some(&inertia_diagonal), || {
+                self.elements.material_responses(self.mesh, &config)
+            })?;
             let mut dq_global = factor.solve(&[map.expand(&free)])?;
             // A Newton correction that turns some node by more than
             // MAX_TURN is shortened to it: far from the solution (a thin
