@@ -40,8 +40,18 @@ fn main() {
     };
     let problem = DesignProblem::wing(&wing.wing, Layer::CARBON, Layer::MYLAR);
     let settings = EslsoSettings::default();
-    // The MDOIS hands the discipline the wing of the system analysis.
-    let start = wing.densities.clone();
+    // The MDOIS hands the discipline the wing of the system analysis;
+    // `FWAV_LAYOUT=topology.json` starts from a layout written by `fwav
+    // topology` instead, and `FWAV_RESPONSE_ONLY=1` stops after its first
+    // nonlinear analysis (the profile of one analysis).
+    let start = match std::env::var("FWAV_LAYOUT") {
+        Ok(path) => {
+            let text = std::fs::read_to_string(&path).expect("layout file");
+            let value: serde_json::Value = serde_json::from_str(&text).expect("layout JSON");
+            serde_json::from_value(value["carbon"].clone()).expect("carbon densities")
+        }
+        Err(_) => wing.densities.clone(),
+    };
     // One nonlinear dynamic analysis of the starting design, with progress.
     let clock = Instant::now();
     let mut last = Instant::now();
@@ -68,6 +78,9 @@ fn main() {
         response.newton_iterations,
         1e3 * response.peak_displacement.iter().fold(0.0f64, |m, &p| m.max(p))
     );
+    if std::env::var_os("FWAV_RESPONSE_ONLY").is_some() {
+        return;
+    }
     let clock = Instant::now();
     let mut last = Instant::now();
     let result = optimize(&problem, &pressure, &start, &settings, |p| {
