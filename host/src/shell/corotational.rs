@@ -384,8 +384,8 @@ impl Corotational {
                 // A turned node moves no frame: only its own s_j changes.
                 let h = 1e-7;
                 let turned = Rotation3::from_scaled_axis(Vector3::ith(dof - 3, h)) * r[node];
-                let ds = pieces.spin_force(reference, &turned, &local_force, node)
-                    - pieces.spin[node];
+                let ds =
+                    pieces.spin_force(reference, &turned, &local_force, node) - pieces.spin[node];
                 pieces.spin_change(node, &ds) / h
             };
             for row in 0..24 {
@@ -446,6 +446,17 @@ impl Corotational {
             .into_par_iter()
             .map(|e| self.element(mesh, e, c))
             .collect()
+    }
+
+    /// All elements' internal forces into `out` (storage kept), in
+    /// parallel.
+    pub fn forces_into(&self, mesh: &ShellMesh, c: &Configuration, out: &mut Vec<ElementVector>) {
+        let n = self.references.len();
+        out.truncate(n);
+        out.resize(n, ElementVector::zeros());
+        out.par_iter_mut()
+            .enumerate()
+            .for_each(|(e, f)| *f = self.element_force(mesh, e, c));
     }
 
     /// [`Self::responses`] (`full`) or [`Self::material_responses`] into

@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use super::assembly::{element_dofs, AssemblyError};
 use super::corotational::{Configuration, Corotational, ElementResponse};
+use super::element::ElementVector;
 use super::material::Section;
 use super::mesh::ShellMesh;
 use super::structure::{OrderedFactor, OrderedStiffness, Structure};
@@ -167,10 +168,18 @@ fn norm(v: &[f64]) -> f64 {
 
 /// The element internal forces summed over the global DOFs.
 pub(crate) fn internal_force(mesh: &ShellMesh, responses: &[ElementResponse]) -> Vec<f64> {
+    summed_forces(mesh, responses.iter().map(|r| &r.force))
+}
+
+/// Element force vectors (in element order) summed over the global DOFs.
+pub(crate) fn summed_forces<'f>(
+    mesh: &ShellMesh,
+    forces: impl Iterator<Item = &'f ElementVector>,
+) -> Vec<f64> {
     let mut force = vec![0.0; mesh.dofs()];
-    for (e, r) in responses.iter().enumerate() {
+    for (e, f) in forces.enumerate() {
         for (local, g) in element_dofs(mesh, e).into_iter().enumerate() {
-            force[g] += r.force[local];
+            force[g] += f[local];
         }
     }
     force
@@ -181,12 +190,17 @@ pub(crate) fn internal_force(mesh: &ShellMesh, responses: &[ElementResponse]) ->
 /// factor (on the default wing about 33 MB, 8 MB and the factor, which
 /// fresh allocations every iteration paid for again in page faults and
 /// zeroing).
-pub(crate) struct TangentWorkspace<'s> {
+pub struct TangentWorkspace<'s> {
     structure: &'s Structure,
     /// The element responses of the current iterate.
-    pub responses: Vec<ElementResponse>,
+    pub(crate) responses: Vec<ElementResponse>,
+    /// Element internal forces alone, for iterations that keep the last
+    /// factor.
+    pub(crate) forces: Vec<ElementVector>,
     stiffness: OrderedStiffness,
     factor: Option<OrderedFactor<'s>>,
+    /// The inertia shift the factor was made with (NaN: none), s^-2.
+    shift: f64,
 }
 
 impl<'s> TangentWorkspace<'s> {
@@ -195,9 +209,33 @@ impl<'s> TangentWorkspace<'s> {
         Self {
             structure,
             responses: Vec::new(),
+            forces: Vec::new(),
             stiffness: OrderedStiffness::default(),
             factor: None,
+            shift: f64::NAN,
         }
+    }
+
+    /// The last factorization if it was made with the inertia shift
+    /// `shift` (bit for bit: a step of another length needs its own).
+    pub(crate) fn factor_with_shift(&self, shift: f64) -> Option<&OrderedFactor<'s>> {
+        self.factor.as_ref().filter(|_| self.shift == shift)
+    }
+
+    /// [`Self::factor`] for an iteration matrix with the inertia shift
+    /// `shift` (recorded for [`Self::factor_with_shift`]).
+    pub(crate) fn factor_shifted(
+        &mut self,
+        shift: f64,
+        diagonal: &[f64],
+        material: impl FnOnce() -> Vec<ElementResponse>,
+    ) -> Result<&OrderedFactor<'s>, AssemblyError> {
+        self.shift = f64::NAN;
+        self.factor(Some(diagonal), material)?;
+        self.shift = shift;
+        self.factor
+            .as_ref()
+            .ok_or_else(|| AssemblyError::Singular("no factorization".into()))
     }
 
     /// The factorized tangent over the free DOFs from [`Self::responses`],
@@ -206,7 +244,7 @@ impl<'s> TangentWorkspace<'s> {
     /// computed only then) where the full one is not positive definite
     /// (far from equilibrium after a large step; Newton then converges
     /// linearly until it is again).
-    pub fn factor(
+    pub(crate) fn factor(
         &mut self,
         diagonal: Option<&[f64]>,
         material: impl FnOnce() -> Vec<ElementResponse>,

@@ -27,11 +27,15 @@ use super::corotational::{Configuration, Corotational};
 use super::dynamics::GeneralizedAlpha;
 use super::material::Section;
 use super::mesh::ShellMesh;
-use super::nonlinear::{internal_force, NonlinearError, TangentWorkspace};
+use super::nonlinear::{internal_force, summed_forces, NonlinearError, TangentWorkspace};
 use super::structure::Structure;
 
 /// The largest nodal rotation a Newton correction may make, rad.
 const MAX_TURN: f64 = 0.2;
+
+/// The fraction of the last residual a kept-factor iteration must reach
+/// for the next to keep it too (else the tangent is made afresh there).
+const CHORD_RATE: f64 = 0.25;
 
 /// Where the prescribed nodes are at a time: translation from the initial
 /// position and rotation, per prescribed node.
@@ -82,6 +86,17 @@ pub struct NonlinearTransient<'a> {
     pub geometric_from: usize,
     /// Where Newton starts each step (constant acceleration by default).
     pub predictor: Predictor,
+    /// Modified Newton: the relative residual below which the next
+    /// iteration keeps the last factorization instead of a fresh tangent,
+    /// as long as each such iteration cuts the residual to a quarter of
+    /// the last (else the tangent is made afresh at that iterate); when
+    /// positive, a step's first iteration also keeps the last step's
+    /// factorization (same step length), since the configuration it
+    /// starts from is where that factorization was made, to the Newton
+    /// tolerance. 0 (default): a fresh tangent every iteration. Used
+    /// with [`Self::step_in`], whose workspace carries the factorization
+    /// from step to step.
+    pub keep_factor_below: f64,
 }
 
 /// The first guess of a step's Newton iterations.
@@ -123,6 +138,7 @@ impl<'a> NonlinearTransient<'a> {
             reference_force: 0.0,
             geometric_from: 1,
             predictor: Predictor::default(),
+            keep_factor_below: 0.0,
         })
     }
 
@@ -193,6 +209,28 @@ impl<'a> NonlinearTransient<'a> {
         h: f64,
         max_iterations: usize,
     ) -> Result<usize, NonlinearError> {
+        let mut workspace = self.workspace();
+        self.step_in(&mut workspace, state, load, prescribed, h, max_iterations)
+    }
+
+    /// Storage for [`Self::step_in`]: element responses, the iteration
+    /// matrix and its factorization, kept from one step to the next.
+    pub fn workspace(&self) -> TangentWorkspace<'_> {
+        TangentWorkspace::new(&self.structure)
+    }
+
+    /// [`Self::step_with`] in `workspace` (from [`Self::workspace`] of
+    /// this model), which keeps the storage, and with
+    /// [`Self::keep_factor_below`] the factorization, for the next step.
+    pub fn step_in<'w>(
+        &'w self,
+        workspace: &mut TangentWorkspace<'w>,
+        state: &mut DynamicState,
+        load: &[f64],
+        prescribed: &Prescribed,
+        h: f64,
+        max_iterations: usize,
+    ) -> Result<usize, NonlinearError> {
         let (am, af, gamma, beta) = self.settings.parameters();
         let n = self.mesh.dofs();
         if load.len() != n {
@@ -256,7 +294,7 @@ impl<'a> NonlinearTransient<'a> {
         let mut last_relative = f64::NAN;
         let mut full = self.geometric_from <= 1;
         let mut last_norm = f64::INFINITY;
-        let mut workspace = TangentWorkspace::new(&self.structure);
+        let mut keep = self.keep_factor_below > 0.0 && workspace.factor_with_shift(shift).is_some();
         for iteration in 1..=max_iterations {
             let acc: Vec<f64> = (0..n)
                 .map(|i| {
@@ -265,10 +303,16 @@ impl<'a> NonlinearTransient<'a> {
                 })
                 .collect();
             full |= iteration >= self.geometric_from;
-            self.elements
-                .responses_into(self.mesh, &config, full, &mut workspace.responses);
+            let internal = if keep {
+                self.elements
+                    .forces_into(self.mesh, &config, &mut workspace.forces);
+                summed_forces(self.mesh, workspace.forces.iter())
+            } else {
+                self.elements
+                    .responses_into(self.mesh, &config, full, &mut workspace.responses);
+                internal_force(self.mesh, &workspace.responses)
+            };
             let inertia: Vec<f64> = (0..n).map(|i| self.mass[i] * acc[i]).collect();
-            let internal = internal_force(self.mesh, &workspace.responses);
             let residual: Vec<f64> = (0..n).map(|i| load[i] - inertia[i] - internal[i]).collect();
             let free = map.restrict(&residual);
             let norm = free_norm(&free);
@@ -292,21 +336,34 @@ impl<'a> NonlinearTransient<'a> {
                 state.configuration = config;
                 return Ok(iteration);
             }
+            // A kept factorization that did not cut the residual enough
+            // (the step's first iteration always goes on it): a fresh
+            // tangent at this iterate.
+            if keep && iteration > 1 && norm > CHORD_RATE * last_norm {
+                keep = false;
+                self.elements
+                    .responses_into(self.mesh, &config, full, &mut workspace.responses);
+            }
             // The material tangent did not halve the residual: the
             // stress-dependent part matters here (a tensed membrane), so
             // the rest of the step uses the full tangent, this iteration's
             // matrix included.
-            if !full && norm > 0.5 * last_norm {
+            if !keep && !full && norm > 0.5 * last_norm {
                 full = true;
                 self.elements
                     .responses_into(self.mesh, &config, true, &mut workspace.responses);
             }
             last_norm = norm;
-            let inertia_diagonal: Vec<f64> =
-                map.restrict(&self.mass).iter().map(|m| shift * m).collect();
-            let factor = workspace.factor(Some(&inertia_diagonal), || {
-                self.elements.material_responses(self.mesh, &config)
-            })?;
+            let factor = match workspace.factor_with_shift(shift).filter(|_| keep) {
+                Some(factor) => factor,
+                None => {
+                    let inertia_diagonal: Vec<f64> =
+                        map.restrict(&self.mass).iter().map(|m| shift * m).collect();
+                    workspace.factor_shifted(shift, &inertia_diagonal, || {
+                        self.elements.material_responses(self.mesh, &config)
+                    })?
+                }
+            };
             let mut dq_global = factor.solve(&[map.expand(&free)])?;
             // A Newton correction that turns some node by more than
             // MAX_TURN is shortened to it: far from the solution (a thin
@@ -326,6 +383,8 @@ impl<'a> NonlinearTransient<'a> {
                     a_new[i] += dq_global[i] / (beta * h * h);
                 }
             }
+            // Near the solution the next iteration keeps this factor.
+            keep = last_relative < self.keep_factor_below;
         }
         Err(NonlinearError::StepNoConvergence {
             step: (state.time / h).round() as usize + 1,
