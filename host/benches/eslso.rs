@@ -4,6 +4,9 @@
 //! from the wing the system analysis flew (full carbon layer), to
 //! convergence or the cycle cap. The system analysis that makes the pressure is not timed;
 //! `FWAV_PRESSURE=path/pressure.json` reuses one already written.
+//! `FWAV_LAYOUT=topology.json` starts from a layout `fwav topology` wrote,
+//! `FWAV_RESPONSE_ONLY=1` stops after the first nonlinear analysis, and
+//! `FWAV_SIMP_ITERATIONS=n` changes SIMP's iteration cap per cycle.
 //! `cargo bench -p fwav --bench eslso`.
 
 use std::time::Instant;
@@ -39,7 +42,14 @@ fn main() {
         }
     };
     let problem = DesignProblem::wing(&wing.wing, Layer::CARBON, Layer::MYLAR);
-    let settings = EslsoSettings::default();
+    let mut settings = EslsoSettings::default();
+    // `FWAV_SIMP_ITERATIONS=n` changes the SIMP iteration cap per cycle.
+    if let Some(n) = std::env::var("FWAV_SIMP_ITERATIONS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+    {
+        settings.simp.max_iterations = n;
+    }
     // The MDOIS hands the discipline the wing of the system analysis;
     // `FWAV_LAYOUT=topology.json` starts from a layout written by `fwav
     // topology` instead, and `FWAV_RESPONSE_ONLY=1` stops after its first
