@@ -230,7 +230,6 @@ impl<'s> TangentWorkspace<'s> {
         diagonal: &[f64],
         material: impl FnOnce() -> Vec<ElementResponse>,
     ) -> Result<&OrderedFactor<'s>, AssemblyError> {
-        self.shift = f64::NAN;
         self.factor(Some(diagonal), material)?;
         self.shift = shift;
         self.factor
@@ -249,6 +248,9 @@ impl<'s> TangentWorkspace<'s> {
         diagonal: Option<&[f64]>,
         material: impl FnOnce() -> Vec<ElementResponse>,
     ) -> Result<&OrderedFactor<'s>, AssemblyError> {
+        // A factor made here carries no recorded shift until
+        // factor_shifted records one.
+        self.shift = f64::NAN;
         let structure = self.structure;
         let assemble = |responses: &[ElementResponse], k: &mut OrderedStiffness| {
             structure.assemble_ordered_into(responses.len(), |e| &responses[e].tangent, k)?;
