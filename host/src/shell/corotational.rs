@@ -308,18 +308,6 @@ impl PulledForce {
     }
 }
 
-/// `J^T f` for a vector `f` over the deformational DOFs at the
-/// configuration `x`, `r`, from the blocks of `J` ([`PulledForce`]).
-#[cfg(test)]
-fn transposed_jacobian_times(
-    reference: &Reference,
-    x: &[Vector3<f64>; 4],
-    r: &[Rotation3<f64>; 4],
-    f: &ElementVector,
-) -> ElementVector {
-    PulledForce::new(reference, x, r, f).vector()
-}
-
 /// The co-rotational element set of a mesh.
 pub struct Corotational {
     references: Vec<Reference>,
@@ -570,7 +558,7 @@ mod tests {
         let (_, jac) = deformation(reference, &x, &r);
         let f = ElementVector::from_fn(|i, _| ((i * 5 % 7) as f64 - 3.0) * 0.7);
         let direct = jac.transpose() * f;
-        let blocks = transposed_jacobian_times(reference, &x, &r, &f);
+        let blocks = PulledForce::new(reference, &x, &r, &f).vector();
         assert!(
             (direct - blocks).norm() < 1e-12 * direct.norm(),
             "{}",
