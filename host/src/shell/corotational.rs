@@ -249,6 +249,19 @@ impl PulledForce {
         r: &[Rotation3<f64>; 4],
         f: &ElementVector,
     ) -> Self {
+        let mut out = Self::with_spins(x, f, [Vector3::zeros(); 4]);
+        for i in 0..4 {
+            out.spin[i] = out.spin_force(reference, &r[i], f, i);
+            out.b += out.spin[i];
+        }
+        out
+    }
+
+    /// The pieces at `x` with the spin terms `s_i` given rather than found
+    /// from the nodal rotations (no rotation logarithm: the translation
+    /// columns of the tangent take them linearized, see
+    /// [`Corotational::element`]).
+    fn with_spins(x: &[Vector3<f64>; 4], f: &ElementVector, spin: [Vector3<f64>; 4]) -> Self {
         let (e, g) = frame_and_spin(x);
         let c = (x[0] + x[1] + x[2] + x[3]) / 4.0;
         let mut out = Self {
@@ -257,15 +270,13 @@ impl PulledForce {
             pulled: [Vector3::zeros(); 4],
             sum: Vector3::zeros(),
             a: Vector3::zeros(),
-            spin: [Vector3::zeros(); 4],
-            b: Vector3::zeros(),
+            spin,
+            b: spin[0] + spin[1] + spin[2] + spin[3],
         };
         for i in 0..4 {
             out.pulled[i] = e * f.fixed_rows::<3>(6 * i);
             out.sum += out.pulled[i];
             out.a += out.pulled[i].cross(&(x[i] - c));
-            out.spin[i] = out.spin_force(reference, &r[i], f, i);
-            out.b += out.spin[i];
         }
         out
     }
@@ -357,24 +368,39 @@ impl Corotational {
         // carries no round-off of two ways of computing it).
         let pieces = PulledForce::new(reference, &x, &r, &local_force);
         let base = pieces.vector();
+        // `s_i = E T_i^-T f_theta_i` depends on the nodal rotation and on
+        // the frame only. `turn[i]` is its derivative by a spatial spin of
+        // node i (forward differences: J is closed-form, round-off ~1e-16
+        // of it, so a step of 1e-7 leaves a truncation error near 1e-7
+        // and a round-off near 1e-9). A frame spin `w` changes the
+        // relative rotation `E^T R_i E0` as the node spin `-w` does and
+        // also turns `E`: `ds_i = -(turn[i] + Spin(s_i)) w`. The 12
+        // translation columns take `s_i` linearized that way, which spares
+        // them 48 rotation logarithms and tangent inverses.
+        let h = 1e-7;
+        let mut turn = [Matrix3::zeros(); 4];
+        for (node, t) in turn.iter_mut().enumerate() {
+            for k in 0..3 {
+                let turned = Rotation3::from_scaled_axis(Vector3::ith(k, h)) * r[node];
+                let ds =
+                    pieces.spin_force(reference, &turned, &local_force, node) - pieces.spin[node];
+                t.set_column(k, &(ds / h));
+            }
+        }
+        let frame_turn = [0, 1, 2, 3].map(|i| -(turn[i] + spin(&pieces.spin[i])));
         let size = (x[2] - x[0]).norm().max((x[3] - x[1]).norm());
         for col in 0..24 {
             let (node, dof) = (col / 6, col % 6);
-            // J is closed-form (round-off ~1e-16 of it), so a forward
-            // step of 1e-7 leaves a truncation error near 1e-7 and a
-            // round-off near 1e-9.
             let column = if dof < 3 {
-                let h = 1e-7 * size;
+                let step = h * size;
                 let mut xp = x;
-                xp[node][dof] += h;
-                (PulledForce::new(reference, &xp, &r, &local_force).vector() - base) / h
+                xp[node][dof] += step;
+                let w = pieces.g.column(3 * node + dof) * step;
+                let spins = [0, 1, 2, 3].map(|i| pieces.spin[i] + frame_turn[i] * w);
+                (PulledForce::with_spins(&xp, &local_force, spins).vector() - base) / step
             } else {
                 // A turned node moves no frame: only its own s_j changes.
-                let h = 1e-7;
-                let turned = Rotation3::from_scaled_axis(Vector3::ith(dof - 3, h)) * r[node];
-                let ds =
-                    pieces.spin_force(reference, &turned, &local_force, node) - pieces.spin[node];
-                pieces.spin_change(node, &ds) / h
+                pieces.spin_change(node, &turn[node].column(dof - 3).into_owned())
             };
             for row in 0..24 {
                 tangent[(row, col)] += column[row];
