@@ -6,7 +6,9 @@
 //! `FWAV_PRESSURE=path/pressure.json` reuses one already written.
 //! `FWAV_LAYOUT=topology.json` starts from a layout `fwav topology` wrote,
 //! `FWAV_RESPONSE_ONLY=1` stops after the first nonlinear analysis, and
-//! `FWAV_SIMP_ITERATIONS=n` changes SIMP's iteration cap per cycle.
+//! `FWAV_SIMP_ITERATIONS=n` changes SIMP's iteration cap per cycle and
+//! `FWAV_LAYOUT_TOLERANCE=x` the fraction of design elements that may
+//! still flip in a converged cycle (0: the paper's strict rule).
 //! `cargo bench -p fwav --bench eslso`.
 
 use std::time::Instant;
@@ -50,6 +52,17 @@ fn main() {
     {
         settings.simp.max_iterations = n;
     }
+    if let Some(x) = std::env::var("FWAV_LAYOUT_TOLERANCE")
+        .ok()
+        .and_then(|v| v.parse().ok())
+    {
+        settings.layout_tolerance = x;
+    }
+    let design_elements = problem.design.iter().filter(|&&d| d).count();
+    println!(
+        "{design_elements} design elements; unchanged when at most {} flip",
+        (settings.layout_tolerance * design_elements as f64).floor()
+    );
     // The MDOIS hands the discipline the wing of the system analysis;
     // `FWAV_LAYOUT=topology.json` starts from a layout written by `fwav
     // topology` instead, and `FWAV_RESPONSE_ONLY=1` stops after its first
@@ -105,7 +118,7 @@ fn main() {
             EslsoProgress::Cycle(c) => c,
         };
         println!(
-            "cycle {}: strain energy {:.4e} J, mass {:.3}, peak {:.2} mm, {} Newton, {} SIMP iterations, {} changed, {:.1} s + {:.1} s",
+            "cycle {}: strain energy {:.4e} J, mass {:.3}, peak {:.2} mm, {} Newton, {} SIMP iterations, {} changed (densities within {:.3} of the threshold), {:.1} s + {:.1} s",
             c.cycle,
             c.strain_energy_j,
             c.mass_fraction,
@@ -113,6 +126,7 @@ fn main() {
             c.newton_iterations,
             c.simp_iterations,
             c.changed,
+            c.flip_margin,
             c.analysis_s,
             c.optimization_s
         )

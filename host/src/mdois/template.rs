@@ -220,6 +220,11 @@ pub const KEYS: &[(&str, &str, &str)] = &[
     ),
     (
         "topology",
+        "layout_tolerance",
+        "ESLSO stops when a cycle that analysed a 0/1 layout flips at most this fraction\n# of the design elements (0: none, the paper's rule); [0, 0.5].",
+    ),
+    (
+        "topology",
         "periods",
         "Pressure periods of the nonlinear dynamic analysis (the last is sampled); 2..=50.",
     ),
@@ -256,7 +261,7 @@ pub const KEYS: &[(&str, &str, &str)] = &[
     (
         "mdois",
         "layout_tolerance",
-        "The layout is unchanged when at most this fraction of the design elements\n# changed (0: none, the paper's rule); [0, 0.5].",
+        "The layout is unchanged when at most this fraction of the design elements\n# changed (0: none, the paper's rule; 0.01 by default, see the topology key); [0, 0.5].",
     ),
 ];
 

@@ -7,6 +7,7 @@
 //! filter_radius_mm = 5.0
 //! threshold = 0.5         # 0/1 transformation
 //! max_cycles = 10
+//! layout_tolerance = 0.01 # fraction of design elements that may still flip
 //! esl = "dalembert"      # or "displacement" (K_L u_N, the paper's eq. (12))
 //! ```
 
@@ -42,6 +43,10 @@ pub struct TopologyConfig {
     pub threshold: f64,
     /// ESLSO cycles allowed.
     pub max_cycles: usize,
+    /// ESLSO stops when a cycle that analysed a 0/1 layout flips at most
+    /// this fraction of the design elements (0: the paper's strict rule;
+    /// see [`crate::topology::eslso`] for the default's reason).
+    pub layout_tolerance: f64,
     /// Pressure periods of the nonlinear dynamic analysis (the last is
     /// sampled).
     pub periods: usize,
@@ -74,6 +79,7 @@ impl TopologyConfig {
             simp_tolerance: s.simp.tolerance,
             threshold: s.threshold,
             max_cycles: s.max_cycles,
+            layout_tolerance: s.layout_tolerance,
             periods: s.response.periods,
             sample_every: s.response.sample_every,
             rho_inf: s.response.rho_inf,
@@ -95,6 +101,7 @@ impl TopologyConfig {
             },
             threshold: self.threshold,
             max_cycles: self.max_cycles,
+            layout_tolerance: self.layout_tolerance,
             response: ResponseSettings {
                 periods: self.periods,
                 sample_every: self.sample_every,
@@ -107,7 +114,7 @@ impl TopologyConfig {
 
     /// Checks every key's range; the error names the key.
     pub fn check(&self) -> Result<(), ConfigError> {
-        let ranges: [RangeCheck; 12] = [
+        let ranges: [RangeCheck; 13] = [
             (
                 "topology.mass_fraction",
                 self.mass_fraction,
@@ -158,6 +165,13 @@ impl TopologyConfig {
                 100.0,
                 "1..=100",
             ),
+            (
+                "topology.layout_tolerance",
+                self.layout_tolerance,
+                0.0,
+                0.5,
+                "[0, 0.5]",
+            ),
             ("topology.periods", self.periods as f64, 2.0, 50.0, "2..=50"),
             (
                 "topology.sample_every",
@@ -194,5 +208,11 @@ mod tests {
         };
         let e = bad.check().unwrap_err().to_string();
         assert!(e.contains("topology.threshold"), "{e}");
+        let bad = TopologyConfig {
+            layout_tolerance: 0.6,
+            ..TopologyConfig::default()
+        };
+        let e = bad.check().unwrap_err().to_string();
+        assert!(e.contains("topology.layout_tolerance"), "{e}");
     }
 }
