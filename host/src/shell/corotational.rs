@@ -250,8 +250,8 @@ impl PulledForce {
         f: &ElementVector,
     ) -> Self {
         let mut out = Self::with_spins(x, f, [Vector3::zeros(); 4]);
-        for i in 0..4 {
-            out.spin[i] = out.spin_force(reference, &r[i], f, i);
+        for (i, r_i) in r.iter().enumerate() {
+            out.spin[i] = out.spin_force(reference, r_i, f, i);
             out.b += out.spin[i];
         }
         out
@@ -273,10 +273,10 @@ impl PulledForce {
             spin,
             b: spin[0] + spin[1] + spin[2] + spin[3],
         };
-        for i in 0..4 {
+        for (i, x_i) in x.iter().enumerate() {
             out.pulled[i] = e * f.fixed_rows::<3>(6 * i);
             out.sum += out.pulled[i];
-            out.a += out.pulled[i].cross(&(x[i] - c));
+            out.a += out.pulled[i].cross(&(x_i - c));
         }
         out
     }
