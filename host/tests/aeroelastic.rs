@@ -271,3 +271,54 @@ fn drive_power_balances_the_aerodynamic_power() {
     );
     assert!((drive / aero - 1.0).abs() < 0.02);
 }
+
+/// The system analysis must fly every wing the structural discipline
+/// proposes. It does not yet: the default wing (6760 elements) with the
+/// layout of its first ESLSO run (2055 carbon elements, the rest mylar
+/// only; `data/default_wing_first_eslso_layout.json`) at the kinematics
+/// the first aerodynamic discipline chose (13 Hz, 40°, −10°) diverges at
+/// step 129 of 160. From step 58 on, some steps' coupling stalls at a
+/// relative interface residual of 4e-2 to 0.7 and hits its 30
+/// sub-iterations, Aitken's factor swinging between −1.9 and 2; the
+/// residual neither grows nor falls, as if the fixed-point map were not
+/// smooth there. IQN-ILS (interface quasi-Newton least squares) in place
+/// of Aitken diverged at step 147; 80 steps a cycle diverged sooner. The
+/// same layout at 11 Hz and 30° runs (peak elastic displacement 13.9 mm),
+/// and so does the full carbon layer at 13 Hz and 40° (43.2 mm). Likely
+/// cause: the light mylar-only panels (about 0.018 kg/m², less than the
+/// air they move) in a partitioned coupling, with wake vortices of a
+/// 0.75 mm core passing the deflected wing; not yet resolved. This stops
+/// the full-size default design in its second cycle.
+#[test]
+#[ignore = "diverges at step 129 of 160: the coupling stalls on the light mylar panels of a 0/1 layout at 13 Hz, 40 deg (see doc)"]
+fn system_analysis_flies_the_first_eslso_layout() {
+    let text = include_str!("data/default_wing_first_eslso_layout.json");
+    let value: serde_json::Value = serde_json::from_str(text).unwrap();
+    let carbon: Vec<f64> = serde_json::from_value(value["carbon"].clone()).unwrap();
+    let wing = WingModel::new(
+        Planform::FWAV,
+        &Layer::CARBON,
+        &Layer::MYLAR,
+        Some(&carbon),
+        1.0,
+    )
+    .unwrap();
+    let kinematics = FlappingKinematics {
+        frequency: 13.0,
+        amplitude: 40f64.to_radians(),
+        mean_angle: (-10f64).to_radians(),
+        stroke_plane: 90f64.to_radians(),
+    };
+    let result = run(
+        &wing,
+        &kinematics,
+        &FlightCondition::FWAV,
+        &SystemSettings::default(),
+        0,
+        |_, _| {},
+    );
+    let result = result.expect("the coupled analysis completes");
+    // Every step's coupling converged, not merely stopped at its cap.
+    let worst = result.steps.iter().fold(0.0f64, |m, s| m.max(s.residual));
+    assert!(worst < 1e-4, "worst interface residual {worst:e}");
+}

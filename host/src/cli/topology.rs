@@ -119,13 +119,16 @@ ESLSO cycle {}: strain energy {:.4e} J, mass fraction {:.3}, peak displacement {
                 c.cycle, c.strain_energy_j, c.mass_fraction, c.changed
             );
         }
+        let outcome = if result.converged {
+            format!(
+                "converged (the last cycle flipped at most {}% of the design elements)",
+                100.0 * settings.layout_tolerance
+            )
+        } else {
+            "NOT converged (the layout still changed at the cycle cap)".to_string()
+        };
         println!(
-            "{} after {} cycles: carbon mass fraction {mass:.3}; results in {} ({seconds:.0} s)",
-            if result.converged {
-                "converged (the layout no longer changes)"
-            } else {
-                "NOT converged (the layout still changed at the cycle cap)"
-            },
+            "{outcome} after {} cycles: carbon mass fraction {mass:.3}; results in {} ({seconds:.0} s)",
             result.cycles.len(),
             a.out.display()
         );
@@ -167,11 +170,11 @@ fn write_outputs(a: &TopologyArgs, problem: &DesignProblem, result: &EslsoResult
         &dir.join("layout.png"),
     )?;
     let mut csv = String::from(
-        "cycle,strain_energy_j,mass_fraction,peak_displacement_m,newton_iterations,simp_iterations,simp_converged,simp_objective_j,changed,analysis_s,optimization_s\n",
+        "cycle,strain_energy_j,mass_fraction,peak_displacement_m,newton_iterations,simp_iterations,simp_converged,simp_objective_j,changed,flip_margin,analysis_s,optimization_s\n",
     );
     for c in &result.cycles {
         csv.push_str(&format!(
-            "{},{},{},{},{},{},{},{},{},{},{}\n",
+            "{},{},{},{},{},{},{},{},{},{},{},{}\n",
             c.cycle,
             c.strain_energy_j,
             c.mass_fraction,
@@ -181,6 +184,7 @@ fn write_outputs(a: &TopologyArgs, problem: &DesignProblem, result: &EslsoResult
             c.simp_converged,
             c.simp_objective_j,
             c.changed,
+            c.flip_margin,
             c.analysis_s,
             c.optimization_s
         ));
