@@ -281,8 +281,15 @@ fn drive_power_balances_the_aerodynamic_power() {
 /// relative interface residual of 4e-2 to 0.7 and hits its 30
 /// sub-iterations, Aitken's factor swinging between −1.9 and 2; the
 /// residual neither grows nor falls, as if the fixed-point map were not
-/// smooth there. IQN-ILS (interface quasi-Newton least squares) in place
-/// of Aitken diverged at step 147; 80 steps a cycle diverged sooner. The
+/// smooth there. IQN-ILS (interface quasi-Newton least squares; Degroote
+/// et al. 2009) in place of Aitken diverged too: at step 147 without
+/// reuse (QR filter 1e-8; step 41 with 1e-3), at steps 21 and 19 reusing
+/// the last 1 and 4 steps' differences (filter 1e-3),
+/// its residual still near 1 after 25 kept differences, so the unstable
+/// interface modes outnumber what 30 sub-iterations can learn (an
+/// added-mass operator in the structure, from the lattice's influence
+/// matrix, would be the next thing to try). 80 steps a cycle diverged
+/// sooner. The
 /// same layout at 11 Hz and 30° runs (peak elastic displacement 13.9 mm),
 /// and so does the full carbon layer at 13 Hz and 40° (43.2 mm). Likely
 /// cause: the light mylar-only panels (about 0.018 kg/m², less than the
