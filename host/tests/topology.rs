@@ -91,7 +91,9 @@ mod eslso {
     use fwav::shell::material::Section;
     use fwav::shell::mesh::ShellMesh;
     use fwav::topology::esl::{EquivalentStaticLoads, EslForm};
-    use fwav::topology::eslso::{optimize, DesignProblem, EslsoProgress, EslsoSettings};
+    use fwav::topology::eslso::{
+        optimize, optimize_from, DesignProblem, EslsoProgress, EslsoSettings,
+    };
     use fwav::topology::pressure::PressureHistory;
     use fwav::topology::response::{nonlinear_response, ResponseSettings};
     use fwav::topology::simp::SimpSettings;
@@ -290,6 +292,17 @@ mod eslso {
         };
         let e = optimize(&problem, &pressure, &start, &bad, |_| {}).unwrap_err();
         assert!(e.to_string().contains("layout_tolerance"), "{e}");
+        // A warm start of the wrong length is refused, naming what.
+        let e = optimize_from(
+            &problem,
+            &pressure,
+            &start,
+            Some(&[0.5; 3]),
+            &settings,
+            |_| {},
+        )
+        .unwrap_err();
+        assert!(e.to_string().contains("warm-start"), "{e}");
     }
 
     /// The same with the seed paper's load cases `K_L u_N` (eq. (12)), at

@@ -27,7 +27,7 @@ use crate::discipline::section::{SectionCase, SectionResult};
 use crate::files::write_atomic;
 use crate::optimize::nsga2::Nsga2Config;
 use crate::shell::vtu::{self, Field};
-use crate::topology::eslso::{optimize, DesignProblem, EslsoProgress, EslsoResult};
+use crate::topology::eslso::{optimize_from, DesignProblem, EslsoProgress, EslsoResult};
 use crate::topology::pressure::PressureHistory;
 
 use super::error::DesignError;
@@ -445,10 +445,18 @@ impl Context<'_> {
         let pressure = PressureHistory::from_json(&text, elements)
             .map_err(|source| DesignError::Pressure { cycle, source })?;
         let settings = self.config.topology.settings();
-        let result = optimize(
+        // SIMP starts where the last cycle's ended (see `optimize_from`).
+        let warm = if cycle > 1 {
+            let last = load_topology(&self.dir, cycle - 1)?.result.design_variables;
+            (last.len() == elements).then_some(last)
+        } else {
+            None
+        };
+        let result = optimize_from(
             &self.problem,
             &pressure,
             &design.densities,
+            warm.as_deref(),
             &settings,
             |p| match p {
                 EslsoProgress::Step {
