@@ -280,6 +280,21 @@ pub fn transform(densities: &[f64], design: &[bool], threshold: f64) -> Vec<bool
         .collect()
 }
 
+/// An error naming the first of `values` (one per element) outside [0, 1]
+/// as `what`.
+fn check_unit_interval(values: &[f64], what: &str) -> Result<(), EslsoError> {
+    match values
+        .iter()
+        .enumerate()
+        .find(|(_, v)| !(v.is_finite() && (0.0..=1.0).contains(*v)))
+    {
+        Some((e, v)) => Err(EslsoError::Setting(format!(
+            "{what} of element {e} is {v}, outside [0, 1]"
+        ))),
+        None => Ok(()),
+    }
+}
+
 /// Runs ESLSO on `problem` under `pressure` from the design `start`
 /// (carbon density per element; the first cycle analyses it as given);
 /// `progress` hears of each analysis step and each finished cycle.
@@ -319,15 +334,7 @@ pub fn optimize_from(
                 w.len()
             )));
         }
-        if let Some((e, v)) = w
-            .iter()
-            .enumerate()
-            .find(|(_, v)| !(v.is_finite() && (0.0..=1.0).contains(*v)))
-        {
-            return Err(EslsoError::Setting(format!(
-                "warm-start design variable of element {e} is {v}, outside [0, 1]"
-            )));
-        }
+        check_unit_interval(w, "warm-start design variable")?;
     }
     if start.len() != n || problem.design.len() != n {
         return Err(EslsoError::Setting(format!(
@@ -336,15 +343,7 @@ pub fn optimize_from(
             problem.design.len()
         )));
     }
-    if let Some((e, v)) = start
-        .iter()
-        .enumerate()
-        .find(|(_, v)| !(v.is_finite() && (0.0..=1.0).contains(*v)))
-    {
-        return Err(EslsoError::Setting(format!(
-            "start density of element {e} is {v}, outside [0, 1]"
-        )));
-    }
+    check_unit_interval(start, "start density")?;
     if !(settings.threshold > 0.0 && settings.threshold < 1.0)
         || settings.max_cycles == 0
         || !(0.0..1.0).contains(&settings.layout_tolerance)
