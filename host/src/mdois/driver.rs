@@ -6,7 +6,10 @@
 //! disciplines leave every design variable unchanged
 //! ([`super::config::MdoisConfig`] says within what). At the cycle cap the
 //! last proposal is analysed once more and the run ends as "cycle cap
-//! reached", never as converged.
+//! reached", never as converged. A later cycle's structural discipline
+//! starts SIMP from the last cycle's design variables: started cold, the
+//! default wing's layout kept moving 1.5–2.6% a cycle and the design ran
+//! to its cap in 11.1 min; warm, it converges in cycle 2 in 2.8 min.
 //!
 //! A run lives in a directory: `config.toml` (the resolved configuration,
 //! checked on resume), `state.json` ([`super::state`]), each stage's files
