@@ -473,16 +473,14 @@ impl Corotational {
             .for_each(|(e, f)| *f = self.element_force(mesh, e, c));
     }
 
-    /// [`Self::responses`] (`full`) or [`Self::material_responses`] into
-    /// `out`, whose storage is kept: on the default wing the responses
-    /// take about 33 MB, which a fresh vector every Newton iteration paid
-    /// for again in page faults and zeroing (about a sixth of an
-    /// iteration's time).
+    /// [`Self::responses`] into `out`, whose storage is kept: on the
+    /// default wing the responses take about 33 MB, which a fresh vector
+    /// every Newton iteration paid for again in page faults and zeroing
+    /// (about a sixth of an iteration's time).
     pub fn responses_into(
         &self,
         mesh: &ShellMesh,
         c: &Configuration,
-        full: bool,
         out: &mut Vec<ElementResponse>,
     ) {
         let n = self.references.len();
@@ -492,13 +490,9 @@ impl Corotational {
             tangent: ElementMatrix::zeros(),
             energy: 0.0,
         });
-        out.par_iter_mut().enumerate().for_each(|(e, r)| {
-            *r = if full {
-                self.element(mesh, e, c)
-            } else {
-                self.element_material(mesh, e, c)
-            };
-        });
+        out.par_iter_mut()
+            .enumerate()
+            .for_each(|(e, r)| *r = self.element(mesh, e, c));
     }
 }
 

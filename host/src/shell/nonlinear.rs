@@ -135,7 +135,7 @@ impl<'a> NonlinearStatic<'a> {
             let mut converged = false;
             for _ in 0..settings.max_iterations {
                 self.elements
-                    .responses_into(self.mesh, &c, true, &mut workspace.responses);
+                    .responses_into(self.mesh, &c, &mut workspace.responses);
                 let internal = internal_force(self.mesh, &workspace.responses);
                 let residual = self.residual(load, &internal, lambda);
                 residual_norm = norm(&residual) / load_norm;
@@ -183,6 +183,22 @@ pub(crate) fn summed_forces<'f>(
         }
     }
     force
+}
+
+/// Factorizes `k` into `slot`: numerically again when it already holds a
+/// factor of the same pattern, symbolically and numerically when empty.
+fn factorize<'s>(
+    slot: &mut Option<OrderedFactor<'s>>,
+    structure: &'s Structure,
+    k: &OrderedStiffness,
+) -> Result<(), AssemblyError> {
+    match slot {
+        Some(f) => f.refactorize(k),
+        None => {
+            *slot = Some(OrderedFactor::new(structure, k)?);
+            Ok(())
+        }
+    }
 }
 
 /// The storage a Newton iteration's tangent reuses from one iteration to
@@ -260,18 +276,9 @@ impl<'s> TangentWorkspace<'s> {
             Ok::<(), AssemblyError>(())
         };
         assemble(&self.responses, &mut self.stiffness)?;
-        let full = match &mut self.factor {
-            Some(f) => f.refactorize(&self.stiffness).map(|_| ()),
-            None => OrderedFactor::new(structure, &self.stiffness).map(|f| {
-                self.factor = Some(f);
-            }),
-        };
-        if full.is_err() {
+        if factorize(&mut self.factor, structure, &self.stiffness).is_err() {
             assemble(&material(), &mut self.stiffness)?;
-            match &mut self.factor {
-                Some(f) => f.refactorize(&self.stiffness)?,
-                None => self.factor = Some(OrderedFactor::new(structure, &self.stiffness)?),
-            }
+            factorize(&mut self.factor, structure, &self.stiffness)?;
         }
         self.factor
             .as_ref()

@@ -74,16 +74,6 @@ pub struct NonlinearTransient<'a> {
     /// where every force is small (a load brought in from zero) are not
     /// asked for a residual below the internal forces' round-off.
     pub reference_force: f64,
-    /// The Newton iteration of a step from which the matrix carries the
-    /// stress-dependent (geometric) part of the tangent at the latest (1
-    /// by default: always). Before it an iteration uses the material
-    /// tangent, a fraction of the element work, and converges linearly,
-    /// fast where that part is small against the material stiffness and
-    /// the inertia shift; an iteration that does not halve the residual
-    /// (thin membranes under stress, whose stiffness is mostly geometric)
-    /// switches the rest of the step to the full tangent. The converged
-    /// state is the same to the tolerance.
-    pub geometric_from: usize,
     /// Where Newton starts each step (constant acceleration by default).
     pub predictor: Predictor,
     /// Modified Newton: the relative residual below which the next
@@ -136,7 +126,6 @@ impl<'a> NonlinearTransient<'a> {
             tolerance: 1e-5,
             max_iterations: 25,
             reference_force: 0.0,
-            geometric_from: 1,
             predictor: Predictor::default(),
             keep_factor_below: 0.0,
         })
@@ -292,7 +281,6 @@ impl<'a> NonlinearTransient<'a> {
         let acc_per_a = (1.0 - am) / (1.0 - af);
         let shift = acc_per_a / (beta * h * h);
         let mut last_relative = f64::NAN;
-        let mut full = self.geometric_from <= 1;
         let mut last_norm = f64::INFINITY;
         let mut keep = self.keep_factor_below > 0.0 && workspace.factor_with_shift(shift).is_some();
         for iteration in 1..=max_iterations {
@@ -302,14 +290,13 @@ impl<'a> NonlinearTransient<'a> {
                         / (1.0 - af)
                 })
                 .collect();
-            full |= iteration >= self.geometric_from;
             let internal = if keep {
                 self.elements
                     .forces_into(self.mesh, &config, &mut workspace.forces);
                 summed_forces(self.mesh, workspace.forces.iter())
             } else {
                 self.elements
-                    .responses_into(self.mesh, &config, full, &mut workspace.responses);
+                    .responses_into(self.mesh, &config, &mut workspace.responses);
                 internal_force(self.mesh, &workspace.responses)
             };
             let inertia: Vec<f64> = (0..n).map(|i| self.mass[i] * acc[i]).collect();
@@ -342,16 +329,7 @@ impl<'a> NonlinearTransient<'a> {
             if keep && iteration > 1 && norm > CHORD_RATE * last_norm {
                 keep = false;
                 self.elements
-                    .responses_into(self.mesh, &config, full, &mut workspace.responses);
-            }
-            // The material tangent did not halve the residual: the
-            // stress-dependent part matters here (a tensed membrane), so
-            // the rest of the step uses the full tangent, this iteration's
-            // matrix included.
-            if !keep && !full && norm > 0.5 * last_norm {
-                full = true;
-                self.elements
-                    .responses_into(self.mesh, &config, true, &mut workspace.responses);
+                    .responses_into(self.mesh, &config, &mut workspace.responses);
             }
             last_norm = norm;
             let factor = match workspace.factor_with_shift(shift).filter(|_| keep) {

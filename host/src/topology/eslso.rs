@@ -364,7 +364,6 @@ pub fn optimize_from(
     let mut densities = current.clone();
     let mut converged = false;
     let mut warm: Option<Vec<f64>> = warm.map(<[f64]>::to_vec);
-    let mut design_variables = Vec::new();
     for cycle in 1..=settings.max_cycles {
         let clock = Instant::now();
         let sections = problem.sections(&current, penalty);
@@ -398,7 +397,6 @@ pub fn optimize_from(
             warm.as_deref(),
         )?;
         warm = Some(simp.design_variables.clone());
-        design_variables.clone_from(&simp.design_variables);
         let next = transform(&simp.densities, &problem.design, settings.threshold);
         let changed = next.iter().zip(&layout).filter(|(a, b)| a != b).count();
         let flip_margin = next
@@ -444,7 +442,8 @@ pub fn optimize_from(
         cycles,
         layout,
         densities,
-        design_variables,
+        // At least one cycle ran: the last SIMP's design variables.
+        design_variables: warm.unwrap_or_default(),
         converged,
     })
 }
