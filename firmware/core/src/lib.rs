@@ -5,9 +5,14 @@
 //! unchanged, inside hil-sim in simulated time. There is no second copy of it
 //! anywhere: hil-sim testing this crate *is* testing the firmware.
 //!
-//! Today it holds the link [`session`]: the handshake gate that every command
-//! passes through. The reference generator, the flapping controller, the full
-//! link handler and the failsafes build on it (firmware issue).
+//! What lives here: the link [`session`] (the handshake gate every command
+//! passes through), the [`flight`] controller that owns the link handler,
+//! the arm/start state machine and the failsafes (link loss, encoder,
+//! over-current); the profile's [`reference`](mod@reference) generator; the flapping
+//! [`controller`] (angle and current loops) and the rate [`estimator`];
+//! telemetry summaries ([`monitor`]); the device [`params`]; and the
+//! [`storage`] record of profile and parameters. It may import only
+//! `fwav-protocol` and no_std crates: no embassy, no PAC, no std.
 
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]

@@ -1,5 +1,10 @@
-//! Everything specific to one flight-controller board: clocks, pins, sensor
-//! scales. Porting fwav to another STM32F4 board means editing this file.
+//! Everything specific to one flight-controller board: clocks, which
+//! peripheral and pin does what ([`Board::take`] hands them out by
+//! function, so the drivers and `main` never name a pin), interrupt
+//! bindings ([`Irqs`]) and sensor scales. Porting fwav to another STM32F4
+//! board means editing this file, and, if UART5 is wired on the new board,
+//! the spare interrupt that triggers the control executor (`main.rs`'s
+//! `#[interrupt] fn UART5`: the attribute takes the interrupt's name).
 //!
 //! | function | peripheral | pins (STM32F405RG, LQFP64) |
 //! | --- | --- | --- |
@@ -18,12 +23,147 @@
 //! PA6 (TIM8 BKIN) is kept free for the bridge driver's fault line; the
 //! firmware does not use the hardware break input yet.
 
+use embassy_stm32::peripherals::{
+    ADC1, FLASH, PA0, PA1, PA11, PA12, PA2, PA3, PA7, PB0, PC0, PC1, PC6, PC7, TIM5, TIM8, USART2,
+    USB_OTG_FS,
+};
 use embassy_stm32::rcc::{
     AHBPrescaler, APBPrescaler, Hse, HseMode, Pll, PllMul, PllPDiv, PllPreDiv, PllQDiv, PllSource,
     Sysclk,
 };
 use embassy_stm32::time::Hertz;
-use embassy_stm32::Config;
+use embassy_stm32::{bind_interrupts, flash, usart, usb, Config, Peri, Peripherals};
+
+bind_interrupts!(
+    /// The drivers' interrupt handlers: the link UART, USB and flash.
+    pub struct Irqs {
+        USART2 => usart::BufferedInterruptHandler<LinkUart>;
+        OTG_FS => usb::InterruptHandler<UsbPeripheral>;
+        FLASH => flash::InterruptHandler;
+    }
+);
+
+/// The H-bridge's advanced timer.
+pub type BridgeTimer = TIM8;
+/// The encoder's timer.
+pub type EncoderTimer = TIM5;
+/// The ADC of the current and battery channels.
+pub type SensorAdc = ADC1;
+/// The motor-current ADC pin.
+pub type CurrentPin = PC0;
+/// The battery-voltage ADC pin.
+pub type BatteryPin = PC1;
+/// The link UART (radio or hil-sim).
+pub type LinkUart = USART2;
+/// The USB peripheral (CDC-ACM).
+pub type UsbPeripheral = USB_OTG_FS;
+
+/// TIM8 with its complementary outputs: the H-bridge.
+pub struct BridgePins {
+    /// Advanced timer with dead-time generation.
+    pub timer: Peri<'static, BridgeTimer>,
+    /// Leg A high side (CH1).
+    pub a_high: Peri<'static, PC6>,
+    /// Leg A low side (CH1N).
+    pub a_low: Peri<'static, PA7>,
+    /// Leg B high side (CH2).
+    pub b_high: Peri<'static, PC7>,
+    /// Leg B low side (CH2N).
+    pub b_low: Peri<'static, PB0>,
+}
+
+/// The flapping-angle quadrature encoder.
+pub struct EncoderPins {
+    /// Timer in encoder mode.
+    pub timer: Peri<'static, EncoderTimer>,
+    /// Channel A.
+    pub a: Peri<'static, PA0>,
+    /// Channel B.
+    pub b: Peri<'static, PA1>,
+}
+
+/// The ADC and its two channels.
+pub struct AnalogPins {
+    /// The converter.
+    pub adc: Peri<'static, SensorAdc>,
+    /// Motor current (shunt amplifier output).
+    pub current: Peri<'static, CurrentPin>,
+    /// Battery voltage (divider output).
+    pub battery: Peri<'static, BatteryPin>,
+}
+
+/// The link UART's pins.
+pub struct UartPins {
+    /// The UART.
+    pub uart: Peri<'static, LinkUart>,
+    /// Receive.
+    pub rx: Peri<'static, PA3>,
+    /// Transmit.
+    pub tx: Peri<'static, PA2>,
+}
+
+/// USB full speed.
+pub struct UsbPins {
+    /// The OTG_FS peripheral.
+    pub usb: Peri<'static, UsbPeripheral>,
+    /// D+.
+    pub dp: Peri<'static, PA12>,
+    /// D-.
+    pub dm: Peri<'static, PA11>,
+}
+
+/// The board's peripherals by function.
+pub struct Board {
+    /// H-bridge.
+    pub bridge: BridgePins,
+    /// Encoder.
+    pub encoder: EncoderPins,
+    /// Current and battery sensing.
+    pub analog: AnalogPins,
+    /// Radio / serial link.
+    pub uart: UartPins,
+    /// USB link.
+    pub usb: UsbPins,
+    /// Flash controller (parameter and profile storage).
+    pub flash: Peri<'static, FLASH>,
+}
+
+impl Board {
+    /// Hands out the peripherals of [`embassy_stm32::init`] by function
+    /// (the wiring table in the module docs).
+    pub fn take(p: Peripherals) -> Self {
+        Self {
+            bridge: BridgePins {
+                timer: p.TIM8,
+                a_high: p.PC6,
+                a_low: p.PA7,
+                b_high: p.PC7,
+                b_low: p.PB0,
+            },
+            encoder: EncoderPins {
+                timer: p.TIM5,
+                a: p.PA0,
+                b: p.PA1,
+            },
+            analog: AnalogPins {
+                adc: p.ADC1,
+                current: p.PC0,
+                battery: p.PC1,
+            },
+            uart: UartPins {
+                uart: p.USART2,
+                rx: p.PA3,
+                tx: p.PA2,
+            },
+            usb: UsbPins {
+                usb: p.USB_OTG_FS,
+                dp: p.PA12,
+                dm: p.PA11,
+            },
+            flash: p.FLASH,
+        }
+    }
+}
 
 /// Control loop rate, Hz (period 100 µs).
 pub const CONTROL_HZ: u64 = 10_000;

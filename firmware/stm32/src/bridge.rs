@@ -8,38 +8,30 @@
 //! up yet.)
 
 use embassy_stm32::gpio::OutputType;
-use embassy_stm32::peripherals::{PA7, PB0, PC6, PC7, TIM8};
 use embassy_stm32::time::Hertz;
 use embassy_stm32::timer::complementary_pwm::{ComplementaryPwm, ComplementaryPwmPin};
 use embassy_stm32::timer::low_level::CountingMode;
 use embassy_stm32::timer::simple_pwm::PwmPin;
 use embassy_stm32::timer::Channel;
-use embassy_stm32::Peri;
 
 use crate::board;
 
 /// The motor's H-bridge.
 pub struct HBridge {
-    pwm: ComplementaryPwm<'static, TIM8>,
+    pwm: ComplementaryPwm<'static, board::BridgeTimer>,
     max: u32,
     enabled: bool,
 }
 
 impl HBridge {
-    /// Configures TIM8 with outputs off.
-    pub fn new(
-        tim: Peri<'static, TIM8>,
-        a_high: Peri<'static, PC6>,
-        a_low: Peri<'static, PA7>,
-        b_high: Peri<'static, PC7>,
-        b_low: Peri<'static, PB0>,
-    ) -> Self {
+    /// Configures the bridge timer with outputs off.
+    pub fn new(pins: board::BridgePins) -> Self {
         let mut pwm = ComplementaryPwm::new(
-            tim,
-            Some(PwmPin::new(a_high, OutputType::PushPull)),
-            Some(ComplementaryPwmPin::new(a_low, OutputType::PushPull)),
-            Some(PwmPin::new(b_high, OutputType::PushPull)),
-            Some(ComplementaryPwmPin::new(b_low, OutputType::PushPull)),
+            pins.timer,
+            Some(PwmPin::new(pins.a_high, OutputType::PushPull)),
+            Some(ComplementaryPwmPin::new(pins.a_low, OutputType::PushPull)),
+            Some(PwmPin::new(pins.b_high, OutputType::PushPull)),
+            Some(ComplementaryPwmPin::new(pins.b_low, OutputType::PushPull)),
             None,
             None,
             None,

@@ -3,7 +3,6 @@
 //! sequence is handled without panicking (the decoder and the flight
 //! controller are property-tested on the host).
 
-use embassy_stm32::peripherals::USB_OTG_FS;
 use embassy_stm32::usart::{BufferedUartRx, BufferedUartTx};
 use embassy_stm32::usb::Driver;
 use embassy_sync::blocking_mutex::raw::CriticalSectionRawMutex;
@@ -126,7 +125,7 @@ impl ByteTx for UartTx {
     }
 }
 
-type UsbDriver = Driver<'static, USB_OTG_FS>;
+type UsbDriver = Driver<'static, crate::board::UsbPeripheral>;
 
 /// USB CDC-ACM receive side.
 pub struct UsbRx(pub Receiver<'static, UsbDriver>);

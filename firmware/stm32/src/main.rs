@@ -49,7 +49,7 @@ mod firmware {
     use embassy_stm32::interrupt::{InterruptExt, Priority};
     use embassy_stm32::pac::interrupt;
     use embassy_stm32::usart::{self, BufferedUart};
-    use embassy_stm32::{bind_interrupts, flash, peripherals, usb};
+    use embassy_stm32::usb;
     use embassy_usb::class::cdc_acm::{CdcAcmClass, State};
     use fwav_fc_core::flight::{FlightController, RestoreError};
     use fwav_fc_core::storage::MAX_RECORD_LEN;
@@ -57,17 +57,12 @@ mod firmware {
     use panic_probe as _;
     use static_cell::StaticCell;
 
+    use crate::board::{self, Board, Irqs};
     use crate::bridge::HBridge;
     use crate::link::{self, UartRx, UartTx, UsbRx, UsbTx};
     use crate::sensors::{Analog, Encoder};
     use crate::storage::Store;
-    use crate::{board, control, shared, watchdog};
-
-    bind_interrupts!(struct Irqs {
-        USART2 => usart::BufferedInterruptHandler<peripherals::USART2>;
-        OTG_FS => usb::InterruptHandler<peripherals::USB_OTG_FS>;
-        FLASH => flash::InterruptHandler;
-    });
+    use crate::{control, shared, watchdog};
 
     /// Runs the control loop above everything else but the drivers' own
     /// interrupts; UART5 is unused on this board and serves as its trigger.
@@ -86,7 +81,7 @@ mod firmware {
 
     #[embassy_executor::main]
     async fn main(spawner: Spawner) {
-        let p = embassy_stm32::init(board::clocks());
+        let board = Board::take(embassy_stm32::init(board::clocks()));
         defmt::info!(
             "{} up, protocol v{}",
             fwav_fc_core::FIRMWARE_NAME,
@@ -95,7 +90,7 @@ mod firmware {
 
         // The flight controller, with what flash holds (refused if invalid).
         let mut fc = FlightController::new(Limits::REFERENCE_FWAV);
-        let mut store = Store::new(Flash::new(p.FLASH, Irqs));
+        let mut store = Store::new(Flash::new(board.flash, Irqs));
         let mut record = [0u8; MAX_RECORD_LEN];
         if let Some(n) = store.load(&mut record).await {
             match fc.restore(&record[..n]) {
@@ -113,9 +108,9 @@ mod firmware {
         *link::STORE.lock().await = Some(store);
 
         // Control loop, bridge off until armed.
-        let bridge = HBridge::new(p.TIM8, p.PC6, p.PA7, p.PC7, p.PB0);
-        let encoder = Encoder::new(p.TIM5, p.PA0, p.PA1);
-        let analog = Analog::new(p.ADC1, p.PC0, p.PC1);
+        let bridge = HBridge::new(board.bridge);
+        let encoder = Encoder::new(board.encoder);
+        let analog = Analog::new(board.analog);
         watchdog::start();
         interrupt::UART5.set_priority(Priority::P6);
         let high = CONTROL_EXECUTOR.start(interrupt::UART5);
@@ -127,9 +122,9 @@ mod firmware {
         let mut config = usart::Config::default();
         config.baudrate = BAUD;
         let uart = unwrap!(BufferedUart::new(
-            p.USART2,
-            p.PA3,
-            p.PA2,
+            board.uart.uart,
+            board.uart.rx,
+            board.uart.tx,
             UART_TX.init([0; 1024]),
             UART_RX.init([0; 1024]),
             Irqs,
@@ -146,12 +141,12 @@ mod firmware {
         static CONTROL_BUF: StaticCell<[u8; 64]> = StaticCell::new();
         static CDC_STATE: StaticCell<State> = StaticCell::new();
         let mut otg = usb::Config::default();
-        otg.vbus_detection = true; // battery powered: VBUS on PA9
+        otg.vbus_detection = true; // battery powered: VBUS sensed (board docs)
         let driver = usb::Driver::new_fs(
-            p.USB_OTG_FS,
+            board.usb.usb,
             Irqs,
-            p.PA12,
-            p.PA11,
+            board.usb.dp,
+            board.usb.dm,
             EP_OUT.init([0; 256]),
             otg,
         );

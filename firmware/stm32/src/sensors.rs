@@ -4,7 +4,6 @@
 use core::f32::consts::PI;
 
 use embassy_stm32::adc::{Adc, SampleTime};
-use embassy_stm32::peripherals::{ADC1, PA0, PA1, PC0, PC1, TIM5};
 use embassy_stm32::timer::qei::{Config as QeiConfig, Qei};
 use embassy_stm32::Peri;
 
@@ -14,15 +13,15 @@ use crate::board;
 /// extended in software; at 10 kHz sampling and ≤ 100 rad/s the counter moves
 /// at most ~7 counts a sample, far below half a wrap.
 pub struct Encoder {
-    qei: Qei<'static, TIM5>,
+    qei: Qei<'static, board::EncoderTimer>,
     last: u16,
     count: i32,
 }
 
 impl Encoder {
     /// Starts counting from the current position (angle 0 = rest at boot).
-    pub fn new(tim: Peri<'static, TIM5>, a: Peri<'static, PA0>, b: Peri<'static, PA1>) -> Self {
-        let qei = Qei::new(tim, a, b, QeiConfig::default());
+    pub fn new(pins: board::EncoderPins) -> Self {
+        let qei = Qei::new(pins.timer, pins.a, pins.b, QeiConfig::default());
         let last = qei.count();
         Self {
             qei,
@@ -45,22 +44,18 @@ impl Encoder {
 
 /// Motor current and battery voltage on ADC1.
 pub struct Analog {
-    adc: Adc<'static, ADC1>,
-    current: Peri<'static, PC0>,
-    battery: Peri<'static, PC1>,
+    adc: Adc<'static, board::SensorAdc>,
+    current: Peri<'static, board::CurrentPin>,
+    battery: Peri<'static, board::BatteryPin>,
 }
 
 impl Analog {
     /// Configures ADC1.
-    pub fn new(
-        adc: Peri<'static, ADC1>,
-        current: Peri<'static, PC0>,
-        battery: Peri<'static, PC1>,
-    ) -> Self {
+    pub fn new(pins: board::AnalogPins) -> Self {
         Self {
-            adc: Adc::new(adc),
-            current,
-            battery,
+            adc: Adc::new(pins.adc),
+            current: pins.current,
+            battery: pins.battery,
         }
     }
 
