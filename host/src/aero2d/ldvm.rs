@@ -197,6 +197,57 @@ struct Kinematics {
     alpha_dot: f64,
 }
 
+/// The section at one step: its rigid motion, the sine and cosine of its
+/// pitch, and the time (for the camber line's shape).
+#[derive(Clone, Copy, Debug)]
+struct Pose {
+    kinematics: Kinematics,
+    sa: f64,
+    ca: f64,
+    t: f64,
+}
+
+/// The chord stations of one step.
+struct Chord {
+    /// `(x_b, x, y)`: chordwise station (chords from the leading edge) and
+    /// global position on the camber line.
+    stations: Vec<(f64, f64, f64)>,
+    /// `(d eta/dx, d eta/dt)` at each station.
+    slopes: Vec<(f64, f64)>,
+}
+
+/// The free vortices that induce velocity during one step: the near wakes
+/// vortex by vortex, the far wakes as proxies.
+struct Sources {
+    /// First near vortex of the trailing-edge wake.
+    near_from: usize,
+    /// First near vortex of the leading-edge vortices.
+    lev_near_from: usize,
+    /// The near vortices, then the far wakes' proxies.
+    vortices: Vec<FreeVortex>,
+}
+
+impl Sources {
+    /// Velocity induced at `(x, y)`.
+    fn induced_at(&self, x: f64, y: f64, core2: f64) -> (f64, f64) {
+        let (mut u, mut v) = (0.0, 0.0);
+        for fv in &self.vortices {
+            let (du, dv) = induced(fv, x, y, core2);
+            u += du;
+            v += dv;
+        }
+        (u, v)
+    }
+}
+
+/// Normal (`w`) and tangential (`vt`) flow relative to the plate, without
+/// the bound vorticity, at the chord stations: row 0 the part known now,
+/// row `k + 1` per unit strength of new vortex `k`.
+struct Influence {
+    w: Vec<Vec<f64>>,
+    vt: Vec<Vec<f64>>,
+}
+
 /// Index of the first vortex of the near wake: vortices are kept in
 /// shedding order and drift downstream, so the far wake (beyond `limit`) is
 /// a prefix.
@@ -350,83 +401,131 @@ impl Ldvm {
         history
     }
 
-    /// One time step.
+    /// One time step: the section's pose and chord stations, the flow at
+    /// them (known part and per unit new vortex), the new vortices'
+    /// strengths from Kelvin (and the LESP), shedding, the bound vortices,
+    /// the loads at the half step, and convection of the free vortices.
     fn step(&mut self, history: &mut History) {
-        let dt = self.settings.dt;
-        self.time += dt;
-        let t = self.time;
+        self.time += self.settings.dt;
+        let pose = self.pose(self.time);
+        let chord = self.chord(&pose);
+        let te = self.edge(1.0, &pose);
+        let sources = self.sources(te.0 + self.settings.far_wake);
+        let news = self.new_vortices(&pose, te, &sources);
+        let influence = self.influence(&pose, &chord, &sources, &news);
+        let coefficients: Vec<Vec<f64>> =
+            influence.w.iter().map(|w| self.coefficients(w)).collect();
+        let strengths = self.strengths(&coefficients);
+        let a = superpose(&coefficients[0], &strengths, &coefficients[1..]);
+        let tangential = superpose(&influence.vt[0], &strengths, &influence.vt[1..]);
+        self.shed(&strengths, &news);
+        self.bind(&a, &chord);
+        // The leading-edge vortices are fed through a sheet from the
+        // leading edge, across which the potential jumps by their (clockwise)
+        // circulation: the jump along the plate starts from that value at
+        // x = 0 instead of 0. Without it, each shed vortex would take its
+        // circulation out of the bound sheet in one step and the unsteady
+        // term would read that as a large, spurious loss of normal force.
+        let edge_jump = -self.leading.iter().map(|v| v.gamma).sum::<f64>();
+        let now = self.load_integrals(&a, &tangential, &chord, edge_jump);
+        let unsteady_deform = self.unsteady_deformation(&chord, edge_jump);
+        let impulse_now = self.impulse();
+        if let Some(prev) = self.loads.replace(now) {
+            self.record(history, &now, &prev, &a, unsteady_deform, impulse_now);
+        }
+        self.impulse_prev = impulse_now;
+        self.convect(&sources);
+    }
+
+    /// The rigid motion at time `t` with the sine and cosine of its pitch.
+    fn pose(&self, t: f64) -> Pose {
         let kinematics = self.kinematics(t);
-        let Kinematics {
-            x_dot,
-            h_dot,
-            alpha,
-            alpha_dot,
-            ..
-        } = kinematics;
-        let (sa, ca) = alpha.sin_cos();
-        let pivot = self.motion.pivot;
-        let shape = |xb: f64| {
-            self.camber
-                .as_ref()
-                .map_or((0.0, 0.0, 0.0), |c| c.at(xb, t))
-        };
+        let (sa, ca) = kinematics.alpha.sin_cos();
+        Pose {
+            kinematics,
+            sa,
+            ca,
+            t,
+        }
+    }
+
+    /// The camber line's `(eta, d eta/dx, d eta/dt)` at station `xb` and
+    /// time `t` (zero for a rigid section).
+    fn shape(&self, xb: f64, t: f64) -> (f64, f64, f64) {
+        self.camber
+            .as_ref()
+            .map_or((0.0, 0.0, 0.0), |c| c.at(xb, t))
+    }
+
+    /// The chord stations in `pose`, on the camber line.
+    fn chord(&self, pose: &Pose) -> Chord {
         let mut slopes = Vec::with_capacity(self.theta.len());
         let stations: Vec<(f64, f64, f64)> = self
             .theta
             .iter()
             .map(|&th| {
                 let xb = 0.5 * (1.0 - th.cos());
-                let (eta, slope, rate) = shape(xb);
+                let (eta, slope, rate) = self.shape(xb, pose.t);
                 slopes.push((slope, rate));
-                let (x, y) = self.body_point(xb, &kinematics);
+                let (x, y) = self.body_point(xb, &pose.kinematics);
                 // Offset along the normal (sin alpha, cos alpha).
-                (xb, x + eta * sa, y + eta * ca)
+                (xb, x + eta * pose.sa, y + eta * pose.ca)
             })
             .collect();
-        let edge = |xb: f64| {
-            let (x, y) = self.body_point(xb, &kinematics);
-            let eta = shape(xb).0;
-            (x + eta * sa, y + eta * ca)
-        };
+        Chord { stations, slopes }
+    }
 
-        // What induces velocity: the near wakes vortex by vortex, the far
-        // wakes as proxies.
-        let te = edge(1.0);
-        let limit = te.0 + self.settings.far_wake;
+    /// Global position of the camber line's point at station `xb` (0: the
+    /// leading edge, 1: the trailing edge) in `pose`.
+    fn edge(&self, xb: f64, pose: &Pose) -> (f64, f64) {
+        let (x, y) = self.body_point(xb, &pose.kinematics);
+        let eta = self.shape(xb, pose.t).0;
+        (x + eta * pose.sa, y + eta * pose.ca)
+    }
+
+    /// What induces velocity: the near wakes (up to `limit` downstream)
+    /// vortex by vortex, the far wakes as proxies.
+    fn sources(&self, limit: f64) -> Sources {
         let near_from = near_start(&self.wake, limit);
         let lev_near_from = near_start(&self.leading, limit);
-        let sources: Vec<FreeVortex> = self.wake[near_from..]
+        let vortices: Vec<FreeVortex> = self.wake[near_from..]
             .iter()
             .chain(&self.leading[lev_near_from..])
             .copied()
             .chain(far_proxies(&self.wake[..near_from]))
             .chain(far_proxies(&self.leading[..lev_near_from]))
             .collect();
-        let induced_by = |x: f64, y: f64, extra: &[FreeVortex]| {
-            let (mut u, mut v) = (0.0, 0.0);
-            for fv in sources.iter().chain(extra) {
-                let (du, dv) = induced(fv, x, y, self.core2);
-                u += du;
-                v += dv;
-            }
-            (u, v)
-        };
+        Sources {
+            near_from,
+            lev_near_from,
+            vortices,
+        }
+    }
 
-        // The new trailing-edge vortex, a third of the way to the last one.
+    /// The new vortices of unit strength: the trailing-edge one, a third of
+    /// the way from the trailing edge `te` to the last one, and with LESP
+    /// shedding on a candidate leading-edge one: a third of the way to the
+    /// last one while shedding goes on, else half a step downstream of the
+    /// leading edge with the flow relative to it (Ramesh et al. 2014).
+    fn new_vortices(&self, pose: &Pose, te: (f64, f64), sources: &Sources) -> Vec<FreeVortex> {
+        let dt = self.settings.dt;
+        let Kinematics {
+            x_dot,
+            h_dot,
+            alpha_dot,
+            ..
+        } = pose.kinematics;
+        let (sa, ca, pivot) = (pose.sa, pose.ca, self.motion.pivot);
         let (nx, ny) = match self.wake.last() {
             Some(last) => (te.0 + (last.x - te.0) / 3.0, te.1 + (last.y - te.1) / 3.0),
             None => (te.0 + 0.5 * dt, te.1),
         };
-        // A candidate leading-edge vortex: a third of the way to the last
-        // one while shedding goes on, else half a step downstream of the
-        // leading edge with the flow relative to it (Ramesh et al. 2014).
-        let lesp_critical = self.settings.lesp_critical;
-        let lev_at = lesp_critical.map(|_| {
-            let le = edge(0.0);
+        let lev_at = self.settings.lesp_critical.map(|_| {
+            let le = self.edge(0.0, pose);
             match (self.shedding, self.leading.last()) {
                 (true, Some(last)) => (le.0 + (last.x - le.0) / 3.0, le.1 + (last.y - le.1) / 3.0),
                 _ => {
-                    let (u, v) = induced_by(le.0, le.1, &[]);
+                    let (u, v) = sources.induced_at(le.0, le.1, self.core2);
                     let relative = (
                         1.0 + u - x_dot - pivot * sa * alpha_dot,
                         v - h_dot - pivot * ca * alpha_dot,
@@ -435,17 +534,34 @@ impl Ldvm {
                 }
             }
         });
-        // Normal and tangential flow relative to the plate (without bound
-        // vorticity): the part known now, and per unit new vortex.
         let unit = |(x, y): (f64, f64)| FreeVortex { x, y, gamma: 1.0 };
-        let news: Vec<FreeVortex> = std::iter::once(unit((nx, ny)))
+        std::iter::once(unit((nx, ny)))
             .chain(lev_at.map(unit))
-            .collect();
-        let m = stations.len();
+            .collect()
+    }
+
+    /// Normal and tangential flow relative to the plate (without bound
+    /// vorticity) at the chord stations: the part known now, and per unit
+    /// new vortex.
+    fn influence(
+        &self,
+        pose: &Pose,
+        chord: &Chord,
+        sources: &Sources,
+        news: &[FreeVortex],
+    ) -> Influence {
+        let Kinematics {
+            x_dot,
+            h_dot,
+            alpha_dot,
+            ..
+        } = pose.kinematics;
+        let (sa, ca, pivot) = (pose.sa, pose.ca, self.motion.pivot);
+        let m = chord.stations.len();
         let mut w = vec![Vec::with_capacity(m); 1 + news.len()];
         let mut vt = vec![Vec::with_capacity(m); 1 + news.len()];
-        for (&(xb, x, y), &(slope, rate)) in stations.iter().zip(&slopes) {
-            let (du, dv) = induced_by(x, y, &[]);
+        for (&(xb, x, y), &(slope, rate)) in chord.stations.iter().zip(&chord.slopes) {
+            let (du, dv) = sources.induced_at(x, y, self.core2);
             // The air relative to the surging section.
             let (u, v) = (1.0 + du - x_dot, dv);
             let relative = u * sa + v * ca - h_dot * ca + (xb - pivot) * alpha_dot;
@@ -460,15 +576,20 @@ impl Ldvm {
                 vt[k + 1].push(unit_tangential);
             }
         }
-        let coefficients: Vec<Vec<f64>> = w.iter().map(|w| self.coefficients(w)).collect();
-        let circulation = |a: &[f64]| PI * (a[0] + 0.5 * a[1]);
+        Influence { w, vt }
+    }
+
+    /// The new vortices' strengths from the Fourier coefficients of the
+    /// known flow and per unit new vortex. Kelvin: the shed (ccw)
+    /// circulation equals the bound (clockwise) one; both are linear in the
+    /// new vortices. When the trailing-edge vortex alone would leave `|A0|`
+    /// above the critical LESP, a leading-edge vortex is shed as well.
+    fn strengths(&self, coefficients: &[Vec<f64>]) -> Vec<f64> {
         let shed_so_far: f64 = self.wake.iter().chain(&self.leading).map(|v| v.gamma).sum();
-        // Kelvin: the shed (ccw) circulation equals the bound (clockwise)
-        // one; both are linear in the new vortices.
         let [known, per_te] = [&coefficients[0], &coefficients[1]];
         let kelvin_te = 1.0 - circulation(per_te);
         let mut strengths = vec![(circulation(known) - shed_so_far) / kelvin_te];
-        if let (Some(critical), Some(per_le)) = (lesp_critical, coefficients.get(2)) {
+        if let (Some(critical), Some(per_le)) = (self.settings.lesp_critical, coefficients.get(2)) {
             let a0 = known[0] + strengths[0] * per_te[0];
             if a0.abs() > critical {
                 // Kelvin and A0 = +-critical, two linear equations.
@@ -484,27 +605,13 @@ impl Ldvm {
                 ];
             }
         }
+        strengths
+    }
+
+    /// Sheds the new vortices with their `strengths` (the leading-edge one
+    /// only if it has a strength).
+    fn shed(&mut self, strengths: &[f64], news: &[FreeVortex]) {
         self.shedding = strengths.len() == 2;
-        let a: Vec<f64> = (0..known.len())
-            .map(|n| {
-                known[n]
-                    + strengths
-                        .iter()
-                        .zip(&coefficients[1..])
-                        .map(|(g, c)| g * c[n])
-                        .sum::<f64>()
-            })
-            .collect();
-        let tangential: Vec<f64> = (0..m)
-            .map(|j| {
-                vt[0][j]
-                    + strengths
-                        .iter()
-                        .zip(&vt[1..])
-                        .map(|(g, v)| g * v[j])
-                        .sum::<f64>()
-            })
-            .collect();
         self.wake.push(FreeVortex {
             gamma: strengths[0],
             ..news[0]
@@ -512,8 +619,11 @@ impl Ldvm {
         if let (Some(&gamma), Some(new)) = (strengths.get(1), news.get(1)) {
             self.leading.push(FreeVortex { gamma, ..*new });
         }
+    }
 
-        // Bound vortices: the analytic integral of gamma over each panel.
+    /// Bound vortices at the chord stations: the analytic integral of
+    /// gamma (the Glauert series with coefficients `a`) over each panel.
+    fn bind(&mut self, a: &[f64], chord: &Chord) {
         let m_points = self.theta.len();
         let mut panel_gamma = vec![0.0; m_points];
         for (an, row) in a.iter().zip(self.panel_table.chunks_exact(m_points)) {
@@ -523,21 +633,23 @@ impl Ldvm {
         }
         self.bound = panel_gamma
             .iter()
-            .zip(&stations)
+            .zip(&chord.stations)
             .map(|(&g, &(_, x, y))| FreeVortex { x, y, gamma: -g })
             .collect();
+    }
 
-        // Loads from the pressure jump (unsteady Bernoulli) on the bound
-        // vortices: N = sum V_t Gamma_j + d/dt sum Gamma_j (1 - x_j),
-        // M_LE = -(sum V_t Gamma_j x_j + d/dt sum Gamma_j (1 - x_j^2) / 2),
-        // plus the leading-edge suction pi A0^2 along the chord.
-        // The leading-edge vortices are fed through a sheet from the
-        // leading edge, across which the potential jumps by their (clockwise)
-        // circulation: the jump along the plate starts from that value at
-        // x = 0 instead of 0. Without it, each shed vortex would take its
-        // circulation out of the bound sheet in one step and the unsteady
-        // term would read that as a large, spurious loss of normal force.
-        let edge_jump = -self.leading.iter().map(|v| v.gamma).sum::<f64>();
+    /// Loads from the pressure jump (unsteady Bernoulli) on the bound
+    /// vortices: N = sum V_t Gamma_j + d/dt sum Gamma_j (1 - x_j),
+    /// M_LE = -(sum V_t Gamma_j x_j + d/dt sum Gamma_j (1 - x_j^2) / 2),
+    /// plus the leading-edge suction pi A0^2 along the chord; the
+    /// potential jump along the plate starts from `edge_jump`.
+    fn load_integrals(
+        &self,
+        a: &[f64],
+        tangential: &[f64],
+        chord: &Chord,
+        edge_jump: f64,
+    ) -> LoadIntegrals {
         let mut now = LoadIntegrals {
             normal: 0.0,
             moment: 0.0,
@@ -546,18 +658,24 @@ impl Ldvm {
             q_moment: 0.5 * edge_jump,
             deform_quasi: 0.0,
         };
-        for (j, (v, &(xb, _, _))) in self.bound.iter().zip(&stations).enumerate() {
+        for (j, (v, &(xb, _, _))) in self.bound.iter().zip(&chord.stations).enumerate() {
             let g = -v.gamma; // clockwise
             let vt = tangential[j];
             now.normal += vt * g;
             now.moment += vt * g * xb;
             now.q_normal += g * (1.0 - xb);
             now.q_moment += g * 0.5 * (1.0 - xb * xb);
-            now.deform_quasi += vt * g * slopes[j].1;
+            now.deform_quasi += vt * g * chord.slopes[j].1;
         }
-        // Deformation work: -int dp eta_t dx, with the unsteady part of the
-        // pressure jump per station, dx_j dPhi_j/dt (Phi: running bound
-        // circulation to the station's centre).
+        now
+    }
+
+    /// Deformation work: -int dp eta_t dx, with the unsteady part of the
+    /// pressure jump per station, dx_j dPhi_j/dt (Phi: running bound
+    /// circulation to the station's centre, from `edge_jump` at the
+    /// leading edge). Keeps this step's running circulation for the next.
+    fn unsteady_deformation(&mut self, chord: &Chord, edge_jump: f64) -> f64 {
+        let dt = self.settings.dt;
         let mut running = Vec::with_capacity(self.bound.len());
         let mut sum = edge_jump;
         for v in &self.bound {
@@ -570,67 +688,87 @@ impl Ldvm {
             running
                 .iter()
                 .zip(&self.running_previous)
-                .zip(self.theta.iter().zip(&slopes))
+                .zip(self.theta.iter().zip(&chord.slopes))
                 .map(|((p, q), (th, &(_, rate)))| 0.5 * th.sin() * dtheta * (p - q) / dt * rate)
                 .sum()
         } else {
             0.0
         };
         self.running_previous = running;
-        // The vertical impulse of all the vorticity, bound and free (ccw
-        // circulation times x; frame-independent since it sums to zero).
-        let impulse_now: f64 = self
-            .bound
+        unsteady_deform
+    }
+
+    /// The vertical impulse of all the vorticity, bound and free (ccw
+    /// circulation times x; frame-independent since it sums to zero).
+    fn impulse(&self) -> f64 {
+        self.bound
             .iter()
             .chain(&self.wake)
             .chain(&self.leading)
             .map(|v| v.gamma * v.x)
-            .sum();
-        if let Some(prev) = self.loads.replace(now) {
-            // The backward differences are the loads at the half step: take
-            // the kinematics there too, or the added-mass force (large at
-            // high k, in quadrature with the velocity) leaks into the mean
-            // power through an O(omega dt) phase error.
-            let tm = t - 0.5 * dt;
-            let Kinematics {
-                x_dot: x_dot_m,
-                h_dot: h_dot_m,
-                alpha: alpha_m,
-                alpha_dot: alpha_dot_m,
-                ..
-            } = self.kinematics(tm);
-            let normal = 0.5 * (now.normal + prev.normal) + (now.q_normal - prev.q_normal) / dt;
-            let moment_le =
-                -(0.5 * (now.moment + prev.moment) + (now.q_moment - prev.q_moment) / dt);
-            let suction = 0.5 * (now.suction + prev.suction);
-            let (sm, cm) = alpha_m.sin_cos();
-            let fx = normal * sm - suction * cm;
-            let fy = normal * cm + suction * sm;
-            let m_pivot_nose_up = moment_le + pivot * normal;
-            let deformation = 0.5 * (now.deform_quasi + prev.deform_quasi) + unsteady_deform;
-            let power = -fx * x_dot_m - fy * h_dot_m - m_pivot_nose_up * alpha_dot_m - deformation;
-            history.time.push(tm);
-            history.cl.push(2.0 * fy);
-            history.ct.push(-2.0 * fx);
-            if let Some(re) = self.settings.reynolds {
-                history
-                    .cd_friction
-                    .push(super::friction::streamwise_friction(
-                        re, alpha_m, h_dot_m, x_dot_m,
-                    ));
-            }
-            history.cp.push(2.0 * power);
-            history.lesp.push(a[0]);
-            history
-                .cl_impulse
-                .push(2.0 * (impulse_now - self.impulse_prev) / dt);
-            history.bound_circulation.push(circulation(&a));
-        }
+            .sum()
+    }
 
-        self.impulse_prev = impulse_now;
-        // Convect the free vortices: the near wakes with the velocity
-        // induced by everything (the far wakes as proxies), the far wakes
-        // with the freestream. (The new vortices joined the near wakes.)
+    /// Records the loads of the half step between the load integrals
+    /// `prev` and `now` in `history`, with the Glauert coefficients `a`
+    /// of this step.
+    fn record(
+        &self,
+        history: &mut History,
+        now: &LoadIntegrals,
+        prev: &LoadIntegrals,
+        a: &[f64],
+        unsteady_deform: f64,
+        impulse_now: f64,
+    ) {
+        let dt = self.settings.dt;
+        let pivot = self.motion.pivot;
+        // The backward differences are the loads at the half step: take
+        // the kinematics there too, or the added-mass force (large at
+        // high k, in quadrature with the velocity) leaks into the mean
+        // power through an O(omega dt) phase error.
+        let tm = self.time - 0.5 * dt;
+        let Kinematics {
+            x_dot: x_dot_m,
+            h_dot: h_dot_m,
+            alpha: alpha_m,
+            alpha_dot: alpha_dot_m,
+            ..
+        } = self.kinematics(tm);
+        let normal = 0.5 * (now.normal + prev.normal) + (now.q_normal - prev.q_normal) / dt;
+        let moment_le = -(0.5 * (now.moment + prev.moment) + (now.q_moment - prev.q_moment) / dt);
+        let suction = 0.5 * (now.suction + prev.suction);
+        let (sm, cm) = alpha_m.sin_cos();
+        let fx = normal * sm - suction * cm;
+        let fy = normal * cm + suction * sm;
+        let m_pivot_nose_up = moment_le + pivot * normal;
+        let deformation = 0.5 * (now.deform_quasi + prev.deform_quasi) + unsteady_deform;
+        let power = -fx * x_dot_m - fy * h_dot_m - m_pivot_nose_up * alpha_dot_m - deformation;
+        history.time.push(tm);
+        history.cl.push(2.0 * fy);
+        history.ct.push(-2.0 * fx);
+        if let Some(re) = self.settings.reynolds {
+            history
+                .cd_friction
+                .push(super::friction::streamwise_friction(
+                    re, alpha_m, h_dot_m, x_dot_m,
+                ));
+        }
+        history.cp.push(2.0 * power);
+        history.lesp.push(a[0]);
+        history
+            .cl_impulse
+            .push(2.0 * (impulse_now - self.impulse_prev) / dt);
+        history.bound_circulation.push(circulation(a));
+    }
+
+    /// Convects the free vortices: the near wakes (as split in `sources`)
+    /// with the velocity induced by everything (the far wakes as proxies),
+    /// the far wakes with the freestream. (The new vortices joined the near
+    /// wakes.)
+    fn convect(&mut self, sources: &Sources) {
+        let dt = self.settings.dt;
+        let (near_from, lev_near_from) = (sources.near_from, sources.lev_near_from);
         let proxies: Vec<FreeVortex> = far_proxies(&self.wake[..near_from])
             .chain(far_proxies(&self.leading[..lev_near_from]))
             .collect();
@@ -666,4 +804,24 @@ impl Ldvm {
             p.y += v * dt;
         }
     }
+}
+
+/// The bound circulation `pi (A0 + A1/2)` of the Glauert series `a`.
+fn circulation(a: &[f64]) -> f64 {
+    PI * (a[0] + 0.5 * a[1])
+}
+
+/// `known + sum_k strengths[k] per_unit[k]`, entry by entry: the flow (or
+/// its coefficients) once the new vortices' strengths are known.
+fn superpose(known: &[f64], strengths: &[f64], per_unit: &[Vec<f64>]) -> Vec<f64> {
+    (0..known.len())
+        .map(|n| {
+            known[n]
+                + strengths
+                    .iter()
+                    .zip(per_unit)
+                    .map(|(g, c)| g * c[n])
+                    .sum::<f64>()
+        })
+        .collect()
 }

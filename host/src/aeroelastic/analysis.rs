@@ -17,12 +17,12 @@ use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
 use crate::shell::assembly::{pressure_loads, AssemblyError};
-use crate::shell::dynamics::{DynamicsError, GeneralizedAlpha};
+use crate::shell::dynamics::{DynamicsError, GeneralizedAlpha, State};
 use crate::uvlm::{Lattice, Solution, Uvlm, UvlmError, UvlmSettings};
 
 use super::floating_frame::FloatingFrameWing;
 use super::interface::{InterfaceError, SurfaceMap};
-use super::kinematics::{FlappingKinematics, KinematicsError};
+use super::kinematics::{FlappingKinematics, KinematicsError, RootMotion};
 use super::model::{FlightCondition, WingModel};
 
 /// Settings of a system analysis (the `[analysis]` table of the
@@ -232,72 +232,11 @@ pub fn run(
 ) -> Result<SystemResult, SystemError> {
     kinematics.validate()?;
     check(settings, flight)?;
-    let planform = &wing.planform;
-    let mesh = &wing.wing.mesh;
-    let map = SurfaceMap::new(
-        planform,
-        mesh,
-        settings.chordwise_panels,
-        settings.spanwise_panels,
-    )?;
-    let period = kinematics.period();
+    let mut coupling = Coupling::new(wing, kinematics, flight, settings)?;
     let n_cycle = settings.steps_per_cycle;
-    let dt = period / n_cycle as f64;
     let total = settings.cycles * n_cycle;
-    let rows = |cycles: f64| -> usize {
-        if cycles.is_finite() {
-            (cycles * n_cycle as f64).ceil() as usize
-        } else {
-            usize::MAX
-        }
-    };
-    let mut aero_settings =
-        UvlmSettings::new(dt, flight.density, Vector3::new(flight.speed, 0.0, 0.0));
-    aero_settings.symmetric = true;
-    aero_settings.free_wake_rows = rows(settings.free_wake_cycles);
-    aero_settings.wake_rows = rows(settings.wake_cycles);
-    aero_settings.core_radius = settings.core_radius_chords * planform.root_chord;
-    let (nc, ns) = (settings.chordwise_panels, settings.spanwise_panels);
-    let mut uvlm = Uvlm::new(nc, ns, aero_settings)?;
-    let structure = if settings.rigid {
-        None
-    } else {
-        Some(FloatingFrameWing::new(
-            mesh,
-            &wing.sections,
-            &wing.wing.clamped_dofs(),
-            GeneralizedAlpha {
-                dt,
-                rho_inf: settings.rho_inf,
-                mass_damping: 0.0,
-                stiffness_damping: 0.0,
-            },
-        )?)
-    };
-    let nodes = mesh.nodes.len();
-    let zero = vec![Vector3::zeros(); nodes];
-    let area = wing.area();
-    let q = 0.5 * flight.density * flight.speed * flight.speed;
-    let (chord_elements, span_elements) = (planform.chord_elements, planform.span_elements);
-    let tip_te = span_elements * (chord_elements + 1) + chord_elements;
-    let mid = span_elements / 2;
-    let section_nodes: Vec<usize> = (0..=chord_elements)
-        .map(|i| mid * (chord_elements + 1) + i)
-        .collect();
-    let mid_chord = planform.chord(mesh.nodes[section_nodes[0]].y);
-
-    // The loads at t = 0 (the frame's inertia on the undeformed wing) start
-    // the structure and are the first step's previous loads.
-    let mut load_previous = structure.as_ref().map_or(Vec::new(), |s| {
-        s.inertial_loads(&kinematics.motion(0.0), &zero, &zero)
-    });
-    let mut state = match &structure {
-        Some(s) => Some(s.start_deflected(
-            &load_previous,
-            2.0 * std::f64::consts::PI * kinematics.frequency,
-        )?),
-        None => None,
-    };
+    let dt = coupling.dt;
+    let (mut load_previous, mut state) = coupling.start()?;
     let mut result = SystemResult {
         steps: Vec::with_capacity(total),
         means: CycleMeans {
@@ -310,105 +249,322 @@ pub fn run(
         section_history: Vec::new(),
         pressure_history: Vec::new(),
         snapshots: Vec::new(),
-        wing_mass_kg: structure.as_ref().map_or(0.0, |s| s.mass()),
-        reference_area_m2: area,
+        wing_mass_kg: coupling.structure.as_ref().map_or(0.0, |s| s.mass()),
+        reference_area_m2: coupling.area,
         dt_s: dt,
     };
 
     for step in 0..total {
         let time = (step + 1) as f64 * dt;
         let motion = kinematics.motion(time);
-        let (mut u, mut v) = match (&structure, &state) {
+        let converged = coupling.couple(step, time, &motion, state.as_ref(), &load_previous)?;
+        coupling
+            .uvlm
+            .advance(&converged.surface, &converged.solution)?;
+        result
+            .steps
+            .push(coupling.record(step, time, &motion, &converged)?);
+        let last_cycle = step + n_cycle >= total;
+        if last_cycle {
+            let snapshot = snapshot_every > 0 && (total - 1 - step) % snapshot_every == 0;
+            coupling.keep_last_cycle(&mut result, time, &motion, &converged, snapshot);
+        }
+        if let Some(st) = converged.state {
+            state = Some(st);
+            load_previous = converged.load;
+        }
+        progress(step + 1, total);
+    }
+    result.means = cycle_means(&result.steps, n_cycle, settings.cycles);
+    Ok(result)
+}
+
+/// The coupled problem of one run: the two fields and what stays fixed
+/// over the run.
+struct Coupling<'a> {
+    wing: &'a WingModel,
+    kinematics: &'a FlappingKinematics,
+    flight: &'a FlightCondition,
+    settings: &'a SystemSettings,
+    /// Lattice and shell on each other.
+    map: SurfaceMap,
+    /// The lattice's solver with its wake.
+    uvlm: Uvlm,
+    /// The shell in the flapping frame (`None` for a rigid wing).
+    structure: Option<FloatingFrameWing>,
+    /// Time step, s.
+    dt: f64,
+    /// A zero vector per shell node.
+    zero: Vec<Vector3<f64>>,
+    /// Reference area (the half wing's planform), m².
+    area: f64,
+    /// Dynamic pressure, Pa.
+    q: f64,
+    /// The tip's trailing-edge node.
+    tip_te: usize,
+    /// The mid-span section's nodes, leading edge first.
+    section_nodes: Vec<usize>,
+    /// The mid-span section's chord, m.
+    mid_chord: f64,
+}
+
+/// A step's converged (or last) coupling iterate.
+struct Converged {
+    /// The lattice in its place.
+    surface: Lattice,
+    /// Its aerodynamic solution.
+    solution: Solution,
+    /// The shell's state at the step's end (`None` for a rigid wing).
+    state: Option<State>,
+    /// The shell's loads at the step's end (empty for a rigid wing).
+    load: Vec<f64>,
+    /// Sub-iterations taken.
+    iterations: usize,
+    /// Final relative interface residual (0 for a rigid wing).
+    residual: f64,
+}
+
+impl<'a> Coupling<'a> {
+    /// The interface map, the lattice and the shell for `wing` flapping
+    /// with `kinematics` in `flight`.
+    fn new(
+        wing: &'a WingModel,
+        kinematics: &'a FlappingKinematics,
+        flight: &'a FlightCondition,
+        settings: &'a SystemSettings,
+    ) -> Result<Self, SystemError> {
+        let planform = &wing.planform;
+        let mesh = &wing.wing.mesh;
+        let map = SurfaceMap::new(
+            planform,
+            mesh,
+            settings.chordwise_panels,
+            settings.spanwise_panels,
+        )?;
+        let period = kinematics.period();
+        let n_cycle = settings.steps_per_cycle;
+        let dt = period / n_cycle as f64;
+        let rows = |cycles: f64| -> usize {
+            if cycles.is_finite() {
+                (cycles * n_cycle as f64).ceil() as usize
+            } else {
+                usize::MAX
+            }
+        };
+        let mut aero_settings =
+            UvlmSettings::new(dt, flight.density, Vector3::new(flight.speed, 0.0, 0.0));
+        aero_settings.symmetric = true;
+        aero_settings.free_wake_rows = rows(settings.free_wake_cycles);
+        aero_settings.wake_rows = rows(settings.wake_cycles);
+        aero_settings.core_radius = settings.core_radius_chords * planform.root_chord;
+        let (nc, ns) = (settings.chordwise_panels, settings.spanwise_panels);
+        let uvlm = Uvlm::new(nc, ns, aero_settings)?;
+        let structure = if settings.rigid {
+            None
+        } else {
+            Some(FloatingFrameWing::new(
+                mesh,
+                &wing.sections,
+                &wing.wing.clamped_dofs(),
+                GeneralizedAlpha {
+                    dt,
+                    rho_inf: settings.rho_inf,
+                    mass_damping: 0.0,
+                    stiffness_damping: 0.0,
+                },
+            )?)
+        };
+        let nodes = mesh.nodes.len();
+        let (chord_elements, span_elements) = (planform.chord_elements, planform.span_elements);
+        let mid = span_elements / 2;
+        let section_nodes: Vec<usize> = (0..=chord_elements)
+            .map(|i| mid * (chord_elements + 1) + i)
+            .collect();
+        Ok(Self {
+            wing,
+            kinematics,
+            flight,
+            settings,
+            map,
+            uvlm,
+            structure,
+            dt,
+            zero: vec![Vector3::zeros(); nodes],
+            area: wing.area(),
+            q: 0.5 * flight.density * flight.speed * flight.speed,
+            tip_te: span_elements * (chord_elements + 1) + chord_elements,
+            mid_chord: planform.chord(mesh.nodes[section_nodes[0]].y),
+            section_nodes,
+        })
+    }
+
+    /// The loads at t = 0 (the frame's inertia on the undeformed wing),
+    /// which start the structure and are the first step's previous loads,
+    /// and the structure's start (both empty for a rigid wing).
+    fn start(&self) -> Result<(Vec<f64>, Option<State>), SystemError> {
+        let load = self.structure.as_ref().map_or(Vec::new(), |s| {
+            s.inertial_loads(&self.kinematics.motion(0.0), &self.zero, &self.zero)
+        });
+        let state = match &self.structure {
+            Some(s) => Some(s.start_deflected(
+                &load,
+                2.0 * std::f64::consts::PI * self.kinematics.frequency,
+            )?),
+            None => None,
+        };
+        Ok((load, state))
+    }
+
+    /// One step's block Gauss–Seidel fixed point from the last converged
+    /// `state` under `load_previous`: lattice on the iterate, its loads on
+    /// the shell, the shell's step, Aitken's relaxation, until the interface
+    /// residual is below the tolerance or the sub-iterations run out.
+    fn couple(
+        &mut self,
+        step: usize,
+        time: f64,
+        motion: &RootMotion,
+        state: Option<&State>,
+        load_previous: &[f64],
+    ) -> Result<Converged, SystemError> {
+        let dt = self.dt;
+        let (mut u, mut v) = match (&self.structure, state) {
             (Some(s), Some(st)) => {
                 let (u, v) = (s.translations(st), s.velocities(st));
                 let predicted = u.iter().zip(&v).map(|(u, v)| u + dt * v).collect();
                 (predicted, v)
             }
-            _ => (zero.clone(), zero.clone()),
+            _ => (self.zero.clone(), self.zero.clone()),
         };
-        let mut omega = 0.5;
-        let mut last_residual: Option<Vec<Vector3<f64>>> = None;
+        let mut aitken = Aitken {
+            omega: 0.5,
+            last_residual: None,
+        };
         let mut iterations = 0;
-        let mut residual_norm = 0.0;
-        let (surface, solution, new_state, load_next) = loop {
+        loop {
             iterations += 1;
-            let body: Vec<Vector3<f64>> = map
-                .body_corners()
-                .iter()
-                .zip(map.interpolate(&u))
-                .map(|(x, d)| x + d)
-                .collect();
-            let corner_v = map.interpolate(&v);
-            let corners = body.iter().map(|p| motion.position(p)).collect();
-            let velocity: Vec<Vector3<f64>> = body
-                .iter()
-                .zip(&corner_v)
-                .map(|(p, w)| motion.velocity(p, w))
-                .collect();
-            let surface = Lattice::new(nc, ns, corners)?;
-            let solution = uvlm.solve(&surface, &velocity)?;
-            let (Some(s), Some(st)) = (&structure, &state) else {
-                break (surface, solution, None, Vec::new());
+            let (surface, solution) = self.aerodynamics(motion, &u, &v)?;
+            let (Some(s), Some(st)) = (&self.structure, state) else {
+                return Ok(Converged {
+                    surface,
+                    solution,
+                    state: None,
+                    load: Vec::new(),
+                    iterations,
+                    residual: 0.0,
+                });
             };
-            let inverse = motion.rotation.inverse();
-            // The pressure goes to the shell as a distributed load on its
-            // elements (each taking its panel's jump, along its normal in
-            // the flapping frame, as the small-deflection model has it):
-            // point forces at the panel centres excite the fine mesh's
-            // local modes, which at small steps fed back through the
-            // surface velocity into a growing sawtooth. The in-plane
-            // leading-edge suction goes to the leading-edge nodes.
-            let suction: Vec<Vector3<f64>> = solution
-                .leading_edge_suction
-                .iter()
-                .map(|f| inverse * f)
-                .collect();
-            let mut load = pressure_loads(mesh, &map.element_pressures(&solution.pressure_jump))?;
-            for (l, f) in load.iter_mut().zip(map.nodal_forces(&[], &suction)) {
-                *l += f;
-            }
-            for (l, i) in load.iter_mut().zip(s.inertial_loads(&motion, &u, &v)) {
-                *l += i;
-            }
-            let trial = s.step(st, &load_previous, &load);
+            let load = self.shell_loads(s, motion, &solution, &u, &v)?;
+            let trial = s.step(st, load_previous, &load);
             let (u_new, v_new) = (s.translations(&trial), s.velocities(&trial));
             let r: Vec<Vector3<f64>> = u_new.iter().zip(&u).map(|(a, b)| a - b).collect();
             // The lattice feels the surface velocity as much as its shape,
             // and at small steps a small displacement error is a large
             // velocity error: both must be converged.
             let r_v: Vec<Vector3<f64>> = v_new.iter().zip(&v).map(|(a, b)| a - b).collect();
-            let scale_u = norm(&u_new).max(1e-12 * planform.root_chord);
-            let scale_v = norm(&v_new).max(1e-12 * planform.root_chord / dt);
-            residual_norm = (norm(&r) / scale_u).max(norm(&r_v) / scale_v);
-            if !residual_norm.is_finite() {
+            let root_chord = self.wing.planform.root_chord;
+            let scale_u = norm(&u_new).max(1e-12 * root_chord);
+            let scale_v = norm(&v_new).max(1e-12 * root_chord / dt);
+            let residual = (norm(&r) / scale_u).max(norm(&r_v) / scale_v);
+            if !residual.is_finite() {
                 return Err(SystemError::Diverged {
                     time,
                     step,
                     what: "interface displacement",
                 });
             }
-            if residual_norm <= settings.coupling_tolerance
-                || iterations >= settings.max_subiterations
+            if residual <= self.settings.coupling_tolerance
+                || iterations >= self.settings.max_subiterations
             {
-                break (surface, solution, Some(trial), load);
+                return Ok(Converged {
+                    surface,
+                    solution,
+                    state: Some(trial),
+                    load,
+                    iterations,
+                    residual,
+                });
             }
-            if let Some(previous) = &last_residual {
-                let dr: Vec<Vector3<f64>> = r.iter().zip(previous).map(|(a, b)| a - b).collect();
-                let denominator = dot(&dr, &dr);
-                if denominator > 0.0 {
-                    omega = -omega * dot(previous, &dr) / denominator;
-                }
-            }
-            omega = omega.clamp(-2.0, 2.0);
-            for (ui, ri) in u.iter_mut().zip(&r) {
-                *ui += omega * ri;
-            }
-            for (vi, vn) in v.iter_mut().zip(&v_new) {
-                *vi += omega * (vn - *vi);
-            }
-            last_residual = Some(r);
-        };
-        uvlm.advance(&surface, &solution)?;
+            aitken.relax(&mut u, &mut v, r, &v_new);
+        }
+    }
+
+    /// The lattice on the shape and surface velocity of the iterate `u`,
+    /// `v` (the nodes' translations and velocities in the flapping frame)
+    /// in `motion`, and its solution.
+    fn aerodynamics(
+        &self,
+        motion: &RootMotion,
+        u: &[Vector3<f64>],
+        v: &[Vector3<f64>],
+    ) -> Result<(Lattice, Solution), SystemError> {
+        let body: Vec<Vector3<f64>> = self
+            .map
+            .body_corners()
+            .iter()
+            .zip(self.map.interpolate(u))
+            .map(|(x, d)| x + d)
+            .collect();
+        let corner_v = self.map.interpolate(v);
+        let corners = body.iter().map(|p| motion.position(p)).collect();
+        let velocity: Vec<Vector3<f64>> = body
+            .iter()
+            .zip(&corner_v)
+            .map(|(p, w)| motion.velocity(p, w))
+            .collect();
+        let surface = Lattice::new(
+            self.settings.chordwise_panels,
+            self.settings.spanwise_panels,
+            corners,
+        )?;
+        let solution = self.uvlm.solve(&surface, &velocity)?;
+        Ok((surface, solution))
+    }
+
+    /// The shell's loads of the lattice's `solution` and of the frame's
+    /// inertia on the iterate `u`, `v`.
+    fn shell_loads(
+        &self,
+        s: &FloatingFrameWing,
+        motion: &RootMotion,
+        solution: &Solution,
+        u: &[Vector3<f64>],
+        v: &[Vector3<f64>],
+    ) -> Result<Vec<f64>, SystemError> {
+        let inverse = motion.rotation.inverse();
+        // The pressure goes to the shell as a distributed load on its
+        // elements (each taking its panel's jump, along its normal in
+        // the flapping frame, as the small-deflection model has it):
+        // point forces at the panel centres excite the fine mesh's
+        // local modes, which at small steps fed back through the
+        // surface velocity into a growing sawtooth. The in-plane
+        // leading-edge suction goes to the leading-edge nodes.
+        let suction: Vec<Vector3<f64>> = solution
+            .leading_edge_suction
+            .iter()
+            .map(|f| inverse * f)
+            .collect();
+        let mesh = &self.wing.wing.mesh;
+        let mut load = pressure_loads(mesh, &self.map.element_pressures(&solution.pressure_jump))?;
+        for (l, f) in load.iter_mut().zip(self.map.nodal_forces(&[], &suction)) {
+            *l += f;
+        }
+        for (l, i) in load.iter_mut().zip(s.inertial_loads(motion, u, v)) {
+            *l += i;
+        }
+        Ok(load)
+    }
+
+    /// The record of the step `converged` ends, once its aerodynamic force
+    /// is known to be finite.
+    fn record(
+        &self,
+        step: usize,
+        time: f64,
+        motion: &RootMotion,
+        converged: &Converged,
+    ) -> Result<StepRecord, SystemError> {
+        let solution = &converged.solution;
         let force = solution.force;
         if !(force.iter().all(|f| f.is_finite()) && solution.power.is_finite()) {
             return Err(SystemError::Diverged {
@@ -417,73 +573,128 @@ pub fn run(
                 what: "aerodynamic force",
             });
         }
-        let moment = aerodynamic_moment(&surface, &solution);
-        let axis = kinematics.axis().into_inner();
-        let inertia = match (&structure, &new_state) {
-            (Some(s), Some(st)) => s.inertial_torque(&motion, st, &axis),
+        let moment = aerodynamic_moment(&converged.surface, solution);
+        let axis = self.kinematics.axis().into_inner();
+        let inertia = match (&self.structure, &converged.state) {
+            (Some(s), Some(st)) => s.inertial_torque(motion, st, &axis),
             _ => 0.0,
         };
-        let tip = match (&structure, &new_state) {
-            (Some(s), Some(st)) => s.translations(st)[tip_te],
+        let tip = match (&self.structure, &converged.state) {
+            (Some(s), Some(st)) => s.translations(st)[self.tip_te],
             _ => Vector3::zeros(),
         };
-        result.steps.push(StepRecord {
+        let (q, area) = (self.q, self.area);
+        Ok(StepRecord {
             time_s: time,
             force_n: [force.x, force.y, force.z],
             power_w: solution.power,
             ct: -force.x / (q * area),
             cl: force.z / (q * area),
-            cp: solution.power / (q * flight.speed * area),
+            cp: solution.power / (q * self.flight.speed * area),
             aero_moment_nm: [moment.x, moment.y, moment.z],
             drive_torque_nm: inertia - axis.dot(&moment),
             tip_displacement_m: [tip.x, tip.y, tip.z],
-            subiterations: iterations,
-            residual: residual_norm,
-        });
-        let last_cycle = step + n_cycle >= total;
-        if last_cycle {
-            let translations = match (&structure, &new_state) {
-                (Some(s), Some(st)) => s.translations(st),
-                _ => zero.clone(),
-            };
-            result.section_history.push(
-                section_nodes
-                    .iter()
-                    .map(|&n| {
-                        let x = mesh.nodes[n] + translations[n];
-                        let le = mesh.nodes[section_nodes[0]];
-                        [(x.x - le.x) / mid_chord, x.z / mid_chord]
-                    })
-                    .collect(),
-            );
-            let pressure = map.element_pressures(&solution.pressure_jump);
-            if snapshot_every > 0 && (total - 1 - step) % snapshot_every == 0 {
-                result.snapshots.push(Snapshot {
-                    time,
-                    nodes: mesh
-                        .nodes
-                        .iter()
-                        .zip(&translations)
-                        .map(|(x, d)| motion.position(&(x + d)))
-                        .collect(),
-                    element_pressure: pressure.clone(),
-                    wake_corners: uvlm.wake().corner_rows(),
-                    wake_strength: uvlm.wake().strength_rows(),
-                });
-            }
-            result.pressure_history.push(pressure);
-        }
-        if let Some(st) = new_state {
-            state = Some(st);
-            load_previous = load_next;
-        }
-        progress(step + 1, total);
+            subiterations: converged.iterations,
+            residual: converged.residual,
+        })
     }
-    let last = &result.steps[total - n_cycle..];
+
+    /// Keeps what the last cycle hands on from the step `converged` ends:
+    /// the mid-span section, the element pressures and, if `snapshot`, a
+    /// snapshot of wing and wake.
+    fn keep_last_cycle(
+        &self,
+        result: &mut SystemResult,
+        time: f64,
+        motion: &RootMotion,
+        converged: &Converged,
+        snapshot: bool,
+    ) {
+        let mesh = &self.wing.wing.mesh;
+        let translations = match (&self.structure, &converged.state) {
+            (Some(s), Some(st)) => s.translations(st),
+            _ => self.zero.clone(),
+        };
+        let (section_nodes, mid_chord) = (&self.section_nodes, self.mid_chord);
+        result.section_history.push(
+            section_nodes
+                .iter()
+                .map(|&n| {
+                    let x = mesh.nodes[n] + translations[n];
+                    let le = mesh.nodes[section_nodes[0]];
+                    [(x.x - le.x) / mid_chord, x.z / mid_chord]
+                })
+                .collect(),
+        );
+        let pressure = self
+            .map
+            .element_pressures(&converged.solution.pressure_jump);
+        if snapshot {
+            result.snapshots.push(Snapshot {
+                time,
+                nodes: mesh
+                    .nodes
+                    .iter()
+                    .zip(&translations)
+                    .map(|(x, d)| motion.position(&(x + d)))
+                    .collect(),
+                element_pressure: pressure.clone(),
+                wake_corners: self.uvlm.wake().corner_rows(),
+                wake_strength: self.uvlm.wake().strength_rows(),
+            });
+        }
+        result.pressure_history.push(pressure);
+    }
+}
+
+/// Aitken's dynamic relaxation of the interface iterate (Küttler & Wall
+/// 2008, eq. 44).
+struct Aitken {
+    /// The relaxation factor.
+    omega: f64,
+    /// The displacement residual of the previous sub-iteration.
+    last_residual: Option<Vec<Vector3<f64>>>,
+}
+
+impl Aitken {
+    /// Moves the iterate `u`, `v` towards the shell's answer by the
+    /// relaxation factor updated with the displacement residual `r`
+    /// (`v_new` the shell's velocities).
+    fn relax(
+        &mut self,
+        u: &mut [Vector3<f64>],
+        v: &mut [Vector3<f64>],
+        r: Vec<Vector3<f64>>,
+        v_new: &[Vector3<f64>],
+    ) {
+        if let Some(previous) = &self.last_residual {
+            let dr: Vec<Vector3<f64>> = r.iter().zip(previous).map(|(a, b)| a - b).collect();
+            let denominator = dot(&dr, &dr);
+            if denominator > 0.0 {
+                self.omega = -self.omega * dot(previous, &dr) / denominator;
+            }
+        }
+        self.omega = self.omega.clamp(-2.0, 2.0);
+        let omega = self.omega;
+        for (ui, ri) in u.iter_mut().zip(&r) {
+            *ui += omega * ri;
+        }
+        for (vi, vn) in v.iter_mut().zip(v_new) {
+            *vi += omega * (vn - *vi);
+        }
+        self.last_residual = Some(r);
+    }
+}
+
+/// The means over the last of `cycles` cycles of `n_cycle` steps, and the
+/// change of the mean CT from the cycle before.
+fn cycle_means(steps: &[StepRecord], n_cycle: usize, cycles: usize) -> CycleMeans {
+    let total = steps.len();
+    let last = &steps[total - n_cycle..];
     let mean = |f: &dyn Fn(&StepRecord) -> f64| last.iter().map(f).sum::<f64>() / n_cycle as f64;
     let (ct, cl, cp) = (mean(&|r| r.ct), mean(&|r| r.cl), mean(&|r| r.cp));
-    let before = if settings.cycles > 1 {
-        result.steps[total - 2 * n_cycle..total - n_cycle]
+    let before = if cycles > 1 {
+        steps[total - 2 * n_cycle..total - n_cycle]
             .iter()
             .map(|r| r.ct)
             .sum::<f64>()
@@ -491,7 +702,7 @@ pub fn run(
     } else {
         ct
     };
-    result.means = CycleMeans {
+    CycleMeans {
         ct,
         cl,
         cp,
@@ -501,8 +712,7 @@ pub fn run(
         } else {
             0.0
         },
-    };
-    Ok(result)
+    }
 }
 
 /// Moment about the origin of the panel forces (at the panel centres) and

@@ -4,7 +4,7 @@
 
 use rayon::prelude::*;
 
-use super::element;
+use super::element::{self, DOFS, NODE_DOFS};
 use super::material::Section;
 use super::mesh::ShellMesh;
 
@@ -109,11 +109,11 @@ impl DofMap {
 }
 
 /// Global DOF indices of element `e`'s 24 local DOFs.
-pub fn element_dofs(mesh: &ShellMesh, e: usize) -> [usize; 24] {
-    let mut d = [0; 24];
+pub fn element_dofs(mesh: &ShellMesh, e: usize) -> [usize; DOFS] {
+    let mut d = [0; DOFS];
     for (i, &n) in mesh.elements[e].iter().enumerate() {
-        for c in 0..6 {
-            d[6 * i + c] = 6 * n + c;
+        for c in 0..NODE_DOFS {
+            d[NODE_DOFS * i + c] = NODE_DOFS * n + c;
         }
     }
     d

@@ -25,7 +25,9 @@ use nalgebra::{Matrix3, Rotation3, SMatrix, Vector3};
 use rayon::prelude::*;
 
 use super::assembly::{check_sections, AssemblyError};
-use super::element::{local_stiffness_matrix, ElementMatrix, ElementVector, Frame};
+use super::element::{
+    local_stiffness_matrix, ElementMatrix, ElementVector, Frame, DOFS, NODES, NODE_DOFS,
+};
 use super::material::Section;
 use super::mesh::ShellMesh;
 
@@ -62,7 +64,7 @@ impl Configuration {
     /// Applies an increment over the global DOFs `[dx, dy, dz, dwx, dwy,
     /// dwz]` a node (spins compose on the left).
     pub fn update(&mut self, increment: &[f64]) {
-        for (n, d) in increment.chunks_exact(6).enumerate() {
+        for (n, d) in increment.chunks_exact(NODE_DOFS).enumerate() {
             self.displacement[n] += Vector3::new(d[0], d[1], d[2]);
             let r = Rotation3::from_scaled_axis(Vector3::new(d[3], d[4], d[5])) * self.rotation[n];
             // Back onto SO(3): products of many increments drift off it.
@@ -78,7 +80,7 @@ struct Reference {
     /// Initial frame, columns.
     e0: Matrix3<f64>,
     /// Initial local corner coordinates.
-    p0: [Vector3<f64>; 4],
+    p0: [Vector3<f64>; NODES],
     /// Local linear stiffness.
     k: ElementMatrix,
 }
@@ -86,7 +88,7 @@ struct Reference {
 /// Frame (columns) and centroid of four points: the mean plane of
 /// [`Frame::new`] (`e3` along the diagonals' cross product, `e1` along the
 /// mean of the sides 0→1 and 3→2 projected onto the plane).
-fn frame(x: &[Vector3<f64>; 4]) -> (Matrix3<f64>, Vector3<f64>) {
+fn frame(x: &[Vector3<f64>; NODES]) -> (Matrix3<f64>, Vector3<f64>) {
     let (e, _) = frame_and_spin(x);
     (e, (x[0] + x[1] + x[2] + x[3]) / 4.0)
 }
@@ -97,7 +99,7 @@ fn frame(x: &[Vector3<f64>; 4]) -> (Matrix3<f64>, Vector3<f64>) {
 /// `d2 = x3 - x1`) and `a` the in-plane part of `(x1 - x0) + (x2 - x3)`:
 /// `omega . e1 = -e2 . delta n / |n|`, `omega . e2 = e1 . delta n / |n|`,
 /// `omega . e3 = (e2 . delta along - (along . e3) e2 . delta n / |n|) / |a|`.
-fn frame_and_spin(x: &[Vector3<f64>; 4]) -> (Matrix3<f64>, SMatrix<f64, 3, 12>) {
+fn frame_and_spin(x: &[Vector3<f64>; NODES]) -> (Matrix3<f64>, SMatrix<f64, 3, 12>) {
     let d1 = x[2] - x[0];
     let d2 = x[3] - x[1];
     let n = d1.cross(&d2);
@@ -111,7 +113,7 @@ fn frame_and_spin(x: &[Vector3<f64>; 4]) -> (Matrix3<f64>, SMatrix<f64, 3, 12>) 
     let e = Matrix3::from_columns(&[e1, e2, e3]);
     // Gradients of v . delta n over the corners: delta n = delta d1 x d2 +
     // d1 x delta d2, so v . delta n = delta d1 . (d2 x v) + delta d2 . (v x d1).
-    let normal_gradient = |v: &Vector3<f64>| -> [Vector3<f64>; 4] {
+    let normal_gradient = |v: &Vector3<f64>| -> [Vector3<f64>; NODES] {
         let g1 = d2.cross(v);
         let g2 = v.cross(&d1);
         [-g1, -g2, g1, g2]
@@ -121,7 +123,7 @@ fn frame_and_spin(x: &[Vector3<f64>; 4]) -> (Matrix3<f64>, SMatrix<f64, 3, 12>) 
     let tilt = along.dot(&e3);
     let along_sign = [-1.0, 1.0, 1.0, -1.0];
     let mut g = SMatrix::<f64, 3, 12>::zeros();
-    for j in 0..4 {
+    for j in 0..NODES {
         let r1 = -n2[j] / n_norm;
         let r2 = n1[j] / n_norm;
         let r3 = (e2 * along_sign[j] - n2[j] * (tilt / n_norm)) / a_norm;
@@ -171,7 +173,7 @@ fn element_state(
     mesh: &ShellMesh,
     e: usize,
     c: &Configuration,
-) -> ([Vector3<f64>; 4], [Rotation3<f64>; 4]) {
+) -> ([Vector3<f64>; NODES], [Rotation3<f64>; NODES]) {
     let nodes = mesh.elements[e];
     (
         nodes.map(|n| mesh.nodes[n] + c.displacement[n]),
@@ -183,32 +185,33 @@ fn element_state(
 /// translations and spins).
 fn deformation(
     reference: &Reference,
-    x: &[Vector3<f64>; 4],
-    r: &[Rotation3<f64>; 4],
+    x: &[Vector3<f64>; NODES],
+    r: &[Rotation3<f64>; NODES],
 ) -> (ElementVector, ElementMatrix) {
     let (e, g) = frame_and_spin(x);
     let c = (x[0] + x[1] + x[2] + x[3]) / 4.0;
     let et = e.transpose();
     let mut d = ElementVector::zeros();
     let mut jac = ElementMatrix::zeros();
-    for i in 0..4 {
+    for i in 0..NODES {
         let u = et * (x[i] - c) - reference.p0[i];
         let theta = log_so3(&(et * r[i].matrix() * reference.e0));
-        d.fixed_rows_mut::<3>(6 * i).copy_from(&u);
-        d.fixed_rows_mut::<3>(6 * i + 3).copy_from(&theta);
+        d.fixed_rows_mut::<3>(NODE_DOFS * i).copy_from(&u);
+        d.fixed_rows_mut::<3>(NODE_DOFS * i + 3).copy_from(&theta);
         let arm = et * spin(&(x[i] - c)) * g;
         let rot = tangent_inverse(&theta) * et;
         let rot_g = rot * g;
-        for j in 0..4 {
+        for j in 0..NODES {
             let own = if i == j { 1.0 } else { 0.0 };
             let translate = et * (own - 0.25);
             let mut block_u = translate;
             block_u += arm.fixed_view::<3, 3>(0, 3 * j);
-            jac.fixed_view_mut::<3, 3>(6 * i, 6 * j).copy_from(&block_u);
-            jac.fixed_view_mut::<3, 3>(6 * i + 3, 6 * j)
+            jac.fixed_view_mut::<3, 3>(NODE_DOFS * i, NODE_DOFS * j)
+                .copy_from(&block_u);
+            jac.fixed_view_mut::<3, 3>(NODE_DOFS * i + 3, NODE_DOFS * j)
                 .copy_from(&(-rot_g.fixed_view::<3, 3>(0, 3 * j)));
             if i == j {
-                jac.fixed_view_mut::<3, 3>(6 * i + 3, 6 * j + 3)
+                jac.fixed_view_mut::<3, 3>(NODE_DOFS * i + 3, NODE_DOFS * j + 3)
                     .copy_from(&rot);
             }
         }
@@ -231,13 +234,13 @@ struct PulledForce {
     /// Frame spin per corner translation.
     g: SMatrix<f64, 3, 12>,
     /// `E f_u_i` per corner.
-    pulled: [Vector3<f64>; 4],
+    pulled: [Vector3<f64>; NODES],
     /// `sum_i E f_u_i`.
     sum: Vector3<f64>,
     /// `sum_i (E f_u_i) x (x_i - c)`.
     a: Vector3<f64>,
     /// `s_i` per corner.
-    spin: [Vector3<f64>; 4],
+    spin: [Vector3<f64>; NODES],
     /// `sum_i s_i`.
     b: Vector3<f64>,
 }
@@ -245,8 +248,8 @@ struct PulledForce {
 impl PulledForce {
     fn new(
         reference: &Reference,
-        x: &[Vector3<f64>; 4],
-        r: &[Rotation3<f64>; 4],
+        x: &[Vector3<f64>; NODES],
+        r: &[Rotation3<f64>; NODES],
         f: &ElementVector,
     ) -> Self {
         let mut out = Self::with_spins(x, f, [Vector3::zeros(); 4]);
@@ -261,7 +264,11 @@ impl PulledForce {
     /// from the nodal rotations (no rotation logarithm: the translation
     /// columns of the tangent take them linearized, see
     /// [`Corotational::element`]).
-    fn with_spins(x: &[Vector3<f64>; 4], f: &ElementVector, spin: [Vector3<f64>; 4]) -> Self {
+    fn with_spins(
+        x: &[Vector3<f64>; NODES],
+        f: &ElementVector,
+        spin: [Vector3<f64>; NODES],
+    ) -> Self {
         let (e, g) = frame_and_spin(x);
         let c = (x[0] + x[1] + x[2] + x[3]) / 4.0;
         let mut out = Self {
@@ -274,7 +281,7 @@ impl PulledForce {
             b: spin[0] + spin[1] + spin[2] + spin[3],
         };
         for (i, x_i) in x.iter().enumerate() {
-            out.pulled[i] = e * f.fixed_rows::<3>(6 * i);
+            out.pulled[i] = e * f.fixed_rows::<3>(NODE_DOFS * i);
             out.sum += out.pulled[i];
             out.a += out.pulled[i].cross(&(x_i - c));
         }
@@ -290,18 +297,19 @@ impl PulledForce {
         i: usize,
     ) -> Vector3<f64> {
         let theta = log_so3(&(self.e.transpose() * r_i.matrix() * reference.e0));
-        self.e * (tangent_inverse(&theta).transpose() * f.fixed_rows::<3>(6 * i + 3))
+        self.e * (tangent_inverse(&theta).transpose() * f.fixed_rows::<3>(NODE_DOFS * i + 3))
     }
 
     /// `J^T f`.
     fn vector(&self) -> ElementVector {
         let mut out = ElementVector::zeros();
         let ab = self.a - self.b;
-        for j in 0..4 {
+        for j in 0..NODES {
             let t = self.pulled[j] - 0.25 * self.sum
                 + self.g.fixed_view::<3, 3>(0, 3 * j).transpose() * ab;
-            out.fixed_rows_mut::<3>(6 * j).copy_from(&t);
-            out.fixed_rows_mut::<3>(6 * j + 3).copy_from(&self.spin[j]);
+            out.fixed_rows_mut::<3>(NODE_DOFS * j).copy_from(&t);
+            out.fixed_rows_mut::<3>(NODE_DOFS * j + 3)
+                .copy_from(&self.spin[j]);
         }
         out
     }
@@ -310,11 +318,11 @@ impl PulledForce {
     /// rotation turned, everything else held).
     fn spin_change(&self, j: usize, ds: &Vector3<f64>) -> ElementVector {
         let mut out = ElementVector::zeros();
-        for k in 0..4 {
+        for k in 0..NODES {
             let t = -(self.g.fixed_view::<3, 3>(0, 3 * k).transpose() * ds);
-            out.fixed_rows_mut::<3>(6 * k).copy_from(&t);
+            out.fixed_rows_mut::<3>(NODE_DOFS * k).copy_from(&t);
         }
-        out.fixed_rows_mut::<3>(6 * j + 3).copy_from(ds);
+        out.fixed_rows_mut::<3>(NODE_DOFS * j + 3).copy_from(ds);
         out
     }
 }
@@ -389,8 +397,8 @@ impl Corotational {
         }
         let frame_turn = [0, 1, 2, 3].map(|i| -(turn[i] + spin(&pieces.spin[i])));
         let size = (x[2] - x[0]).norm().max((x[3] - x[1]).norm());
-        for col in 0..24 {
-            let (node, dof) = (col / 6, col % 6);
+        for col in 0..DOFS {
+            let (node, dof) = (col / NODE_DOFS, col % NODE_DOFS);
             let column = if dof < 3 {
                 let step = h * size;
                 let mut xp = x;
@@ -402,7 +410,7 @@ impl Corotational {
                 // A turned node moves no frame: only its own s_j changes.
                 pieces.spin_change(node, &turn[node].column(dof - 3).into_owned())
             };
-            for row in 0..24 {
+            for row in 0..DOFS {
                 tangent[(row, col)] += column[row];
             }
         }

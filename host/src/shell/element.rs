@@ -22,13 +22,29 @@ use nalgebra::{Matrix2, Matrix3, SMatrix, SVector, Vector3};
 
 use super::material::Section;
 
-/// 24 x 24 element matrix.
-pub type ElementMatrix = SMatrix<f64, 24, 24>;
-/// 24-vector of element DOFs.
-pub type ElementVector = SVector<f64, 24>;
+/// Corner nodes of an element.
+pub const NODES: usize = 4;
+/// Degrees of freedom of a node, `[u, v, w, theta_x, theta_y, theta_z]`;
+/// node `i`'s global DOFs are `NODE_DOFS * i + d`.
+pub const NODE_DOFS: usize = 6;
+/// Degrees of freedom of an element (24): corner `i`'s DOF `d` is local
+/// DOF `NODE_DOFS * i + d`.
+pub const DOFS: usize = NODES * NODE_DOFS;
+/// Entries of an element matrix (24 x 24 = 576), column-major: entry
+/// `(a, b)` is number `DOFS * b + a`.
+pub const MATRIX_ENTRIES: usize = DOFS * DOFS;
+
+/// The 3 x 3 blocks along an element matrix's side: a corner's
+/// translations, then its rotations, corner after corner.
+const BLOCKS: usize = DOFS / 3;
+
+/// [`DOFS`] x [`DOFS`] element matrix.
+pub type ElementMatrix = SMatrix<f64, DOFS, DOFS>;
+/// [`DOFS`]-vector of element DOFs.
+pub type ElementVector = SVector<f64, DOFS>;
 
 const GAUSS: [f64; 2] = [-0.577_350_269_189_625_8, 0.577_350_269_189_625_8];
-const CORNERS: [(f64, f64); 4] = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)];
+const CORNERS: [(f64, f64); NODES] = [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)];
 
 /// The element's plane: rotation rows `e1, e2, e3` (global -> local) and
 /// the corners' in-plane coordinates (m).
@@ -37,14 +53,14 @@ pub struct Frame {
     /// Rows are the local axes in global coordinates.
     pub rotation: Matrix3<f64>,
     /// In-plane corner coordinates.
-    pub corners: [(f64, f64); 4],
+    pub corners: [(f64, f64); NODES],
     /// Element area, m^2.
     pub area: f64,
 }
 
 impl Frame {
     /// The mean plane of four corners (counter-clockwise seen from +e3).
-    pub fn new(x: &[Vector3<f64>; 4]) -> Self {
+    pub fn new(x: &[Vector3<f64>; NODES]) -> Self {
         let d1 = x[2] - x[0];
         let d2 = x[3] - x[1];
         let e3 = d1.cross(&d2).normalize();
@@ -65,7 +81,7 @@ impl Frame {
     }
 
     /// Shape function values and natural derivatives at `(xi, eta)`.
-    fn shape(xi: f64, eta: f64) -> ([f64; 4], [f64; 4], [f64; 4]) {
+    fn shape(xi: f64, eta: f64) -> ([f64; NODES], [f64; NODES], [f64; NODES]) {
         let mut n = [0.0; 4];
         let mut dxi = [0.0; 4];
         let mut deta = [0.0; 4];
@@ -78,9 +94,9 @@ impl Frame {
     }
 
     /// `J = [[x_xi, y_xi], [x_eta, y_eta]]`.
-    fn jacobian(&self, dxi: &[f64; 4], deta: &[f64; 4]) -> Matrix2<f64> {
+    fn jacobian(&self, dxi: &[f64; NODES], deta: &[f64; NODES]) -> Matrix2<f64> {
         let mut j = Matrix2::zeros();
-        for i in 0..4 {
+        for i in 0..NODES {
             let (x, y) = self.corners[i];
             j[(0, 0)] += dxi[i] * x;
             j[(0, 1)] += dxi[i] * y;
@@ -97,7 +113,7 @@ impl Frame {
         &self,
         xi: f64,
         eta: f64,
-    ) -> Option<(f64, Matrix2<f64>, [nalgebra::Vector2<f64>; 4])> {
+    ) -> Option<(f64, Matrix2<f64>, [nalgebra::Vector2<f64>; NODES])> {
         let (_, dxi, deta) = Self::shape(xi, eta);
         let j = self.jacobian(&dxi, &deta);
         let j_inv = j.try_inverse()?;
@@ -108,7 +124,7 @@ impl Frame {
     /// 24 x 24 rotation of the element DOFs, global -> local.
     pub fn transformation(&self) -> ElementMatrix {
         let mut t = ElementMatrix::zeros();
-        for block in 0..8 {
+        for block in 0..BLOCKS {
             t.fixed_view_mut::<3, 3>(3 * block, 3 * block)
                 .copy_from(&self.rotation);
         }
@@ -118,7 +134,7 @@ impl Frame {
 
 /// Index of local DOF `d` (0..6) of corner `i`.
 const fn dof(i: usize, d: usize) -> usize {
-    6 * i + d
+    NODE_DOFS * i + d
 }
 
 fn mat3(a: &[[f64; 3]; 3]) -> Matrix3<f64> {
@@ -136,7 +152,7 @@ fn local_stiffness(frame: &Frame, section: &Section) -> ElementMatrix {
     membrane(frame, &mat3(&section.membrane), &mut k);
     plate(frame, section, &mut k);
     let drilling = 1e-3 * section.membrane[2][2] * frame.area;
-    for i in 0..4 {
+    for i in 0..NODES {
         k[(dof(i, 5), dof(i, 5))] += drilling;
     }
     k
@@ -183,8 +199,8 @@ fn membrane(frame: &Frame, a: &Matrix3<f64>, k: &mut ElementMatrix) {
         Some(inv) => kcc - kci * inv * kci.transpose(),
         None => kcc,
     };
-    for i in 0..4 {
-        for j in 0..4 {
+    for i in 0..NODES {
+        for j in 0..NODES {
             for (a, da) in [(0, 0), (1, 1)] {
                 for (b, db) in [(0, 0), (1, 1)] {
                     k[(dof(i, da), dof(j, db))] += condensed[(2 * i + a, 2 * j + b)];
@@ -200,7 +216,7 @@ fn covariant_shear(frame: &Frame, xi: f64, eta: f64) -> SMatrix<f64, 2, 12> {
     let (n, dxi, deta) = Frame::shape(xi, eta);
     let j = frame.jacobian(&dxi, &deta);
     let mut g = SMatrix::<f64, 2, 12>::zeros();
-    for i in 0..4 {
+    for i in 0..NODES {
         for (row, dn) in [(0, dxi[i]), (1, deta[i])] {
             let (x_s, y_s) = (j[(row, 0)], j[(row, 1)]);
             g[(row, 3 * i)] = dn;
@@ -252,8 +268,8 @@ fn plate(frame: &Frame, section: &Section, k: &mut ElementMatrix) {
             kp += (bb.transpose() * d * bb + bs.transpose() * bs * section.shear) * det;
         }
     }
-    for i in 0..4 {
-        for j in 0..4 {
+    for i in 0..NODES {
+        for j in 0..NODES {
             for a in 0..3 {
                 for b in 0..3 {
                     k[(dof(i, 2 + a), dof(j, 2 + b))] += kp[(3 * i + a, 3 * j + b)];
@@ -266,14 +282,14 @@ fn plate(frame: &Frame, section: &Section, k: &mut ElementMatrix) {
 /// The element's global stiffness matrix (N/m, N, N m blocks): `T^T K T`
 /// with `T` block-diagonal, done 3 x 3 block by block (64 small products
 /// instead of two dense 24 x 24 ones).
-pub fn stiffness(x: &[Vector3<f64>; 4], section: &Section) -> ElementMatrix {
+pub fn stiffness(x: &[Vector3<f64>; NODES], section: &Section) -> ElementMatrix {
     let frame = Frame::new(x);
     let local = local_stiffness(&frame, section);
     let r = frame.rotation;
     let rt = r.transpose();
     let mut k = ElementMatrix::zeros();
-    for bi in 0..8 {
-        for bj in 0..8 {
+    for bi in 0..BLOCKS {
+        for bj in 0..BLOCKS {
             let block: Matrix3<f64> = local.fixed_view::<3, 3>(3 * bi, 3 * bj).into_owned();
             k.fixed_view_mut::<3, 3>(3 * bi, 3 * bj)
                 .copy_from(&(rt * block * r));
@@ -285,10 +301,10 @@ pub fn stiffness(x: &[Vector3<f64>; 4], section: &Section) -> ElementMatrix {
 /// The element's lumped mass: a quarter of its mass on each corner's
 /// translations and of its rotary inertia on each corner's rotations (kg,
 /// kg m^2; diagonal, the same in any axes).
-pub fn lumped_mass(x: &[Vector3<f64>; 4], section: &Section) -> ElementVector {
+pub fn lumped_mass(x: &[Vector3<f64>; NODES], section: &Section) -> ElementVector {
     let area = Frame::new(x).area;
     let mut m = ElementVector::zeros();
-    for i in 0..4 {
+    for i in 0..NODES {
         for d in 0..3 {
             m[dof(i, d)] = 0.25 * section.mass * area;
             m[dof(i, 3 + d)] = 0.25 * section.rotary * area;
@@ -299,7 +315,7 @@ pub fn lumped_mass(x: &[Vector3<f64>; 4], section: &Section) -> ElementVector {
 
 /// Consistent nodal forces of a uniform pressure `p` (Pa, along the
 /// element normal `e3`), in global axes (N).
-pub fn pressure_load(x: &[Vector3<f64>; 4], p: f64) -> ElementVector {
+pub fn pressure_load(x: &[Vector3<f64>; NODES], p: f64) -> ElementVector {
     let frame = Frame::new(x);
     let normal = frame.rotation.row(2).transpose();
     let mut f = ElementVector::zeros();
@@ -307,7 +323,7 @@ pub fn pressure_load(x: &[Vector3<f64>; 4], p: f64) -> ElementVector {
         for &eta in &GAUSS {
             let (n, dxi, deta) = Frame::shape(xi, eta);
             let det = frame.jacobian(&dxi, &deta).determinant();
-            for i in 0..4 {
+            for i in 0..NODES {
                 for d in 0..3 {
                     f[dof(i, d)] += n[i] * p * det * normal[d];
                 }

@@ -9,6 +9,7 @@ use std::collections::HashMap;
 
 use nalgebra::Vector3;
 
+use super::element::NODES;
 use super::material::{Layer, Section};
 use super::mesh::{MeshError, ShellMesh};
 
@@ -101,88 +102,137 @@ fn fields(line: &str) -> Vec<String> {
 
 /// Reads NASTRAN bulk data.
 pub fn nastran(text: &str) -> Result<ImportedMesh, ImportError> {
-    let mut grids: Vec<(i64, Vector3<f64>)> = Vec::new();
-    let mut shells: Vec<(usize, i64, i64, Vec<i64>)> = Vec::new();
-    let mut pshell: HashMap<i64, (i64, f64)> = HashMap::new();
-    let mut mat1: HashMap<i64, (f64, f64, f64)> = HashMap::new();
+    let mut bulk = Bulk::default();
     for (index, raw) in text.lines().enumerate() {
-        let line = index + 1;
         let raw = raw.split('$').next().unwrap_or("");
         if raw.trim().is_empty() {
             continue;
         }
-        let f = fields(raw);
-        let card = f[0].to_ascii_uppercase();
-        let number = |i: usize| -> Result<f64, ImportError> {
-            let text = f.get(i).map(String::as_str).unwrap_or("");
-            nastran_real(text).ok_or_else(|| ImportError::Number {
-                line,
+        let fields = fields(raw);
+        bulk.read(&Card::new(index + 1, &fields))?;
+    }
+    bulk.into_mesh()
+}
+
+/// One bulk-data line's fields, with the readers of its numbers.
+struct Card<'f> {
+    /// Line (1-based).
+    line: usize,
+    /// The card's name, upper case.
+    name: String,
+    /// Its fields, the name first.
+    fields: &'f [String],
+}
+
+impl<'f> Card<'f> {
+    /// The card of `fields` on `line`.
+    fn new(line: usize, fields: &'f [String]) -> Self {
+        Self {
+            line,
+            name: fields[0].to_ascii_uppercase(),
+            fields,
+        }
+    }
+
+    /// Field `i` as a real (an empty or missing field is not one).
+    fn number(&self, i: usize) -> Result<f64, ImportError> {
+        let text = self.fields.get(i).map(String::as_str).unwrap_or("");
+        nastran_real(text).ok_or_else(|| ImportError::Number {
+            line: self.line,
+            field: i,
+            text: text.to_string(),
+        })
+    }
+
+    /// Field `i` as an integer.
+    fn integer(&self, i: usize) -> Result<i64, ImportError> {
+        let v = self.number(i)?;
+        if v.fract() == 0.0 && v.abs() < 1e15 {
+            Ok(v as i64)
+        } else {
+            Err(ImportError::Number {
+                line: self.line,
                 field: i,
-                text: text.to_string(),
+                text: self.fields[i].clone(),
             })
-        };
-        let integer = |i: usize| -> Result<i64, ImportError> {
-            let v = number(i)?;
-            if v.fract() == 0.0 && v.abs() < 1e15 {
-                Ok(v as i64)
-            } else {
-                Err(ImportError::Number {
-                    line,
-                    field: i,
-                    text: f[i].clone(),
-                })
-            }
-        };
-        let need = |n: usize| {
-            if f.len() <= n {
-                Err(ImportError::Short {
-                    line,
-                    card: card.clone(),
-                    needed: n,
-                })
-            } else {
-                Ok(())
-            }
-        };
-        match card.as_str() {
+        }
+    }
+
+    /// Whether the card has field `n`.
+    fn need(&self, n: usize) -> Result<(), ImportError> {
+        if self.fields.len() <= n {
+            Err(ImportError::Short {
+                line: self.line,
+                card: self.name.clone(),
+                needed: n,
+            })
+        } else {
+            Ok(())
+        }
+    }
+}
+
+/// The cards read so far.
+#[derive(Default)]
+struct Bulk {
+    /// GRID: id and position.
+    grids: Vec<(i64, Vector3<f64>)>,
+    /// CQUAD4 and CTRIA3: line, element id, PSHELL id, GRID ids.
+    shells: Vec<(usize, i64, i64, Vec<i64>)>,
+    /// PSHELL by id: MAT1 id and thickness.
+    pshell: HashMap<i64, (i64, f64)>,
+    /// MAT1 by id: Young's modulus, Poisson's ratio, density.
+    mat1: HashMap<i64, (f64, f64, f64)>,
+}
+
+impl Bulk {
+    /// Takes in one card (others than GRID, CQUAD4, CTRIA3, PSHELL and
+    /// MAT1 are skipped; large-field and continuation cards refused).
+    fn read(&mut self, card: &Card<'_>) -> Result<(), ImportError> {
+        let (line, f) = (card.line, card.fields);
+        match card.name.as_str() {
             "GRID" => {
-                need(5)?;
-                if !f[2].is_empty() && integer(2)? != 0 {
+                card.need(5)?;
+                if !f[2].is_empty() && card.integer(2)? != 0 {
                     return Err(ImportError::Unsupported {
                         line,
                         message: "GRID in a coordinate system other than the basic one".into(),
                     });
                 }
-                grids.push((
-                    integer(1)?,
-                    Vector3::new(number(3)?, number(4)?, number(5)?),
+                self.grids.push((
+                    card.integer(1)?,
+                    Vector3::new(card.number(3)?, card.number(4)?, card.number(5)?),
                 ));
             }
             "CQUAD4" | "CTRIA3" => {
-                let corners = if card == "CQUAD4" { 4 } else { 3 };
-                need(2 + corners)?;
-                let nodes = (3..3 + corners).map(integer).collect::<Result<_, _>>()?;
-                shells.push((line, integer(1)?, integer(2)?, nodes));
+                let corners = if card.name == "CQUAD4" { 4 } else { 3 };
+                card.need(2 + corners)?;
+                let nodes = (3..3 + corners)
+                    .map(|i| card.integer(i))
+                    .collect::<Result<_, _>>()?;
+                self.shells
+                    .push((line, card.integer(1)?, card.integer(2)?, nodes));
             }
             "PSHELL" => {
-                need(3)?;
-                pshell.insert(integer(1)?, (integer(2)?, number(3)?));
+                card.need(3)?;
+                self.pshell
+                    .insert(card.integer(1)?, (card.integer(2)?, card.number(3)?));
             }
             "MAT1" => {
-                need(4)?;
-                let e = number(2)?;
+                card.need(4)?;
+                let e = card.number(2)?;
                 let nu = if f[4].is_empty() {
                     // NASTRAN: nu from E and G when only those are given.
-                    e / (2.0 * number(3)?) - 1.0
+                    e / (2.0 * card.number(3)?) - 1.0
                 } else {
-                    number(4)?
+                    card.number(4)?
                 };
                 let rho = if f.len() > 5 && !f[5].is_empty() {
-                    number(5)?
+                    card.number(5)?
                 } else {
                     0.0
                 };
-                mat1.insert(integer(1)?, (e, nu, rho));
+                self.mat1.insert(card.integer(1)?, (e, nu, rho));
             }
             c if c.ends_with('*') || c.starts_with('+') || c.starts_with('*') => {
                 return Err(ImportError::Unsupported {
@@ -192,48 +242,60 @@ pub fn nastran(text: &str) -> Result<ImportedMesh, ImportError> {
             }
             _ => {}
         }
+        Ok(())
     }
-    let index: HashMap<i64, usize> = grids.iter().enumerate().map(|(i, g)| (g.0, i)).collect();
-    let mut elements = Vec::with_capacity(shells.len());
-    let mut sections = Vec::with_capacity(shells.len());
-    let mut element_ids = Vec::with_capacity(shells.len());
-    for (line, eid, pid, nodes) in &shells {
-        let mut corners = [0usize; 4];
-        for (k, id) in nodes.iter().enumerate() {
-            corners[k] = *index.get(id).ok_or(ImportError::Undefined {
+
+    /// The mesh of the cards read, each element with the section of its
+    /// PSHELL and MAT1.
+    fn into_mesh(self) -> Result<ImportedMesh, ImportError> {
+        let Self {
+            grids,
+            shells,
+            pshell,
+            mat1,
+        } = self;
+        let index: HashMap<i64, usize> = grids.iter().enumerate().map(|(i, g)| (g.0, i)).collect();
+        let mut elements = Vec::with_capacity(shells.len());
+        let mut sections = Vec::with_capacity(shells.len());
+        let mut element_ids = Vec::with_capacity(shells.len());
+        for (line, eid, pid, nodes) in &shells {
+            let mut corners = [0usize; NODES];
+            for (k, id) in nodes.iter().enumerate() {
+                corners[k] = *index.get(id).ok_or(ImportError::Undefined {
+                    line: *line,
+                    what: "GRID",
+                    id: *id,
+                })?;
+            }
+            if nodes.len() == 3 {
+                corners[3] = corners[2];
+            }
+            let &(mid, t) = pshell.get(pid).ok_or(ImportError::Undefined {
                 line: *line,
-                what: "GRID",
-                id: *id,
+                what: "PSHELL",
+                id: *pid,
             })?;
+            let &(young, poisson, density) = mat1.get(&mid).ok_or(ImportError::Undefined {
+                line: *line,
+                what: "MAT1",
+                id: mid,
+            })?;
+            elements.push(corners);
+            element_ids.push(*eid);
+            sections.push(Section::single(&Layer {
+                young,
+                poisson,
+                density,
+                thickness: t,
+            }));
         }
-        if nodes.len() == 3 {
-            corners[3] = corners[2];
-        }
-        let &(mid, t) = pshell.get(pid).ok_or(ImportError::Undefined {
-            line: *line,
-            what: "PSHELL",
-            id: *pid,
-        })?;
-        let &(young, poisson, density) = mat1.get(&mid).ok_or(ImportError::Undefined {
-            line: *line,
-            what: "MAT1",
-            id: mid,
-        })?;
-        elements.push(corners);
-        element_ids.push(*eid);
-        sections.push(Section::single(&Layer {
-            young,
-            poisson,
-            density,
-            thickness: t,
-        }));
+        Ok(ImportedMesh {
+            mesh: ShellMesh::new(grids.iter().map(|g| g.1).collect(), elements)?,
+            sections,
+            node_ids: grids.iter().map(|g| g.0).collect(),
+            element_ids,
+        })
     }
-    Ok(ImportedMesh {
-        mesh: ShellMesh::new(grids.iter().map(|g| g.1).collect(), elements)?,
-        sections,
-        node_ids: grids.iter().map(|g| g.0).collect(),
-        element_ids,
-    })
 }
 
 /// Reads a Gmsh 4.x ASCII mesh; every quadrangle (type 3) and triangle
@@ -326,7 +388,7 @@ pub fn gmsh(text: &str, default: Section) -> Result<ImportedMesh, ImportError> {
             if r.len() < 1 + corners {
                 return Err(short(l));
             }
-            let mut c = [0usize; 4];
+            let mut c = [0usize; NODES];
             for j in 0..corners {
                 let id = number(l, j + 1, r[j + 1])? as i64;
                 c[j] = *index.get(&id).ok_or(ImportError::Undefined {

@@ -3,6 +3,8 @@
 
 use nalgebra::Vector3;
 
+use super::element::{NODES, NODE_DOFS};
+
 /// Why a mesh is refused.
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum MeshError {
@@ -33,12 +35,12 @@ pub struct ShellMesh {
     /// Node positions, m.
     pub nodes: Vec<Vector3<f64>>,
     /// Corner node indices of each element.
-    pub elements: Vec<[usize; 4]>,
+    pub elements: Vec<[usize; NODES]>,
 }
 
 impl ShellMesh {
     /// A mesh after checking indices, finiteness and element areas.
-    pub fn new(nodes: Vec<Vector3<f64>>, elements: Vec<[usize; 4]>) -> Result<Self, MeshError> {
+    pub fn new(nodes: Vec<Vector3<f64>>, elements: Vec<[usize; NODES]>) -> Result<Self, MeshError> {
         if let Some(i) = nodes.iter().position(|p| !p.iter().all(|v| v.is_finite())) {
             return Err(MeshError::NotFinite(i));
         }
@@ -61,7 +63,7 @@ impl ShellMesh {
     }
 
     /// Corner positions of element `e`.
-    pub fn corners(&self, e: usize) -> [Vector3<f64>; 4] {
+    pub fn corners(&self, e: usize) -> [Vector3<f64>; NODES] {
         self.elements[e].map(|n| self.nodes[n])
     }
 
@@ -75,7 +77,7 @@ impl ShellMesh {
 
     /// Number of degrees of freedom (six a node).
     pub fn dofs(&self) -> usize {
-        6 * self.nodes.len()
+        NODE_DOFS * self.nodes.len()
     }
 
     /// A structured mesh of the parametric square `[0, 1]^2` mapped by

@@ -25,6 +25,7 @@ use nalgebra::{Rotation3, Vector3};
 use super::assembly::{self, AssemblyError};
 use super::corotational::{Configuration, Corotational};
 use super::dynamics::GeneralizedAlpha;
+use super::element::NODE_DOFS;
 use super::material::Section;
 use super::mesh::ShellMesh;
 use super::nonlinear::{internal_force, summed_forces, NonlinearError, TangentWorkspace};
@@ -220,7 +221,6 @@ impl<'a> NonlinearTransient<'a> {
         h: f64,
         max_iterations: usize,
     ) -> Result<usize, NonlinearError> {
-        let (am, af, gamma, beta) = self.settings.parameters();
         let n = self.mesh.dofs();
         if load.len() != n {
             return Err(AssemblyError::Length {
@@ -229,8 +229,51 @@ impl<'a> NonlinearTransient<'a> {
             }
             .into());
         }
-        let map = self.structure.map();
-        let old = state.clone();
+        let step = AlphaStep::new(&self.settings, h, state.clone());
+        let mut iterate = self.predict(&step, prescribed);
+        let mut last_relative = f64::NAN;
+        let mut last_norm = f64::INFINITY;
+        let mut keep =
+            self.keep_factor_below > 0.0 && workspace.factor_with_shift(step.shift).is_some();
+        for iteration in 1..=max_iterations {
+            let acc = step.acceleration(&iterate.algorithmic);
+            let balance = self.balance(workspace, &iterate.configuration, &acc, load, keep);
+            last_relative = balance.norm / balance.scale;
+            if balance.norm <= self.tolerance * balance.scale {
+                step.accept(state, iterate, acc);
+                return Ok(iteration);
+            }
+            // A kept factorization that did not cut the residual enough
+            // (the step's first iteration always goes on it): a fresh
+            // tangent at this iterate.
+            if keep && iteration > 1 && balance.norm > CHORD_RATE * last_norm {
+                keep = false;
+                self.elements.responses_into(
+                    self.mesh,
+                    &iterate.configuration,
+                    &mut workspace.responses,
+                );
+            }
+            last_norm = balance.norm;
+            self.correct(workspace, &step, keep, &balance.free, &mut iterate)?;
+            // Near the solution the next iteration keeps this factor.
+            keep = last_relative < self.keep_factor_below;
+        }
+        Err(NonlinearError::StepNoConvergence {
+            step: (state.time / h).round() as usize + 1,
+            time: state.time + h,
+            iterations: max_iterations,
+            residual: last_relative,
+        })
+    }
+
+    /// Where Newton starts the step: the predictor's algorithmic
+    /// accelerations, with the prescribed nodes' the ones that reach their
+    /// prescribed places, and the configuration they give.
+    fn predict(&self, step: &AlphaStep, prescribed: &Prescribed) -> Iterate {
+        let (am, af, beta, h) = (step.am, step.af, step.beta, step.h);
+        let old = &step.old;
+        let n = self.mesh.dofs();
         let mut a_new: Vec<f64> = match self.predictor {
             // a_{n+1} from acc_n (acc_{n+1} = acc_n).
             Predictor::ConstantAcceleration => (0..n)
@@ -245,14 +288,6 @@ impl<'a> NonlinearTransient<'a> {
                 .map(|i| -(old.velocity[i] + h * (0.5 - beta) * old.algorithmic[i]) / (h * beta))
                 .collect(),
         };
-        let increment = |a_new: &[f64]| -> Vec<f64> {
-            (0..n)
-                .map(|i| {
-                    h * old.velocity[i]
-                        + h * h * ((0.5 - beta) * old.algorithmic[i] + beta * a_new[i])
-                })
-                .collect()
-        };
         // Prescribed nodes: their algorithmic acceleration is the one that
         // reaches the prescribed place.
         for &(node, translation, rotation) in prescribed {
@@ -261,8 +296,8 @@ impl<'a> NonlinearTransient<'a> {
                 (rotation * old.configuration.rotation[node].inverse()).scaled_axis();
             for c in 0..3 {
                 for (dof, moved) in [
-                    (6 * node + c, step_translation[c]),
-                    (6 * node + 3 + c, step_rotation[c]),
+                    (NODE_DOFS * node + c, step_translation[c]),
+                    (NODE_DOFS * node + 3 + c, step_rotation[c]),
                 ] {
                     a_new[dof] = (moved
                         - h * old.velocity[dof]
@@ -271,106 +306,190 @@ impl<'a> NonlinearTransient<'a> {
                 }
             }
         }
-        let mut config = old.configuration.clone();
-        config.update(&increment(&a_new));
+        let mut configuration = old.configuration.clone();
+        configuration.update(&step.increment(&a_new));
         for &(node, translation, rotation) in prescribed {
-            config.displacement[node] = translation;
-            config.rotation[node] = rotation;
+            configuration.displacement[node] = translation;
+            configuration.rotation[node] = rotation;
         }
+        Iterate {
+            configuration,
+            algorithmic: a_new,
+        }
+    }
+
+    /// The out-of-balance force of `configuration` moving with the true
+    /// accelerations `acc` under `load`, over the free DOFs, its norm and
+    /// the scale it is measured against. With a `kept` factorization only
+    /// the element forces are computed, else the full element responses
+    /// (into `workspace`).
+    fn balance(
+        &self,
+        workspace: &mut TangentWorkspace<'_>,
+        configuration: &Configuration,
+        acc: &[f64],
+        load: &[f64],
+        kept: bool,
+    ) -> Balance {
+        let n = self.mesh.dofs();
+        let map = self.structure.map();
+        let internal = if kept {
+            self.elements
+                .forces_into(self.mesh, configuration, &mut workspace.forces);
+            summed_forces(self.mesh, workspace.forces.iter())
+        } else {
+            self.elements
+                .responses_into(self.mesh, configuration, &mut workspace.responses);
+            internal_force(self.mesh, &workspace.responses)
+        };
+        let inertia: Vec<f64> = (0..n).map(|i| self.mass[i] * acc[i]).collect();
+        let residual: Vec<f64> = (0..n).map(|i| load[i] - inertia[i] - internal[i]).collect();
+        let free = map.restrict(&residual);
+        let norm = free_norm(&free);
+        // Relative to the largest of the forces in balance.
+        let scale = free_norm(&map.restrict(load))
+            .max(free_norm(&map.restrict(&inertia)))
+            .max(free_norm(&map.restrict(&internal)))
+            .max(self.reference_force)
+            .max(f64::MIN_POSITIVE);
+        Balance { free, norm, scale }
+    }
+
+    /// A Newton correction of `iterate` against the out-of-balance force
+    /// `free`: on the `keep`-t factorization of the iteration matrix, or a
+    /// fresh one.
+    fn correct<'w>(
+        &'w self,
+        workspace: &mut TangentWorkspace<'w>,
+        step: &AlphaStep,
+        keep: bool,
+        free: &[f64],
+        iterate: &mut Iterate,
+    ) -> Result<(), NonlinearError> {
+        let (shift, beta, h) = (step.shift, step.beta, step.h);
+        let map = self.structure.map();
+        let factor = match workspace.factor_with_shift(shift).filter(|_| keep) {
+            Some(factor) => factor,
+            None => {
+                let inertia_diagonal: Vec<f64> =
+                    map.restrict(&self.mass).iter().map(|m| shift * m).collect();
+                workspace.factor_shifted(shift, &inertia_diagonal, || {
+                    self.elements
+                        .material_responses(self.mesh, &iterate.configuration)
+                })?
+            }
+        };
+        let mut dq_global = factor.solve(&[map.expand(free)])?;
+        // A Newton correction that turns some node by more than
+        // MAX_TURN is shortened to it: far from the solution (a thin
+        // flap snapping) the full correction overshoots into
+        // configurations the co-rotational frames cannot follow.
+        let turn = dq_global
+            .chunks_exact(NODE_DOFS)
+            .map(|d| Vector3::new(d[3], d[4], d[5]).norm())
+            .fold(0.0f64, f64::max);
+        if turn > MAX_TURN {
+            let cut = MAX_TURN / turn;
+            dq_global.iter_mut().for_each(|d| *d *= cut);
+        }
+        iterate.configuration.update(&dq_global);
+        for (i, (a, dq)) in iterate.algorithmic.iter_mut().zip(&dq_global).enumerate() {
+            if map.free(i).is_some() {
+                *a += dq / (beta * h * h);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// One step of the generalized-alpha integrator: its parameters, length
+/// and the state it starts from.
+struct AlphaStep {
+    am: f64,
+    af: f64,
+    gamma: f64,
+    beta: f64,
+    /// Step length, s.
+    h: f64,
+    /// The iteration matrix's inertia shift, d acc / d a over
+    /// `beta h^2`, s^-2.
+    shift: f64,
+    /// The state at the step's start.
+    old: DynamicState,
+}
+
+impl AlphaStep {
+    /// A step of length `h` from `old`.
+    fn new(settings: &GeneralizedAlpha, h: f64, old: DynamicState) -> Self {
+        let (am, af, gamma, beta) = settings.parameters();
         // d acc / d a and d q / d a.
         let acc_per_a = (1.0 - am) / (1.0 - af);
         let shift = acc_per_a / (beta * h * h);
-        let mut last_relative = f64::NAN;
-        let mut last_norm = f64::INFINITY;
-        let mut keep = self.keep_factor_below > 0.0 && workspace.factor_with_shift(shift).is_some();
-        for iteration in 1..=max_iterations {
-            let acc: Vec<f64> = (0..n)
-                .map(|i| {
-                    (((1.0 - am) * a_new[i] + am * old.algorithmic[i]) - af * old.acceleration[i])
-                        / (1.0 - af)
-                })
-                .collect();
-            let internal = if keep {
-                self.elements
-                    .forces_into(self.mesh, &config, &mut workspace.forces);
-                summed_forces(self.mesh, workspace.forces.iter())
-            } else {
-                self.elements
-                    .responses_into(self.mesh, &config, &mut workspace.responses);
-                internal_force(self.mesh, &workspace.responses)
-            };
-            let inertia: Vec<f64> = (0..n).map(|i| self.mass[i] * acc[i]).collect();
-            let residual: Vec<f64> = (0..n).map(|i| load[i] - inertia[i] - internal[i]).collect();
-            let free = map.restrict(&residual);
-            let norm = free_norm(&free);
-            // Relative to the largest of the forces in balance.
-            let scale = free_norm(&map.restrict(load))
-                .max(free_norm(&map.restrict(&inertia)))
-                .max(free_norm(&map.restrict(&internal)))
-                .max(self.reference_force)
-                .max(f64::MIN_POSITIVE);
-            last_relative = norm / scale;
-            if norm <= self.tolerance * scale {
-                state.time += h;
-                state.velocity = (0..n)
-                    .map(|i| {
-                        old.velocity[i]
-                            + h * ((1.0 - gamma) * old.algorithmic[i] + gamma * a_new[i])
-                    })
-                    .collect();
-                state.acceleration = acc;
-                state.algorithmic = a_new;
-                state.configuration = config;
-                return Ok(iteration);
-            }
-            // A kept factorization that did not cut the residual enough
-            // (the step's first iteration always goes on it): a fresh
-            // tangent at this iterate.
-            if keep && iteration > 1 && norm > CHORD_RATE * last_norm {
-                keep = false;
-                self.elements
-                    .responses_into(self.mesh, &config, &mut workspace.responses);
-            }
-            last_norm = norm;
-            let factor = match workspace.factor_with_shift(shift).filter(|_| keep) {
-                Some(factor) => factor,
-                None => {
-                    let inertia_diagonal: Vec<f64> =
-                        map.restrict(&self.mass).iter().map(|m| shift * m).collect();
-                    workspace.factor_shifted(shift, &inertia_diagonal, || {
-                        self.elements.material_responses(self.mesh, &config)
-                    })?
-                }
-            };
-            let mut dq_global = factor.solve(&[map.expand(&free)])?;
-            // A Newton correction that turns some node by more than
-            // MAX_TURN is shortened to it: far from the solution (a thin
-            // flap snapping) the full correction overshoots into
-            // configurations the co-rotational frames cannot follow.
-            let turn = dq_global
-                .chunks_exact(6)
-                .map(|d| Vector3::new(d[3], d[4], d[5]).norm())
-                .fold(0.0f64, f64::max);
-            if turn > MAX_TURN {
-                let cut = MAX_TURN / turn;
-                dq_global.iter_mut().for_each(|d| *d *= cut);
-            }
-            config.update(&dq_global);
-            for i in 0..n {
-                if map.free(i).is_some() {
-                    a_new[i] += dq_global[i] / (beta * h * h);
-                }
-            }
-            // Near the solution the next iteration keeps this factor.
-            keep = last_relative < self.keep_factor_below;
+        Self {
+            am,
+            af,
+            gamma,
+            beta,
+            h,
+            shift,
+            old,
         }
-        Err(NonlinearError::StepNoConvergence {
-            step: (state.time / h).round() as usize + 1,
-            time: state.time + h,
-            iterations: max_iterations,
-            residual: last_relative,
-        })
     }
+
+    /// The configuration increment over the step for the algorithmic
+    /// accelerations `a_new`.
+    fn increment(&self, a_new: &[f64]) -> Vec<f64> {
+        let (beta, h, old) = (self.beta, self.h, &self.old);
+        (0..a_new.len())
+            .map(|i| {
+                h * old.velocity[i] + h * h * ((0.5 - beta) * old.algorithmic[i] + beta * a_new[i])
+            })
+            .collect()
+    }
+
+    /// The true accelerations at the step's end for the algorithmic
+    /// accelerations `a_new`.
+    fn acceleration(&self, a_new: &[f64]) -> Vec<f64> {
+        let (am, af, old) = (self.am, self.af, &self.old);
+        (0..a_new.len())
+            .map(|i| {
+                (((1.0 - am) * a_new[i] + am * old.algorithmic[i]) - af * old.acceleration[i])
+                    / (1.0 - af)
+            })
+            .collect()
+    }
+
+    /// Ends the step in `state` at the converged `iterate` with the true
+    /// accelerations `acc`.
+    fn accept(&self, state: &mut DynamicState, iterate: Iterate, acc: Vec<f64>) {
+        let (gamma, h, old) = (self.gamma, self.h, &self.old);
+        let a_new = iterate.algorithmic;
+        state.time += h;
+        state.velocity = (0..a_new.len())
+            .map(|i| old.velocity[i] + h * ((1.0 - gamma) * old.algorithmic[i] + gamma * a_new[i]))
+            .collect();
+        state.acceleration = acc;
+        state.algorithmic = a_new;
+        state.configuration = iterate.configuration;
+    }
+}
+
+/// A Newton iterate of a step: the configuration and the algorithmic
+/// accelerations over all global DOFs.
+struct Iterate {
+    configuration: Configuration,
+    algorithmic: Vec<f64>,
+}
+
+/// The out-of-balance force of an iterate.
+struct Balance {
+    /// Over the free DOFs, N (N m for rotations).
+    free: Vec<f64>,
+    /// Its norm.
+    norm: f64,
+    /// The norm it is measured against: the largest of the forces in
+    /// balance.
+    scale: f64,
 }
 
 /// Nodal forces of a pressure per element acting on the deformed surface

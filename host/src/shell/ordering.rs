@@ -18,6 +18,7 @@
 //! made of 6 x 6 node blocks); fully held nodes take no part.
 
 use super::assembly::{AssemblyError, DofMap};
+use super::element::NODE_DOFS;
 use super::mesh::ShellMesh;
 
 /// Subsets of at most this many nodes are not dissected further (their
@@ -37,7 +38,7 @@ pub fn nested_dissection(mesh: &ShellMesh, map: &DofMap) -> Result<Vec<usize>, A
             expected: mesh.dofs(),
         });
     }
-    let free_of = |node: usize| (0..6).filter_map(move |c| map.free(6 * node + c));
+    let free_of = |node: usize| (0..NODE_DOFS).filter_map(move |c| map.free(NODE_DOFS * node + c));
     // The nodes with a free DOF and their neighbours (through elements)
     // among them, as compressed rows.
     let active: Vec<usize> = (0..mesh.nodes.len())

@@ -24,6 +24,7 @@
 //!
 //! Each path's symbolic analysis is made on its first use.
 
+use std::ops::Range;
 use std::sync::OnceLock;
 
 use faer::dyn_stack::{MemBuffer, MemStack};
@@ -36,7 +37,7 @@ use faer::{Conj, Mat, MatMut, Par, Side};
 use rayon::prelude::*;
 
 use super::assembly::{element_dofs, AssemblyError, DofMap};
-use super::element::{self, ElementMatrix};
+use super::element::{self, ElementMatrix, DOFS, MATRIX_ENTRIES, NODES, NODE_DOFS};
 use super::material::Section;
 use super::mesh::ShellMesh;
 use super::ordering;
@@ -57,7 +58,7 @@ pub struct Structure {
     /// The lower triangle in that order, for [`Self::assemble_ordered`].
     ordered: OnceLock<Result<Ordered, String>>,
     /// The mesh's elements (corner nodes), for the ordered pattern.
-    connectivity: Vec<[usize; 4]>,
+    connectivity: Vec<[usize; NODES]>,
 }
 
 /// The lower triangle of the stiffness permuted to the nested-dissection
@@ -99,26 +100,27 @@ impl Structure {
         let mut row_idx = Vec::new();
         col_ptr.push(0);
         for (node, near) in neighbours.iter().enumerate() {
-            for c in 0..6 {
-                if map.free(6 * node + c).is_none() {
+            for c in 0..NODE_DOFS {
+                if map.free(NODE_DOFS * node + c).is_none() {
                     continue;
                 }
                 for &m in near {
-                    row_idx.extend((0..6).filter_map(|d| map.free(6 * m + d)));
+                    row_idx.extend((0..NODE_DOFS).filter_map(|d| map.free(NODE_DOFS * m + d)));
                 }
                 col_ptr.push(row_idx.len());
             }
         }
-        if row_idx.len() >= FIXED as usize || 576 * mesh.elements.len() >= FIXED as usize {
+        if row_idx.len() >= FIXED as usize || MATRIX_ENTRIES * mesh.elements.len() >= FIXED as usize
+        {
             return Err(AssemblyError::Sparse(format!(
                 "{} stiffness entries of {} elements exceed the 32-bit scatter map",
                 row_idx.len(),
                 mesh.elements.len()
             )));
         }
-        let mut scatter = vec![FIXED; 576 * mesh.elements.len()];
+        let mut scatter = vec![FIXED; MATRIX_ENTRIES * mesh.elements.len()];
         scatter
-            .par_chunks_mut(576)
+            .par_chunks_mut(MATRIX_ENTRIES)
             .enumerate()
             .for_each(|(e, out)| {
                 let corners = &mesh.elements[e];
@@ -130,8 +132,8 @@ impl Structure {
                         // a node, then the next row (present by
                         // construction: the nodes share this element).
                         let mut last: Option<usize> = None;
-                        for d in 0..6 {
-                            let Some(fa) = map.free(6 * m + d) else {
+                        for d in 0..NODE_DOFS {
+                            let Some(fa) = map.free(NODE_DOFS * m + d) else {
                                 continue;
                             };
                             let at = match last {
@@ -141,7 +143,7 @@ impl Structure {
                                     Err(_) => continue,
                                 },
                             };
-                            out[24 * (6 * corner + d) + b] = (col_ptr[fb] + at) as u32;
+                            out[DOFS * (NODE_DOFS * corner + d) + b] = (col_ptr[fb] + at) as u32;
                             last = Some(at);
                         }
                     }
@@ -178,10 +180,13 @@ impl Structure {
             });
         }
         let mut values = vec![0.0; self.pattern.row_idx().len()];
-        for (k, positions) in matrices.iter().zip(self.scatter.chunks_exact(576)) {
-            for a in 0..24 {
-                for b in 0..24 {
-                    let p = positions[24 * a + b];
+        for (k, positions) in matrices
+            .iter()
+            .zip(self.scatter.chunks_exact(MATRIX_ENTRIES))
+        {
+            for a in 0..DOFS {
+                for b in 0..DOFS {
+                    let p = positions[DOFS * a + b];
                     if p != FIXED {
                         values[p as usize] += k[(a, b)];
                     }
@@ -252,7 +257,9 @@ impl Structure {
         let values = ordered
             .gather
             .par_iter()
-            .map(|&code| matrices[code as usize / 576].as_slice()[code as usize % 576])
+            .map(|&code| {
+                matrices[code as usize / MATRIX_ENTRIES].as_slice()[code as usize % MATRIX_ENTRIES]
+            })
             .collect();
         Ok(OrderedLayer { values })
     }
@@ -303,7 +310,7 @@ impl Structure {
                     *value += ordered.gather[range.clone()]
                         .iter()
                         .zip(&layer.values[range])
-                        .map(|(&code, &k)| scales[code as usize / 576] * k)
+                        .map(|(&code, &k)| scales[code as usize / MATRIX_ENTRIES] * k)
                         .sum::<f64>();
                 }
             });
@@ -354,7 +361,10 @@ impl Structure {
         k.values.par_iter_mut().enumerate().for_each(|(q, value)| {
             *value = ordered.gather[ordered.start[q]..ordered.start[q + 1]]
                 .iter()
-                .map(|&code| matrix(code as usize / 576).as_slice()[code as usize % 576])
+                .map(|&code| {
+                    matrix(code as usize / MATRIX_ENTRIES).as_slice()
+                        [code as usize % MATRIX_ENTRIES]
+                })
                 .sum();
         });
         Ok(())
@@ -398,20 +408,89 @@ impl Structure {
     /// Then faer's symbolic analysis of it.
     fn build_ordered(&self) -> Result<Ordered, String> {
         let n = self.map.free_count();
+        let sources = ColumnSources::new(self);
+        // Columns in parallel blocks: each block's row indices, the number
+        // of element entries on each of its values, and those entries.
+        const BLOCK: usize = 1024;
+        let blocks: Vec<ColumnBlock> = (0..n.div_ceil(BLOCK))
+            .into_par_iter()
+            .map(|block| sources.block(block * BLOCK..(block * BLOCK + BLOCK).min(n)))
+            .collect();
+        let columns = ColumnBlock::concatenate(n, blocks);
+        let pattern =
+            SymbolicSparseColMat::new_checked(n, n, columns.col_ptr, None, columns.row_idx);
+        let symbolic = symbolic_cholesky(&pattern)?;
+        Ok(Ordered {
+            pattern,
+            start: columns.start,
+            gather: columns.gather,
+            global: sources.global,
+            symbolic,
+        })
+    }
+}
+
+/// faer's symbolic Cholesky analysis of the lower triangle `pattern`, in
+/// its own order.
+fn symbolic_cholesky(
+    pattern: &SymbolicSparseColMat<usize>,
+) -> Result<SymbolicCholesky<usize>, String> {
+    // faer's symbolic analysis without reordering reads the upper
+    // triangle whatever the side given: hand it the transpose (the
+    // numeric factorization then reads the lower triangle).
+    let upper = pattern
+        .as_ref()
+        .transpose()
+        .to_col_major()
+        .map_err(|e| format!("{e:?}"))?;
+    factorize_symbolic_cholesky(
+        upper.as_ref(),
+        Side::Upper,
+        SymmetricOrdering::Identity,
+        Default::default(),
+    )
+    .map_err(|e| format!("{e:?}"))
+}
+
+/// What the columns of the ordered lower triangle are built from: the
+/// structure, where each free DOF is eliminated, and the elements around
+/// each node.
+struct ColumnSources<'s> {
+    structure: &'s Structure,
+    /// Position in elimination order of each free DOF.
+    position: Vec<usize>,
+    /// Global DOF of each position in elimination order.
+    global: Vec<usize>,
+    /// The elements around node `i` are
+    /// `around[around_start[i]..around_start[i + 1]]` (compressed rows).
+    around_start: Vec<usize>,
+    around: Vec<usize>,
+    /// Position of each node's first free DOF (`usize::MAX`: none): its
+    /// free DOFs follow it in component order (the ordering keeps them
+    /// together).
+    node_first: Vec<usize>,
+}
+
+impl<'s> ColumnSources<'s> {
+    /// The positions, the elements around the nodes and the nodes' first
+    /// positions of `structure`.
+    fn new(structure: &'s Structure) -> Self {
+        let map = &structure.map;
+        let n = map.free_count();
         let mut position = vec![0; n];
-        for (k, &d) in self.order.iter().enumerate() {
+        for (k, &d) in structure.order.iter().enumerate() {
             position[d] = k;
         }
         let mut global = vec![0; n];
-        for g in 0..self.map.dofs() {
-            if let Some(f) = self.map.free(g) {
+        for g in 0..map.dofs() {
+            if let Some(f) = map.free(g) {
                 global[position[f]] = g;
             }
         }
         // The elements around each node (compressed rows).
-        let nodes = self.map.dofs() / 6;
+        let nodes = map.dofs() / NODE_DOFS;
         let mut around_start = vec![0usize; nodes + 1];
-        for corners in &self.connectivity {
+        for corners in &structure.connectivity {
             for &node in corners {
                 around_start[node + 1] += 1;
             }
@@ -421,85 +500,125 @@ impl Structure {
         }
         let mut around = vec![0usize; around_start[nodes]];
         let mut next = around_start.clone();
-        for (e, corners) in self.connectivity.iter().enumerate() {
+        for (e, corners) in structure.connectivity.iter().enumerate() {
             for &node in corners {
                 around[next[node]] = e;
                 next[node] += 1;
             }
         }
-        // Position of each node's first free DOF: its free DOFs follow it in
-        // component order (the ordering keeps them together).
         let mut node_first = vec![usize::MAX; nodes];
         for (k, &g) in global.iter().enumerate().rev() {
-            node_first[g / 6] = k;
+            node_first[g / NODE_DOFS] = k;
         }
-        // Columns in parallel blocks: each block's row indices, the number
-        // of element entries on each of its values, and those entries.
-        const BLOCK: usize = 1024;
-        let blocks: Vec<ColumnBlock> = (0..n.div_ceil(BLOCK))
-            .into_par_iter()
-            .map(|block| {
-                let columns = block * BLOCK..(block * BLOCK + BLOCK).min(n);
-                let mut rows_per_column = Vec::with_capacity(columns.len());
-                let mut rows = Vec::with_capacity(60 * columns.len());
-                let mut counts = Vec::with_capacity(60 * columns.len());
-                let mut codes = Vec::with_capacity(200 * columns.len());
-                let mut corners_at: Vec<(usize, usize, usize)> = Vec::with_capacity(16);
-                for k in columns {
-                    let (node, c) = (global[k] / 6, global[k] % 6);
-                    // For every corner of the elements around this column's
-                    // node: the corner node's first position, the element,
-                    // and where in the element matrix (24 b + 6 corner; the
-                    // corner's DOF d adds d) the entries lie.
-                    corners_at.clear();
-                    for &e in &around[around_start[node]..around_start[node + 1]] {
-                        let corners = &self.connectivity[e];
-                        let Some(slot) = corners.iter().position(|&m| m == node) else {
-                            continue;
-                        };
-                        for (corner, &m) in corners.iter().enumerate() {
-                            if node_first[m] != usize::MAX {
-                                corners_at.push((
-                                    node_first[m],
-                                    e,
-                                    24 * (6 * slot + c) + 6 * corner,
-                                ));
-                            }
-                        }
-                    }
-                    corners_at.sort_unstable();
-                    let before = rows.len();
-                    let mut i = 0;
-                    while i < corners_at.len() {
-                        let first = corners_at[i].0;
-                        let group = corners_at[i..].iter().take_while(|x| x.0 == first).count();
-                        let m = global[first] / 6;
-                        for d in 0..6 {
-                            let Some(f) = self.map.free(6 * m + d) else {
-                                continue;
-                            };
-                            let row = position[f];
-                            if row < k {
-                                continue;
-                            }
-                            rows.push(row);
-                            counts.push(group);
-                            for &(_, e, offset) in &corners_at[i..i + group] {
-                                codes.push((576 * e + offset + d) as u32);
-                            }
-                        }
-                        i += group;
-                    }
-                    rows_per_column.push(rows.len() - before);
+        Self {
+            structure,
+            position,
+            global,
+            around_start,
+            around,
+            node_first,
+        }
+    }
+
+    /// The consecutive `columns`, built on one thread.
+    fn block(&self, columns: Range<usize>) -> ColumnBlock {
+        let mut block = ColumnBlock {
+            rows_per_column: Vec::with_capacity(columns.len()),
+            rows: Vec::with_capacity(60 * columns.len()),
+            counts: Vec::with_capacity(60 * columns.len()),
+            codes: Vec::with_capacity(200 * columns.len()),
+        };
+        let mut corners_at: Vec<(usize, usize, usize)> = Vec::with_capacity(16);
+        for k in columns {
+            self.column(k, &mut corners_at, &mut block);
+        }
+        block
+    }
+
+    /// Appends column `k` to `block` (`corners_at`: storage).
+    fn column(
+        &self,
+        k: usize,
+        corners_at: &mut Vec<(usize, usize, usize)>,
+        block: &mut ColumnBlock,
+    ) {
+        let (map, connectivity) = (&self.structure.map, &self.structure.connectivity);
+        let (node, c) = (self.global[k] / NODE_DOFS, self.global[k] % NODE_DOFS);
+        // For every corner of the elements around this column's
+        // node: the corner node's first position, the element,
+        // and where in the element matrix (24 b + 6 corner; the
+        // corner's DOF d adds d) the entries lie.
+        corners_at.clear();
+        for &e in &self.around[self.around_start[node]..self.around_start[node + 1]] {
+            let corners = &connectivity[e];
+            let Some(slot) = corners.iter().position(|&m| m == node) else {
+                continue;
+            };
+            for (corner, &m) in corners.iter().enumerate() {
+                if self.node_first[m] != usize::MAX {
+                    corners_at.push((
+                        self.node_first[m],
+                        e,
+                        DOFS * (NODE_DOFS * slot + c) + NODE_DOFS * corner,
+                    ));
                 }
-                ColumnBlock {
-                    rows_per_column,
-                    rows,
-                    counts,
-                    codes,
+            }
+        }
+        corners_at.sort_unstable();
+        let before = block.rows.len();
+        let mut i = 0;
+        while i < corners_at.len() {
+            let first = corners_at[i].0;
+            let group = corners_at[i..].iter().take_while(|x| x.0 == first).count();
+            let m = self.global[first] / NODE_DOFS;
+            for d in 0..NODE_DOFS {
+                let Some(f) = map.free(NODE_DOFS * m + d) else {
+                    continue;
+                };
+                let row = self.position[f];
+                if row < k {
+                    continue;
                 }
-            })
-            .collect();
+                block.rows.push(row);
+                block.counts.push(group);
+                for &(_, e, offset) in &corners_at[i..i + group] {
+                    block.codes.push((MATRIX_ENTRIES * e + offset + d) as u32);
+                }
+            }
+            i += group;
+        }
+        block.rows_per_column.push(block.rows.len() - before);
+    }
+}
+
+/// A block of consecutive columns of the ordered lower triangle, built on
+/// one thread.
+struct ColumnBlock {
+    /// Values in each column.
+    rows_per_column: Vec<usize>,
+    /// Row of each value.
+    rows: Vec<usize>,
+    /// Element entries on each value.
+    counts: Vec<usize>,
+    /// Those entries, value after value (`576 e + a + 24 b`).
+    codes: Vec<u32>,
+}
+
+/// The ordered lower triangle's columns, all blocks put together.
+struct Columns {
+    /// Compressed-column pointers.
+    col_ptr: Vec<usize>,
+    /// Row of each value.
+    row_idx: Vec<usize>,
+    /// Value `q`'s element entries are `gather[start[q]..start[q + 1]]`.
+    start: Vec<usize>,
+    /// The element entries (`576 e + a + 24 b`).
+    gather: Vec<u32>,
+}
+
+impl ColumnBlock {
+    /// The `n` columns of consecutive `blocks`.
+    fn concatenate(n: usize, blocks: Vec<ColumnBlock>) -> Columns {
         let values: usize = blocks.iter().map(|b| b.rows.len()).sum();
         let mut col_ptr = Vec::with_capacity(n + 1);
         let mut row_idx = Vec::with_capacity(values);
@@ -517,43 +636,13 @@ impl Structure {
             }
             gather.extend(block.codes);
         }
-        let pattern = SymbolicSparseColMat::new_checked(n, n, col_ptr, None, row_idx);
-        // faer's symbolic analysis without reordering reads the upper
-        // triangle whatever the side given: hand it the transpose (the
-        // numeric factorization then reads the lower triangle).
-        let upper = pattern
-            .as_ref()
-            .transpose()
-            .to_col_major()
-            .map_err(|e| format!("{e:?}"))?;
-        let symbolic = factorize_symbolic_cholesky(
-            upper.as_ref(),
-            Side::Upper,
-            SymmetricOrdering::Identity,
-            Default::default(),
-        )
-        .map_err(|e| format!("{e:?}"))?;
-        Ok(Ordered {
-            pattern,
+        Columns {
+            col_ptr,
+            row_idx,
             start,
             gather,
-            global,
-            symbolic,
-        })
+        }
     }
-}
-
-/// A block of consecutive columns of the ordered lower triangle, built on
-/// one thread.
-struct ColumnBlock {
-    /// Values in each column.
-    rows_per_column: Vec<usize>,
-    /// Row of each value.
-    rows: Vec<usize>,
-    /// Element entries on each value.
-    counts: Vec<usize>,
-    /// Those entries, value after value (`576 e + a + 24 b`).
-    codes: Vec<u32>,
 }
 
 /// Element matrices packed by [`Structure::ordered_layer`]: the entries on

@@ -12,6 +12,7 @@
 
 use nalgebra::Vector3;
 
+use super::element::NODE_DOFS;
 use super::mesh::{MeshError, ShellMesh};
 
 /// A wing planform and its mesh density (m).
@@ -126,7 +127,7 @@ impl WingMesh {
     pub fn clamped_dofs(&self) -> Vec<usize> {
         self.root_nodes
             .iter()
-            .flat_map(|n| (0..6).map(move |c| 6 * n + c))
+            .flat_map(|n| (0..NODE_DOFS).map(move |c| NODE_DOFS * n + c))
             .collect()
     }
 }

@@ -326,33 +326,7 @@ pub fn optimize_from(
     settings: &EslsoSettings,
     mut progress: impl FnMut(EslsoProgress<'_>),
 ) -> Result<EslsoResult, EslsoError> {
-    let n = problem.mesh.elements.len();
-    if let Some(w) = warm {
-        if w.len() != n {
-            return Err(EslsoError::Setting(format!(
-                "{} warm-start design variables for {n} elements",
-                w.len()
-            )));
-        }
-        check_unit_interval(w, "warm-start design variable")?;
-    }
-    if start.len() != n || problem.design.len() != n {
-        return Err(EslsoError::Setting(format!(
-            "{} start densities and {} design flags for {n} elements",
-            start.len(),
-            problem.design.len()
-        )));
-    }
-    check_unit_interval(start, "start density")?;
-    if !(settings.threshold > 0.0 && settings.threshold < 1.0)
-        || settings.max_cycles == 0
-        || !(0.0..1.0).contains(&settings.layout_tolerance)
-    {
-        return Err(EslsoError::Setting(format!(
-            "threshold {} must be in (0, 1), max_cycles {} at least 1 and layout_tolerance {} in [0, 1)",
-            settings.threshold, settings.max_cycles, settings.layout_tolerance
-        )));
-    }
+    check(problem, start, warm, settings)?;
     let design_elements = problem.design.iter().filter(|&&d| d).count();
     // The most design elements that may flip in a cycle that still counts
     // as unchanged.
@@ -377,13 +351,7 @@ pub fn optimize_from(
         )?;
         let analysis_s = clock.elapsed().as_secs_f64();
         let clock = Instant::now();
-        let esl = match settings.esl {
-            EslForm::Displacement => {
-                let linear = LinearStatic::new(&problem.mesh, &sections, &problem.fixed)?;
-                EquivalentStaticLoads::new(&linear, &response.displacements)?
-            }
-            EslForm::Dalembert => EquivalentStaticLoads::dalembert(response.dynamic_loads.clone()),
-        };
+        let esl = equivalent_static_loads(problem, &sections, &response, settings.esl)?;
         // Each cycle's SIMP starts where the last one ended: the loads
         // change little between cycles near convergence.
         let simp = simp::optimize_from(
@@ -398,13 +366,7 @@ pub fn optimize_from(
         )?;
         warm = Some(simp.design_variables.clone());
         let next = transform(&simp.densities, &problem.design, settings.threshold);
-        let changed = next.iter().zip(&layout).filter(|(a, b)| a != b).count();
-        let flip_margin = next
-            .iter()
-            .zip(&layout)
-            .zip(&simp.densities)
-            .filter(|((a, b), _)| a != b)
-            .fold(0.0f64, |m, (_, &r)| m.max((r - settings.threshold).abs()));
+        let (changed, flip_margin) = flips(&next, &layout, &simp.densities, settings.threshold);
         let record = EslsoCycle {
             cycle,
             strain_energy_j: response.total_strain_energy(),
@@ -446,4 +408,73 @@ pub fn optimize_from(
         design_variables: warm.unwrap_or_default(),
         converged,
     })
+}
+
+/// Checks the start densities, the warm start and the settings of
+/// [`optimize_from`] against the problem.
+fn check(
+    problem: &DesignProblem,
+    start: &[f64],
+    warm: Option<&[f64]>,
+    settings: &EslsoSettings,
+) -> Result<(), EslsoError> {
+    let n = problem.mesh.elements.len();
+    if let Some(w) = warm {
+        if w.len() != n {
+            return Err(EslsoError::Setting(format!(
+                "{} warm-start design variables for {n} elements",
+                w.len()
+            )));
+        }
+        check_unit_interval(w, "warm-start design variable")?;
+    }
+    if start.len() != n || problem.design.len() != n {
+        return Err(EslsoError::Setting(format!(
+            "{} start densities and {} design flags for {n} elements",
+            start.len(),
+            problem.design.len()
+        )));
+    }
+    check_unit_interval(start, "start density")?;
+    if !(settings.threshold > 0.0 && settings.threshold < 1.0)
+        || settings.max_cycles == 0
+        || !(0.0..1.0).contains(&settings.layout_tolerance)
+    {
+        return Err(EslsoError::Setting(format!(
+            "threshold {} must be in (0, 1), max_cycles {} at least 1 and layout_tolerance {} in [0, 1)",
+            settings.threshold, settings.max_cycles, settings.layout_tolerance
+        )));
+    }
+    Ok(())
+}
+
+/// The equivalent static loads of the sampled `response` of the design
+/// with `sections`, in the form `form`.
+fn equivalent_static_loads(
+    problem: &DesignProblem,
+    sections: &[Section],
+    response: &SampledResponse,
+    form: EslForm,
+) -> Result<EquivalentStaticLoads, EslsoError> {
+    Ok(match form {
+        EslForm::Displacement => {
+            let linear = LinearStatic::new(&problem.mesh, sections, &problem.fixed)?;
+            EquivalentStaticLoads::new(&linear, &response.displacements)?
+        }
+        EslForm::Dalembert => EquivalentStaticLoads::dalembert(response.dynamic_loads.clone()),
+    })
+}
+
+/// How many elements the `next` layout flips against `layout`, and the
+/// largest distance from the `threshold` of a flipped element's SIMP
+/// density in `densities`.
+fn flips(next: &[bool], layout: &[bool], densities: &[f64], threshold: f64) -> (usize, f64) {
+    let changed = next.iter().zip(layout).filter(|(a, b)| a != b).count();
+    let flip_margin = next
+        .iter()
+        .zip(layout)
+        .zip(densities)
+        .filter(|((a, b), _)| a != b)
+        .fold(0.0f64, |m, (_, &r)| m.max((r - threshold).abs()));
+    (changed, flip_margin)
 }

@@ -125,24 +125,17 @@ struct ForceSegment {
     owners: [(usize, f64); 2],
 }
 
-/// The loads (module docs) for circulation `circulation` on `surface`,
-/// with the committed circulations of the last step `previous` and of the
-/// step before, `older`, if any (for `∂Φ/∂t`).
-#[allow(clippy::too_many_arguments)]
-pub(crate) fn loads(
+/// The bound segments that carry force for circulation `gamma`: each
+/// panel's leading segment (with the strength of its ring less the one
+/// ahead), then the chordwise segments of the row (between neighbouring
+/// rings, halves to each; the root's left out of a `symmetric` half wing).
+fn force_segments(
     surface: &Lattice,
-    corner_velocity: &[Vector3<f64>],
     rings: &BoundRings,
-    circulation: Vec<f64>,
-    previous: &[f64],
-    older: Option<&[f64]>,
-    wake: &WakeSheet,
-    settings: &UvlmSettings,
-    shed_line: Vec<Vector3<f64>>,
-) -> Solution {
+    gamma: &[f64],
+    symmetric: bool,
+) -> Vec<ForceSegment> {
     let (nc, ns) = (surface.chordwise, surface.spanwise);
-    let rho = settings.density;
-    let gamma = &circulation;
     let point = |r: usize, c: usize| r * (ns + 1) + c;
     let mut bound = Vec::with_capacity(nc * (2 * ns + 1));
     for i in 0..nc {
@@ -160,7 +153,7 @@ pub(crate) fn loads(
             });
         }
         for c in 0..=ns {
-            if c == 0 && settings.symmetric {
+            if c == 0 && symmetric {
                 continue;
             }
             let root_side = if c > 0 { gamma[i * ns + c - 1] } else { 0.0 };
@@ -182,6 +175,28 @@ pub(crate) fn loads(
             });
         }
     }
+    bound
+}
+
+/// The loads (module docs) for circulation `circulation` on `surface`,
+/// with the committed circulations of the last step `previous` and of the
+/// step before, `older`, if any (for `∂Φ/∂t`).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn loads(
+    surface: &Lattice,
+    corner_velocity: &[Vector3<f64>],
+    rings: &BoundRings,
+    circulation: Vec<f64>,
+    previous: &[f64],
+    older: Option<&[f64]>,
+    wake: &WakeSheet,
+    settings: &UvlmSettings,
+    shed_line: Vec<Vector3<f64>>,
+) -> Solution {
+    let (nc, ns) = (surface.chordwise, surface.spanwise);
+    let rho = settings.density;
+    let gamma = &circulation;
+    let bound = force_segments(surface, rings, gamma, settings.symmetric);
     let everything = all_segments(surface, rings, gamma, wake);
     let midpoints: Vec<_> = bound
         .iter()
