@@ -47,11 +47,7 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
         ..SectionCase::fwav_mid_span()
     };
     if let Some(path) = &a.section {
-        let text =
-            std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
-        let file = SectionFile::from_json(&text)
-            .with_context(|| format!("{}: not a section history", path.display()))?;
-        case.deformation = file.samples;
+        case.deformation = SectionFile::read(path)?.samples;
     }
     let cache = match &a.cache {
         Some(path) => EvaluationCache::load(path)?,

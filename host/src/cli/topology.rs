@@ -12,6 +12,7 @@ use fwav::shell::vtu::{self, Field};
 use fwav::topology::eslso::{optimize, DesignProblem, EslsoProgress, EslsoResult};
 use fwav::topology::picture;
 use fwav::topology::pressure::PressureHistory;
+use fwav::aeroelastic::handoff::PressureFile;
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -46,9 +47,7 @@ pub fn run_command(a: &TopologyArgs) -> Result<()> {
     let started = Instant::now();
     let pressure = match &a.pressure {
         Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .with_context(|| format!("reading {}", path.display()))?;
-            PressureHistory::from_json(&text, elements)
+            PressureHistory::from_file(PressureFile::read(path)?, elements)
                 .with_context(|| format!("{}", path.display()))?
         }
         None => {

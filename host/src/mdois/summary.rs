@@ -10,18 +10,25 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
+use crate::file_format::{FileFormat, FormatError, ReadError};
+
 use crate::aeroelastic::config::SystemConfig;
 use crate::discipline::section::SectionResult;
 
 use super::error::DesignError;
 use super::profile::{actuator_check, ActuatorCheck};
-use super::stage::{
-    load_kinematics, load_system, load_topology, KinematicRecord, KinematicValues, TopologyRecord,
+use super::records::{
+    load_kinematics, load_system, load_topology, KinematicRecord, TopologyRecord,
 };
+use super::stage::KinematicValues;
 use super::state::{Outcome, RunState, Stage};
 
-/// The `format` value of `summary.json`.
-pub const SUMMARY_FORMAT: &str = "fwav-design-summary-1";
+/// The kind of file and the version this build reads and writes.
+pub const FORMAT: FileFormat = FileFormat {
+    file: "summary.json",
+    format: "fwav-design-summary",
+    version: 1,
+};
 
 /// How much the design changed in a cycle's disciplines, and whether that
 /// counts as unchanged ([`super::config::MdoisConfig`]).
@@ -196,9 +203,12 @@ pub struct Comparison {
 
 /// The whole `summary.json`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Summary {
-    /// [`SUMMARY_FORMAT`].
+    /// Always [`FORMAT`]'s `format`.
     pub format: String,
+    /// [`FORMAT`]'s `version`.
+    pub format_version: u32,
     /// Whether the run is over.
     pub finished: bool,
     /// `"converged"`, `"cycle cap reached"` or `"unfinished"`.
@@ -229,6 +239,23 @@ pub struct Summary {
     /// `kinematics.json` flies (once the run is over).
     #[serde(default)]
     pub actuator: Option<ActuatorCheck>,
+}
+
+impl Summary {
+    /// The file's text (pretty-printed: a person reads it).
+    pub fn to_json(&self) -> Result<String, FormatError> {
+        FORMAT.to_json(self, true)
+    }
+
+    /// Parses the text of a `summary.json` (its header first).
+    pub fn from_json(text: &str) -> Result<Self, FormatError> {
+        FORMAT.parse(text)
+    }
+
+    /// Reads the `summary.json` at `path`.
+    pub fn read(path: &Path) -> Result<Self, ReadError> {
+        FORMAT.read(path)
+    }
 }
 
 /// Builds the summary of the run in `dir` from its `state`.
@@ -353,7 +380,8 @@ pub fn build(config: &SystemConfig, dir: &Path, state: &RunState) -> Result<Summ
         _ => None,
     };
     Ok(Summary {
-        format: SUMMARY_FORMAT.to_string(),
+        format: FORMAT.format.to_string(),
+        format_version: FORMAT.version,
         finished: state.outcome.is_some(),
         outcome: outcome.to_string(),
         converged_cycle,
