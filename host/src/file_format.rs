@@ -31,12 +31,12 @@ pub struct FileFormat {
 pub enum FormatError {
     /// Not JSON, or a key is missing, unknown or of the wrong type (the
     /// message has the line and column).
-    #[error("{file}: {source}")]
+    #[error("{file}: {error}")]
     Json {
         /// The kind of file, by its usual name.
         file: &'static str,
         /// The parser's complaint.
-        source: serde_json::Error,
+        error: serde_json::Error,
     },
     /// The `format` key is missing or names another kind of file.
     #[error("{file}: \"format\" is {}, expected {expected:?}: not a {file} of fwav", shown(.found.as_deref()))]
@@ -49,7 +49,7 @@ pub enum FormatError {
         expected: &'static str,
     },
     /// A `format_version` this build does not read.
-    #[error("{file}: \"format_version\" is {}, this build reads version {expected}", shown(.found.map(|v| v.to_string()).as_deref()))]
+    #[error("{file}: \"format_version\" is {}, this build reads version {expected}", .found.map_or_else(|| "missing or not a number".to_string(), |v| v.to_string()))]
     UnsupportedVersion {
         /// The kind of file.
         file: &'static str,
@@ -64,26 +64,29 @@ pub enum FormatError {
 #[derive(Debug, thiserror::Error)]
 pub enum ReadError {
     /// The file could not be read.
-    #[error("reading {}: {source}", .path.display())]
+    #[error("reading {}: {error}", .path.display())]
     Io {
         /// The file.
         path: PathBuf,
         /// The cause.
-        source: std::io::Error,
+        error: std::io::Error,
     },
     /// Its text is not a file of the format (or not of this version).
-    #[error("{}: {source}", .path.display())]
+    #[error("{}: {error}", .path.display())]
     Format {
         /// The file.
         path: PathBuf,
         /// What is wrong.
-        source: FormatError,
+        error: FormatError,
     },
 }
 
 /// A header value as a message shows it.
 fn shown(value: Option<&str>) -> String {
-    value.map_or_else(|| "missing or not of its type".to_string(), |v| format!("{v:?}"))
+    value.map_or_else(
+        || "missing or not of its type".to_string(),
+        |v| format!("{v:?}"),
+    )
 }
 
 /// The header alone; every other key is skipped.
@@ -113,9 +116,9 @@ impl<T> IgnoredOr<T> {
 impl FileFormat {
     /// Checks the header of `text`: its `format` and `format_version`.
     pub fn check(&self, text: &str) -> Result<(), FormatError> {
-        let header: Header = serde_json::from_str(text).map_err(|source| FormatError::Json {
+        let header: Header = serde_json::from_str(text).map_err(|error| FormatError::Json {
             file: self.file,
-            source,
+            error,
         })?;
         let format = header.format.and_then(IgnoredOr::value);
         if format.as_deref() != Some(self.format) {
@@ -139,21 +142,21 @@ impl FileFormat {
     /// Checks the header of `text`, then reads the whole file.
     pub fn parse<T: DeserializeOwned>(&self, text: &str) -> Result<T, FormatError> {
         self.check(text)?;
-        serde_json::from_str(text).map_err(|source| FormatError::Json {
+        serde_json::from_str(text).map_err(|error| FormatError::Json {
             file: self.file,
-            source,
+            error,
         })
     }
 
     /// Reads the file at `path` (its header first).
     pub fn read<T: DeserializeOwned>(&self, path: &Path) -> Result<T, ReadError> {
-        let text = std::fs::read_to_string(path).map_err(|source| ReadError::Io {
+        let text = std::fs::read_to_string(path).map_err(|error| ReadError::Io {
             path: path.to_path_buf(),
-            source,
+            error,
         })?;
-        self.parse(&text).map_err(|source| ReadError::Format {
+        self.parse(&text).map_err(|error| ReadError::Format {
             path: path.to_path_buf(),
-            source,
+            error,
         })
     }
 
@@ -169,9 +172,9 @@ impl FileFormat {
         } else {
             serde_json::to_string(value)
         };
-        text.map_err(|source| FormatError::Json {
+        text.map_err(|error| FormatError::Json {
             file: self.file,
-            source,
+            error,
         })
     }
 }
@@ -206,7 +209,9 @@ mod tests {
         let e = KIND
             .parse::<Thing>(r#"{"format": "fwav-other", "format_version": 2}"#)
             .unwrap_err();
-        assert!(matches!(e, FormatError::WrongFormat { found: Some(ref f), .. } if f == "fwav-other"));
+        assert!(
+            matches!(e, FormatError::WrongFormat { found: Some(ref f), .. } if f == "fwav-other")
+        );
         assert!(e.to_string().contains("thing.json"), "{e}");
         let e = KIND
             .parse::<Thing>(r#"{"format": "fwav-thing", "format_version": 3, "value": 1}"#)
@@ -219,14 +224,20 @@ mod tests {
                 ..
             }
         ));
-        assert!(e.to_string().contains("is 3, this build reads version 2"), "{e}");
+        assert!(
+            e.to_string().contains("is 3, this build reads version 2"),
+            "{e}"
+        );
         let e = KIND.parse::<Thing>(r#"{"value": 1}"#).unwrap_err();
         assert!(matches!(e, FormatError::WrongFormat { found: None, .. }));
         assert!(e.to_string().contains("missing"), "{e}");
         let e = KIND
             .parse::<Thing>(r#"{"format": "fwav-thing", "format_version": "2"}"#)
             .unwrap_err();
-        assert!(matches!(e, FormatError::UnsupportedVersion { found: None, .. }));
+        assert!(matches!(
+            e,
+            FormatError::UnsupportedVersion { found: None, .. }
+        ));
         assert!(matches!(
             KIND.parse::<Thing>("{").unwrap_err(),
             FormatError::Json { .. }

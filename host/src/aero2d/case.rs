@@ -17,8 +17,10 @@ use super::history::{cycle_mean_of, cycle_means, cycle_means_until, History};
 use super::ldvm::{FreeVortex, Ldvm, Settings};
 use super::motion::Motion;
 use super::naca::{read_points, Naca4, NacaError, PointsError, TrailingEdge};
-use super::panel::{PanelError, PanelSettings, PanelSolver, SectionShape, ShapeError, ShapeHistory};
 use super::panel::DEFAULT_PANELS;
+use super::panel::{
+    PanelError, PanelSettings, PanelSolver, SectionShape, ShapeError, ShapeHistory,
+};
 use super::theory::garrick_plunge;
 
 /// Fewest chord stations a thin section's deformation is resampled onto.
@@ -220,8 +222,9 @@ impl Case {
                 .max()
                 .unwrap_or(0)
                 .max(MIN_CAMBER_STATIONS);
-            solver =
-                solver.with_camber(CamberHistory::from_section_points(samples, period, stations)?);
+            solver = solver.with_camber(CamberHistory::from_section_points(
+                samples, period, stations,
+            )?);
         }
         let history = solver.run();
         Ok(CaseRun {

@@ -108,7 +108,8 @@ fn check(a: &Aero2dArgs) -> Result<()> {
 
 /// The case the arguments describe.
 fn case(a: &Aero2dArgs) -> Result<Case> {
-    let section = SectionModel::named(&a.section).with_context(|| format!("--section {}", a.section))?;
+    let section =
+        SectionModel::named(&a.section).with_context(|| format!("--section {}", a.section))?;
     let deformation = match &a.deformation {
         Some(path) => Some(SectionFile::read(path)?.points()),
         None => None,
@@ -139,8 +140,14 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         None => format!("--section {}", a.section),
     })?;
     if let Some(png) = &a.plot {
-        draw(&run.history, &run.vortices, &run.body, Some(run.period), png)
-            .with_context(|| format!("--plot {}", png.display()))?;
+        draw(
+            &run.history,
+            &run.vortices,
+            &run.body,
+            Some(run.period),
+            png,
+        )
+        .with_context(|| format!("--plot {}", png.display()))?;
     }
     let m = run.means();
     let net = m.net_ct();

@@ -6,13 +6,13 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{Context, Result};
+use fwav::aeroelastic::handoff::PressureFile;
 use fwav::aeroelastic::run;
 use fwav::files::write_atomic;
 use fwav::shell::vtu::{self, Field};
 use fwav::topology::eslso::{optimize, DesignProblem, EslsoProgress, EslsoResult};
 use fwav::topology::picture;
 use fwav::topology::pressure::PressureHistory;
-use fwav::aeroelastic::handoff::PressureFile;
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -46,10 +46,8 @@ pub fn run_command(a: &TopologyArgs) -> Result<()> {
     let show = !a.quiet && std::io::stderr().is_terminal();
     let started = Instant::now();
     let pressure = match &a.pressure {
-        Some(path) => {
-            PressureHistory::from_file(PressureFile::read(path)?, elements)
-                .with_context(|| format!("{}", path.display()))?
-        }
+        Some(path) => PressureHistory::from_file(PressureFile::read(path)?, elements)
+            .with_context(|| format!("{}", path.display()))?,
         None => {
             let result = run(
                 &wing,

@@ -18,8 +18,8 @@ use crate::topology::pressure::PressureHistory;
 use super::error::DesignError;
 use super::plot;
 use super::profile::write_kinematics;
-use super::report;
 use super::records::{load_kinematics, load_system, load_topology};
+use super::report;
 use super::stage::{layout_densities, Context};
 use super::state::{Outcome, RunState, Stage};
 use super::summary::Summary;
@@ -48,9 +48,7 @@ pub(crate) fn write_cycle_wing(
     let vtu_name = format!("wing-cycle-{cycle}.vtu");
     let layout = layout_densities(&result.layout);
     let mean_pressure: Vec<f64> = (0..problem.mesh.elements.len())
-        .map(|e| {
-            pressure.samples.iter().map(|s| s[e]).sum::<f64>() / pressure.samples.len() as f64
-        })
+        .map(|e| pressure.samples.iter().map(|s| s[e]).sum::<f64>() / pressure.samples.len() as f64)
         .collect();
     let domain = layout_densities(&problem.design);
     vtu::write(

@@ -260,8 +260,8 @@ impl Context<'_> {
             SectionFile::read(&cycle_path(&self.dir, cycle, handoff::section::FORMAT.file))?;
         let before = self.cache.len();
         let result = self.optimize_kinematics(&running, &design, self.section_case(section))?;
-        let computed =
-            self.cache.len().saturating_sub(before) + records::kinematics::evaluations_failed(&result);
+        let computed = self.cache.len().saturating_sub(before)
+            + records::kinematics::evaluations_failed(&result);
         let record = KinematicRecord::of(design.kinematics, result, computed);
         let file = records::kinematics::FILE;
         write_atomic(
