@@ -179,7 +179,7 @@ impl Case {
     }
 
     /// The solver settings: the default time step, shortened to give at
-    /// least [`MIN_STEPS_PER_CYCLE`] steps a period, for `cycles` periods.
+    /// least 100 steps a period, for `cycles` periods.
     pub fn settings(&self) -> Settings {
         let period = self.period();
         let defaults = Settings::default();

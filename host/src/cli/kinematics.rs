@@ -7,7 +7,7 @@ use std::time::Instant;
 use anyhow::{Context, Result};
 use fwav::aeroelastic::handoff::SectionFile;
 use fwav::discipline::cache::EvaluationCache;
-use fwav::discipline::kinematic::{optimize, Weights};
+use fwav::discipline::kinematic::{optimize, KinematicResult, Weights};
 use fwav::discipline::section::SectionCase;
 use fwav::optimize::nsga2::Nsga2Config;
 
@@ -103,6 +103,14 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
         println!("{out:#}");
         return Ok(());
     }
+    print_result(&result);
+    println!("{seconds:.1} s, {reused} evaluations reused");
+    Ok(())
+}
+
+/// The discipline's run as a person reads it: the initial design, each
+/// candidate, the surfaces' quality and the choice.
+fn print_result(result: &KinematicResult) {
     let show = |d: &[f64; 4]| {
         format!(
             "{:.2} Hz, ±{:.1}°, mean {:+.1}°, stroke plane {:.1}°",
@@ -153,6 +161,4 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
         ),
         None => println!("chosen: the initial design (no candidate beats it)"),
     }
-    println!("{seconds:.1} s, {reused} evaluations reused");
-    Ok(())
 }

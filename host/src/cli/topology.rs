@@ -103,7 +103,7 @@ ESLSO cycle {}: strain energy {:.4e} J, mass fraction {:.3}, peak displacement {
             "converged": result.converged,
             "cycles": result.cycles,
             "layout_mass_fraction": mass,
-            "carbon_elements": result.layout.iter().filter(|&&c| c).count(),
+            "carbon_elements": result.carbon_elements(),
             "elements": elements,
             "seconds": seconds,
             "out": a.out,

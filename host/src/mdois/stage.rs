@@ -13,9 +13,9 @@
 //!   `evaluations.json`;
 //! - structural discipline: `cycle-N/topology.json`
 //!   ([`super::records::TopologyRecord`]) and `wing-cycle-N.vtu` (the wing
-//!   with the cycle's layout, [`super::outputs::write_cycle_wing`]).
+//!   with the cycle's layout, written by `super::outputs`).
 //!
-//! Here is the computation of each stage (a method of [`Context`] that
+//! Here is the computation of each stage (a method of the stages' shared `Context` that
 //! returns the analysis's or discipline's result) and the order of reading,
 //! computing and writing; the records are in [`super::records`], the
 //! pictures and ParaView files in [`super::outputs`].

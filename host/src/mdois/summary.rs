@@ -18,10 +18,10 @@ use crate::discipline::section::SectionResult;
 use super::error::DesignError;
 use super::profile::{actuator_check, ActuatorCheck};
 use super::records::{
-    load_kinematics, load_system, load_topology, KinematicRecord, TopologyRecord,
+    load_kinematics, load_system, load_topology, KinematicRecord, SystemRecord, TopologyRecord,
 };
 use super::stage::KinematicValues;
-use super::state::{Outcome, RunState, Stage};
+use super::state::{Outcome, RunState, Stage, StageRecord};
 
 /// The kind of file and the version this build reads and writes.
 pub const FORMAT: FileFormat = FileFormat {
@@ -258,6 +258,65 @@ impl Summary {
     }
 }
 
+impl SystemSummary {
+    /// The summary of a system analysis record and its stage record.
+    fn of(s: &SystemRecord, r: &StageRecord) -> Self {
+        Self {
+            ct: s.means.ct,
+            cl: s.means.cl,
+            cp: s.means.cp,
+            efficiency: s.means.efficiency,
+            ct_change_last_two_cycles: s.means.ct_change_last_two_cycles,
+            tip_deflection_amplitude_m: s.tip_deflection_amplitude_m,
+            wing_mass_kg: s.wing_mass_kg,
+            seconds: r.seconds,
+            run: r.run,
+        }
+    }
+}
+
+impl KinematicsSummary {
+    /// The summary of an aerodynamic discipline record and its stage
+    /// record.
+    fn of(k: &KinematicRecord, r: &StageRecord) -> Self {
+        Self {
+            analysed_2d: k.result.initial.result.clone().ok(),
+            chosen: k.chosen.clone(),
+            proposed: k.proposed,
+            proposed_2d: k.proposed_2d,
+            evaluations_reused: k.evaluations_reused,
+            seconds: r.seconds,
+            run: r.run,
+        }
+    }
+}
+
+impl TopologySummary {
+    /// The summary of a structural discipline record and its stage
+    /// record.
+    fn of(t: &TopologyRecord, r: &StageRecord) -> Self {
+        Self {
+            strain_energy_j: t
+                .result
+                .cycles
+                .first()
+                .map_or(f64::NAN, |c| c.strain_energy_j),
+            final_strain_energy_j: t
+                .result
+                .cycles
+                .last()
+                .map_or(f64::NAN, |c| c.strain_energy_j),
+            mass_fraction: t.mass_fraction,
+            carbon_elements: t.result.carbon_elements(),
+            elements_changed: t.elements_changed,
+            eslso_cycles: t.result.cycles.len(),
+            eslso_converged: t.result.converged,
+            seconds: r.seconds,
+            run: r.run,
+        }
+    }
+}
+
 /// Builds the summary of the run in `dir` from its `state`.
 pub fn build(config: &SystemConfig, dir: &Path, state: &RunState) -> Result<Summary, DesignError> {
     let mut cycles = Vec::new();
@@ -298,45 +357,11 @@ pub fn build(config: &SystemConfig, dir: &Path, state: &RunState) -> Result<Summ
             cycle,
             kinematics: analysed,
             carbon_mass_fraction,
-            system: system.as_ref().map(|(s, r)| SystemSummary {
-                ct: s.means.ct,
-                cl: s.means.cl,
-                cp: s.means.cp,
-                efficiency: s.means.efficiency,
-                ct_change_last_two_cycles: s.means.ct_change_last_two_cycles,
-                tip_deflection_amplitude_m: s.tip_deflection_amplitude_m,
-                wing_mass_kg: s.wing_mass_kg,
-                seconds: r.seconds,
-                run: r.run,
-            }),
-            aerodynamic: kinematics.as_ref().map(|(k, r)| KinematicsSummary {
-                analysed_2d: k.result.initial.result.clone().ok(),
-                chosen: k.chosen.clone(),
-                proposed: k.proposed,
-                proposed_2d: k.proposed_2d,
-                evaluations_reused: k.evaluations_reused,
-                seconds: r.seconds,
-                run: r.run,
-            }),
-            structural: topology.as_ref().map(|(t, r)| TopologySummary {
-                strain_energy_j: t
-                    .result
-                    .cycles
-                    .first()
-                    .map_or(f64::NAN, |c| c.strain_energy_j),
-                final_strain_energy_j: t
-                    .result
-                    .cycles
-                    .last()
-                    .map_or(f64::NAN, |c| c.strain_energy_j),
-                mass_fraction: t.mass_fraction,
-                carbon_elements: t.result.layout.iter().filter(|&&c| c).count(),
-                elements_changed: t.elements_changed,
-                eslso_cycles: t.result.cycles.len(),
-                eslso_converged: t.result.converged,
-                seconds: r.seconds,
-                run: r.run,
-            }),
+            system: system.as_ref().map(|(s, r)| SystemSummary::of(s, r)),
+            aerodynamic: kinematics
+                .as_ref()
+                .map(|(k, r)| KinematicsSummary::of(k, r)),
+            structural: topology.as_ref().map(|(t, r)| TopologySummary::of(t, r)),
             change: match (&kinematics, &topology) {
                 (Some((k, _)), Some((t, _))) => Some(change(config, k, t)),
                 _ => None,

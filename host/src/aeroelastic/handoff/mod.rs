@@ -7,7 +7,7 @@
 //! step records as CSV (`steps.csv`). Each JSON file is one serde type used
 //! for writing and reading, with a format name and version
 //! ([`crate::file_format`]). `fwav system-analysis --out` and the MDOIS
-//! driver write the same files ([`write`]).
+//! driver write the same files ([`write()`]).
 //!
 //! May import: [`super::analysis`] (the result it hands on),
 //! [`crate::file_format`] and [`crate::files`].
@@ -24,7 +24,7 @@ use crate::files::{write_atomic, WriteError};
 pub use pressure::PressureFile;
 pub use section::SectionFile;
 
-/// The files [`write`] writes, in its order.
+/// The files [`write()`] writes, in its order.
 pub const FILES: [&str; 3] = ["section.json", "pressure.json", "steps.csv"];
 
 /// Why the handoff files could not be written.
