@@ -20,6 +20,7 @@ pub mod aeroelastic;
 pub mod device;
 pub mod discipline;
 pub mod drawing;
+pub mod file_format;
 pub mod files;
 pub mod link;
 pub mod mdois;

@@ -134,7 +134,8 @@ fn aero2d_reports_thrust_beside_garrick() {
     let file = dir.join("shape.json");
     std::fs::write(
         &file,
-        r#"{"samples": [[[0.0, 0.0], [0.5, 0.01], [0.4, 0.0]]]}"#,
+        r#"{"format": "fwav-section-history", "format_version": 1,
+            "samples": [[[0.0, 0.0], [0.5, 0.01], [0.4, 0.0]]]}"#,
     )
     .unwrap();
     let bad = fwav(&["aero2d", "--deformation", file.to_str().unwrap()]);
@@ -142,6 +143,20 @@ fn aero2d_reports_thrust_beside_garrick() {
     assert_eq!(bad.status.code(), Some(1));
     assert!(
         err.contains("shape.json") && err.contains("point 2"),
+        "{err}"
+    );
+    // So is one of another format version.
+    std::fs::write(
+        &file,
+        r#"{"format": "fwav-section-history", "format_version": 9, "samples": []}"#,
+    )
+    .unwrap();
+    let bad = fwav(&["aero2d", "--deformation", file.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&bad.stderr);
+    assert_eq!(bad.status.code(), Some(1));
+    assert!(
+        err.contains("shape.json")
+            && err.contains("\"format_version\" is 9, this build reads version 1"),
         "{err}"
     );
 
@@ -249,7 +264,11 @@ fn system_analysis_writes_what_the_disciplines_take() {
         assert!(topology_dir.join(file).exists(), "{file}");
     }
     // A pressure history for another mesh is refused, naming the file.
-    std::fs::write(&pressure_file, r#"{"dt_s": 0.01, "samples": [[1.0, 2.0]]}"#).unwrap();
+    std::fs::write(
+        &pressure_file,
+        r#"{"format": "fwav-pressure-history", "format_version": 1, "dt_s": 0.01, "samples": [[1.0, 2.0]]}"#,
+    )
+    .unwrap();
     let bad = fwav(&[
         "topology",
         "--config",

@@ -8,7 +8,9 @@ use std::process::Command;
 use std::time::{Duration, Instant};
 
 use fwav::aeroelastic::config::SystemConfig;
+use fwav::file_format::{FormatError, ReadError};
 use fwav::mdois::state::RunState;
+use fwav::mdois::summary::Summary;
 use fwav::mdois::{resume, start, DesignError, Outcome, RunOptions, Stage};
 
 /// The coarse design of the tests and the README (documented in the file).
@@ -230,6 +232,36 @@ fn coarse_design_converges_writes_everything_and_resumes() {
         "{events:?}"
     );
     assert_same(&reference, &answer(&pieces));
+
+    // The summary reads back through its own type (its numbers to the
+    // parser's last bit); a stage file of another format version is
+    // refused, naming the file and both versions.
+    let read = Summary::read(&dir.join("summary.json")).unwrap();
+    assert_eq!(
+        (read.outcome, read.converged_cycle, read.cycles.len()),
+        (done.summary.outcome.clone(), Some(3), 3)
+    );
+    let system = dir.join("cycle-1/system.json");
+    let text = std::fs::read_to_string(&system)
+        .unwrap()
+        .replace("\"format_version\":1,", "\"format_version\":2,");
+    std::fs::write(&system, text).unwrap();
+    let e = resume(&dir, None, &RunOptions::default(), &|_| {}).unwrap_err();
+    assert!(
+        matches!(
+            &e,
+            DesignError::Read(ReadError::Format {
+                error: FormatError::UnsupportedVersion {
+                    found: Some(2),
+                    expected: 1,
+                    ..
+                },
+                ..
+            })
+        ),
+        "{e}"
+    );
+    assert!(e.to_string().contains("system.json"), "{e}");
     std::fs::remove_dir_all(&dir).ok();
     std::fs::remove_dir_all(&pieces).ok();
     println!("whole test: {:.1} s", clock.elapsed().as_secs_f64());

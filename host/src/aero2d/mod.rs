@@ -11,8 +11,11 @@
 //! - [`history`]: load histories and cycle means; [`friction`]: the laminar
 //!   skin-friction estimate for net thrust; [`plot`]: pictures of a run.
 //! - [`theory`]: Theodorsen, Garrick and Wagner, the references.
+//! - [`case`]: one analysis as `fwav aero2d` runs it: the solver chosen by
+//!   the section, the last cycle's means and periodicity.
 
 pub mod camber;
+pub mod case;
 pub mod friction;
 pub mod history;
 pub mod ldvm;

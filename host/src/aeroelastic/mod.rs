@@ -16,8 +16,10 @@
 //! - [`interface`]: the lattice on the shell mesh, conservative transfer.
 //! - [`floating_frame`]: the shell's elastic dynamics in the flapping frame.
 //! - [`analysis`]: the coupled time stepping, results.
+//! - [`last_cycle`]: what the result says about its last cycle (tip
+//!   deflection, drive power, coupling effort).
 //! - [`handoff`]: the section and pressure histories as the disciplines'
-//!   input files.
+//!   input files, one versioned type each.
 //! - [`series`]: `.vtu`/`.pvd` output of the wing and wake.
 
 pub mod analysis;
@@ -26,6 +28,7 @@ pub mod floating_frame;
 pub mod handoff;
 pub mod interface;
 pub mod kinematics;
+pub mod last_cycle;
 pub mod model;
 pub mod series;
 

@@ -1,19 +1,14 @@
 //! `fwav aero2d`: one 2D unsteady analysis of a plunging/pitching,
 //! optionally deforming section.
 
-use std::f64::consts::PI;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
-use fwav::aero2d::camber::CamberHistory;
-use fwav::aero2d::friction::{friction_history, FWAV_REYNOLDS};
-use fwav::aero2d::ldvm::{
-    cycle_mean_of, cycle_means, cycle_means_until, History, Ldvm, Motion, Settings,
-};
-use fwav::aero2d::naca::{read_points, Naca4, TrailingEdge};
-use fwav::aero2d::panel::{PanelSettings, PanelSolver, SectionShape, ShapeHistory, DEFAULT_PANELS};
+use fwav::aero2d::case::{Case, SectionModel};
+use fwav::aero2d::friction::FWAV_REYNOLDS;
+use fwav::aero2d::motion::Motion;
 use fwav::aero2d::plot::draw;
-use fwav::aero2d::theory::garrick_plunge;
+use fwav::aeroelastic::handoff::SectionFile;
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -52,8 +47,10 @@ pub struct Aero2dArgs {
     /// (default: the built-in FWAV, 3 m/s, 0.075 m chord, sea-level air).
     #[arg(long, default_value_t = FWAV_REYNOLDS)]
     pub reynolds: f64,
-    /// Deformation history of the section over one period, JSON:
-    /// `{"samples": [[[x, y], ...], ...]}`, samples equally spaced in time,
+    /// Deformation history of the section over one period: a
+    /// `section.json` (`fwav system-analysis --out` writes one;
+    /// `{"format": "fwav-section-history", "format_version": 1, "samples":
+    /// [[[x, y], ...], ...]}`), samples equally spaced in time,
     /// in the section's kinematic frame (chords, leading edge at (0, 0),
     /// trailing edge at (1, 0)): for `flat` the mid-line points from the
     /// leading to the trailing edge; for a thick section the whole contour,
@@ -66,61 +63,6 @@ pub struct Aero2dArgs {
     /// Machine-readable output.
     #[arg(long)]
     pub json: bool,
-}
-
-/// The deformation file's layout (`fwav system-analysis --out` writes it
-/// as `section.json`, with a description and the period it covers).
-#[derive(serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-struct DeformationFile {
-    samples: Vec<Vec<(f64, f64)>>,
-    #[serde(default, rename = "description")]
-    _description: Option<String>,
-    #[serde(default, rename = "period_s")]
-    _period_s: Option<f64>,
-}
-
-/// The samples of a deformation file.
-fn read_samples(path: &Path) -> Result<Vec<Vec<(f64, f64)>>> {
-    let text =
-        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
-    let file: DeformationFile = serde_json::from_str(&text)
-        .with_context(|| format!("{}: not a deformation history", path.display()))?;
-    Ok(file.samples)
-}
-
-/// A thin section's deformation: mid-line samples as a camber history.
-fn read_deformation(path: &Path, period: f64) -> Result<CamberHistory> {
-    let samples = read_samples(path)?;
-    let stations = samples.iter().map(Vec::len).max().unwrap_or(0).max(21);
-    CamberHistory::from_section_points(&samples, period, stations)
-        .with_context(|| format!("{}", path.display()))
-}
-
-/// The thick section named by `--section`: a NACA 4-digit name or a point
-/// file.
-fn thick_section(name: &str) -> Result<SectionShape> {
-    let points = match name.parse::<Naca4>() {
-        Ok(naca) => naca
-            .points(DEFAULT_PANELS, TrailingEdge::Closed)
-            .with_context(|| format!("--section {name}"))?,
-        Err(naca_error) => {
-            let path = Path::new(name);
-            if !path.exists() {
-                bail!("--section {name:?}: neither `flat`, a NACA 4-digit name ({naca_error}), nor an existing point file");
-            }
-            read_points(path)
-                .with_context(|| format!("--section {name}"))?
-                .points
-        }
-    };
-    SectionShape::new(&points).with_context(|| format!("--section {name}"))
-}
-
-/// A thick section's deformation: the same file layout, each sample the
-/// closed contour (as many points as the section, in its order).
-fn read_contour_history(path: &Path, period: f64) -> Result<ShapeHistory> {
-    ShapeHistory::new(&read_samples(path)?, period).with_context(|| format!("{}", path.display()))
 }
 
 fn check(a: &Aero2dArgs) -> Result<()> {
@@ -164,118 +106,55 @@ fn check(a: &Aero2dArgs) -> Result<()> {
     Ok(())
 }
 
-/// Cycle means of one run.
-struct Means {
-    ct: f64,
-    cp: f64,
-    efficiency: f64,
-    cd_friction: f64,
-    cl: f64,
-    periodicity: f64,
+/// The case the arguments describe.
+fn case(a: &Aero2dArgs) -> Result<Case> {
+    let section =
+        SectionModel::named(&a.section).with_context(|| format!("--section {}", a.section))?;
+    let deformation = match &a.deformation {
+        Some(path) => Some(SectionFile::read(path)?.points()),
+        None => None,
+    };
+    Ok(Case {
+        section,
+        motion: Motion {
+            reduced_frequency: a.reduced_frequency,
+            plunge_amplitude: a.plunge_amplitude,
+            mean_pitch: a.mean_pitch_deg.to_radians(),
+            pitch_amplitude: a.pitch_amplitude_deg.to_radians(),
+            pitch_phase: a.pitch_phase_deg.to_radians(),
+            pivot: a.pivot,
+        },
+        cycles: a.cycles,
+        lesp_critical: a.lesp_critical,
+        reynolds: a.reynolds,
+        deformation,
+    })
 }
 
-fn means(history: &History, period: f64, dt: f64) -> Means {
-    let (ct, cp, efficiency) = cycle_means(history, period, 1);
-    // The cycle before the last, for the periodicity check: the window ends
-    // one period's worth of steps before the last sample.
-    let steps_per_period = (period / dt).round() as usize;
-    let end_previous = history
-        .time
-        .len()
-        .checked_sub(steps_per_period + 1)
-        .map_or(0.0, |i| history.time[i]);
-    let (ct_prev, _, _) = cycle_means_until(history, period, 1, end_previous);
-    Means {
-        ct,
-        cp,
-        efficiency,
-        cd_friction: cycle_mean_of(history, &history.cd_friction, period, 1),
-        cl: cycle_mean_of(history, &history.cl, period, 1),
-        periodicity: (ct - ct_prev) / ct.abs().max(1e-12),
-    }
-}
-
+/// Runs the command.
 pub fn run(a: &Aero2dArgs) -> Result<()> {
     check(a)?;
-    let k = a.reduced_frequency;
-    let period = PI / k;
-    let motion = Motion {
-        reduced_frequency: k,
-        plunge_amplitude: a.plunge_amplitude,
-        mean_pitch: a.mean_pitch_deg.to_radians(),
-        pitch_amplitude: a.pitch_amplitude_deg.to_radians(),
-        pitch_phase: a.pitch_phase_deg.to_radians(),
-        pivot: a.pivot,
-    };
-    // At least ~100 steps a cycle.
-    let defaults = Settings::default();
-    let settings = Settings {
-        dt: defaults.dt.min(period / 100.0),
-        duration: f64::from(a.cycles) * period,
-        lesp_critical: a.lesp_critical,
-        reynolds: Some(a.reynolds),
-        ..defaults
-    };
-    let (history, wake_count, lev_count) = if a.section == "flat" {
-        let mut solver = Ldvm::new(motion, settings);
-        if let Some(path) = &a.deformation {
-            solver = solver.with_camber(read_deformation(path, period)?);
-        }
-        let history = solver.run();
-        let wake: Vec<_> = solver
-            .wake()
-            .iter()
-            .chain(solver.leading_edge_vortices())
-            .copied()
-            .collect();
-        if let Some(png) = &a.plot {
-            draw(&history, &wake, &solver.section_points(), Some(period), png)
-                .with_context(|| format!("--plot {}", png.display()))?;
-        }
-        (
-            history,
-            solver.wake().len(),
-            solver.leading_edge_vortices().len(),
+    let case = case(a)?;
+    let run = case.run().with_context(|| match &a.deformation {
+        Some(path) => format!("--section {} --deformation {}", a.section, path.display()),
+        None => format!("--section {}", a.section),
+    })?;
+    if let Some(png) = &a.plot {
+        draw(
+            &run.history,
+            &run.vortices,
+            &run.body,
+            Some(run.period),
+            png,
         )
-    } else {
-        let section = thick_section(&a.section)?;
-        let panel_settings = PanelSettings {
-            dt: settings.dt,
-            duration: settings.duration,
-            far_wake: settings.far_wake,
-        };
-        let mut solver = PanelSolver::new(&section, motion, panel_settings)
-            .with_context(|| format!("--section {}", a.section))?;
-        if let Some(path) = &a.deformation {
-            solver = solver
-                .with_shape_history(read_contour_history(path, period)?)
-                .with_context(|| format!("--deformation {}", path.display()))?;
-        }
-        let mut history = solver.run();
-        history.cd_friction = friction_history(&motion, &history.time, a.reynolds);
-        if let Some(png) = &a.plot {
-            let t = settings.duration;
-            let (h, _, alpha, _) = motion.at(t);
-            let (s, c) = alpha.sin_cos();
-            let p = a.pivot;
-            let body: Vec<(f64, f64)> = solver
-                .surface_pressure()
-                .0
-                .iter()
-                .map(|&[x, y]| (p + (x - p) * c + y * s, h - (x - p) * s + y * c))
-                .collect();
-            draw(&history, solver.wake(), &body, Some(period), png)
-                .with_context(|| format!("--plot {}", png.display()))?;
-        }
-        (history, solver.wake().len(), 0)
-    };
-    let m = means(&history, period, settings.dt);
-    let net = m.ct - m.cd_friction;
-    let rigid_plunge = a.pitch_amplitude_deg == 0.0
-        && a.mean_pitch_deg == 0.0
-        && a.deformation.is_none()
-        && a.lesp_critical.is_none();
-    let garrick = rigid_plunge.then(|| garrick_plunge(k, a.plunge_amplitude));
+        .with_context(|| format!("--plot {}", png.display()))?;
+    }
+    let m = run.means();
+    let net = m.net_ct();
+    let k = a.reduced_frequency;
+    let (wake_count, lev_count) = (run.wake_vortices, run.leading_edge_vortices);
+    let garrick = case.garrick();
+    let flat = case.section.is_flat();
     if a.json {
         let mut v = serde_json::json!({
             "section": a.section,
@@ -289,18 +168,18 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
             "lesp_critical": a.lesp_critical,
             "reynolds": a.reynolds,
             "cycles": a.cycles,
-            "time_step_chords": settings.dt,
+            "time_step_chords": run.dt,
             "mean_cl": m.cl,
             "mean_ct": m.ct,
             "mean_cd_friction": m.cd_friction,
             "mean_ct_net": net,
             "mean_cp": m.cp,
             "efficiency": m.efficiency,
-            "net_efficiency": net / m.cp,
+            "net_efficiency": m.net_efficiency(),
             "mean_ct_change_last_two_cycles": m.periodicity,
             "wake_vortices": wake_count,
             "leading_edge_vortices": lev_count,
-            "model": if a.section == "flat" { "thin line (LDVM)" } else { "thick section (panel)" },
+            "model": if flat { "thin line (LDVM)" } else { "thick section (panel)" },
         });
         if let Some((gct, gcp, geta)) = garrick {
             v["garrick"] = serde_json::json!({"mean_ct": gct, "mean_cp": gcp, "efficiency": geta});
@@ -314,7 +193,7 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
             a.mean_pitch_deg,
             a.pitch_amplitude_deg,
             a.cycles,
-            settings.dt,
+            run.dt,
             if a.deformation.is_some() {
                 ", deforming"
             } else {
@@ -323,7 +202,7 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         );
         println!(
             "  last cycle: CL {:.4}  CT {:.5} (net of friction {net:.5}, Re {:.0})  CP {:.5}  efficiency {:.3} (net {:.3})",
-            m.cl, m.ct, a.reynolds, m.cp, m.efficiency, net / m.cp
+            m.cl, m.ct, a.reynolds, m.cp, m.efficiency, m.net_efficiency()
         );
         println!(
             "  CT change from the cycle before: {:+.2} %; {} leading-edge vortices shed",

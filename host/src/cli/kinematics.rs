@@ -7,7 +7,7 @@ use std::time::Instant;
 use anyhow::{Context, Result};
 use fwav::aeroelastic::handoff::SectionFile;
 use fwav::discipline::cache::EvaluationCache;
-use fwav::discipline::kinematic::{optimize, Weights};
+use fwav::discipline::kinematic::{optimize, KinematicResult, Weights};
 use fwav::discipline::section::SectionCase;
 use fwav::optimize::nsga2::Nsga2Config;
 
@@ -47,11 +47,7 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
         ..SectionCase::fwav_mid_span()
     };
     if let Some(path) = &a.section {
-        let text =
-            std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
-        let file = SectionFile::from_json(&text)
-            .with_context(|| format!("{}: not a section history", path.display()))?;
-        case.deformation = file.samples;
+        case.deformation = SectionFile::read(path)?.samples;
     }
     let cache = match &a.cache {
         Some(path) => EvaluationCache::load(path)?,
@@ -107,6 +103,14 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
         println!("{out:#}");
         return Ok(());
     }
+    print_result(&result);
+    println!("{seconds:.1} s, {reused} evaluations reused");
+    Ok(())
+}
+
+/// The discipline's run as a person reads it: the initial design, each
+/// candidate, the surfaces' quality and the choice.
+fn print_result(result: &KinematicResult) {
     let show = |d: &[f64; 4]| {
         format!(
             "{:.2} Hz, ±{:.1}°, mean {:+.1}°, stroke plane {:.1}°",
@@ -157,6 +161,4 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
         ),
         None => println!("chosen: the initial design (no candidate beats it)"),
     }
-    println!("{seconds:.1} s, {reused} evaluations reused");
-    Ok(())
 }

@@ -10,7 +10,6 @@ use fwav::aeroelastic::config::SystemConfig;
 use fwav::aeroelastic::handoff;
 use fwav::aeroelastic::series::write_series;
 use fwav::aeroelastic::{run, SystemResult};
-use fwav::files::write_atomic;
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -79,32 +78,11 @@ pub fn run_command(a: &SystemArgs) -> Result<()> {
         write_outputs(dir, &wing.wing.mesh.elements, &result)?;
     }
     let steps = result.steps.len();
-    let max_sub = result
-        .steps
-        .iter()
-        .map(|s| s.subiterations)
-        .max()
-        .unwrap_or(0);
-    let mean_sub = result
-        .steps
-        .iter()
-        .map(|s| s.subiterations as f64)
-        .sum::<f64>()
-        / steps.max(1) as f64;
-    let tip_amplitude = {
-        let last = &result.steps[steps - config.analysis.steps_per_cycle..];
-        let z = last.iter().map(|s| s.tip_displacement_m[2]);
-        let (lo, hi) = z.fold((f64::MAX, f64::MIN), |(l, h), v| (l.min(v), h.max(v)));
-        0.5 * (hi - lo)
-    };
-    let kinematics = config.kinematics();
-    let drive_power = {
-        let last = &result.steps[steps - config.analysis.steps_per_cycle..];
-        last.iter()
-            .map(|s| s.drive_torque_nm * kinematics.angle(s.time_s).1)
-            .sum::<f64>()
-            / last.len() as f64
-    };
+    let steps_per_cycle = config.analysis.steps_per_cycle;
+    let coupling = result.coupling_effort();
+    let (mean_sub, max_sub) = (coupling.mean, coupling.max);
+    let tip_amplitude = result.tip_deflection_amplitude_m(steps_per_cycle);
+    let drive_power = result.mean_drive_power_w(&config.kinematics(), steps_per_cycle);
     if a.json {
         let summary = serde_json::json!({
             "model": if config.analysis.rigid { "uvlm, rigid wing" } else { "uvlm + shell (floating frame), strongly coupled" },
@@ -157,9 +135,7 @@ pub fn run_command(a: &SystemArgs) -> Result<()> {
 
 fn write_outputs(dir: &Path, elements: &[[usize; 4]], result: &SystemResult) -> Result<()> {
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-    write_atomic(dir, "section.json", handoff::section_json(result))?;
-    write_atomic(dir, "pressure.json", handoff::pressure_json(result))?;
-    write_atomic(dir, "steps.csv", handoff::steps_csv(result))?;
+    handoff::write(dir, result)?;
     write_series(dir, elements, &result.snapshots)?;
     Ok(())
 }

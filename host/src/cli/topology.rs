@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{Context, Result};
+use fwav::aeroelastic::handoff::PressureFile;
 use fwav::aeroelastic::run;
 use fwav::files::write_atomic;
 use fwav::shell::vtu::{self, Field};
@@ -45,12 +46,8 @@ pub fn run_command(a: &TopologyArgs) -> Result<()> {
     let show = !a.quiet && std::io::stderr().is_terminal();
     let started = Instant::now();
     let pressure = match &a.pressure {
-        Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .with_context(|| format!("reading {}", path.display()))?;
-            PressureHistory::from_json(&text, elements)
-                .with_context(|| format!("{}", path.display()))?
-        }
+        Some(path) => PressureHistory::from_file(PressureFile::read(path)?, elements)
+            .with_context(|| format!("{}", path.display()))?,
         None => {
             let result = run(
                 &wing,
@@ -106,7 +103,7 @@ ESLSO cycle {}: strain energy {:.4e} J, mass fraction {:.3}, peak displacement {
             "converged": result.converged,
             "cycles": result.cycles,
             "layout_mass_fraction": mass,
-            "carbon_elements": result.layout.iter().filter(|&&c| c).count(),
+            "carbon_elements": result.carbon_elements(),
             "elements": elements,
             "seconds": seconds,
             "out": a.out,

@@ -4,9 +4,11 @@
 use std::path::PathBuf;
 
 use crate::aeroelastic::config::ConfigError;
+use crate::aeroelastic::handoff::HandoffError;
 use crate::aeroelastic::SystemError;
 use crate::discipline::cache::CacheError;
 use crate::discipline::kinematic::KinematicError;
+use crate::file_format::{FormatError, ReadError};
 use crate::files::WriteError;
 use crate::topology::eslso::EslsoError;
 use crate::topology::pressure::PressureError;
@@ -30,6 +32,17 @@ pub enum DesignError {
     /// A file could not be written.
     #[error(transparent)]
     Write(#[from] WriteError),
+    /// A versioned file of the run (`system.json`, `section.json`,
+    /// `pressure.json`) could not be read, or is of another kind or
+    /// version.
+    #[error(transparent)]
+    Read(#[from] ReadError),
+    /// A versioned file's text could not be made.
+    #[error(transparent)]
+    Format(#[from] FormatError),
+    /// The handoff files of a system analysis could not be written.
+    #[error(transparent)]
+    Handoff(#[from] HandoffError),
     /// A file of the run is not what the driver wrote.
     #[error("{path}: {message}")]
     State {

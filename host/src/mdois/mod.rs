@@ -10,7 +10,10 @@
 //!
 //! - [`config`]: the `[mdois]` table (cycle cap, "unchanged" tolerances).
 //! - [`driver`]: the cycle loop, [`start`] and [`resume`].
-//! - [`stage`]: the three stages as functions from files to files.
+//! - [`stage`]: the three stages as functions from files to files (the
+//!   computation, and the order of reading, computing and writing).
+//! - [`records`]: each stage's JSON record (`system.json`,
+//!   `kinematics.json`, `topology.json`) and its reading back.
 //! - [`state`]: which stages are finished (`state.json`), resumable.
 //! - [`progress`]: what the driver reports as it goes.
 //! - [`summary`]: `summary.json`, per cycle and initial against final.
@@ -29,6 +32,7 @@ pub mod outputs;
 pub mod plot;
 pub mod profile;
 pub mod progress;
+pub mod records;
 pub mod report;
 pub mod stage;
 pub mod state;

@@ -1,34 +1,69 @@
 //! The run's result files: `summary.json` (rewritten after every stage,
-//! `"finished": false` until the end), and at the end `topology.vtu` and
-//! `topology.png` (the final layout), the plots (`convergence.png`,
-//! `pareto.png`, `main-effects.png`, `thrust-history.png`),
-//! `kinematics.json` and `report.md`. Every file is written atomically.
+//! `"finished": false` until the end), each structural discipline's
+//! `wing-cycle-N.vtu`, and at the end `topology.vtu` and `topology.png`
+//! (the final layout), the plots (`convergence.png`, `pareto.png`,
+//! `main-effects.png`, `thrust-history.png`), `kinematics.json` and
+//! `report.md`. Every file is written atomically. Nothing here computes a
+//! stage: it draws and writes what the records hold.
 
 use std::path::Path;
 
 use crate::discipline::plot as discipline_plot;
 use crate::files::write_atomic;
 use crate::shell::vtu::{self, Field};
-use crate::topology::eslso::transform;
+use crate::topology::eslso::{transform, DesignProblem, EslsoResult};
 use crate::topology::picture;
+use crate::topology::pressure::PressureHistory;
 
 use super::error::DesignError;
 use super::plot;
 use super::profile::write_kinematics;
+use super::records::{load_kinematics, load_system, load_topology};
 use super::report;
-use super::stage::{layout_densities, load_kinematics, load_system, load_topology, Context};
+use super::stage::{layout_densities, Context};
 use super::state::{Outcome, RunState, Stage};
 use super::summary::Summary;
 
 /// The summary's file name.
-pub const SUMMARY_FILE: &str = "summary.json";
+pub const SUMMARY_FILE: &str = super::summary::FORMAT.file;
 
 /// Writes `summary.json`.
 pub fn write_summary(dir: &Path, summary: &Summary) -> Result<(), DesignError> {
-    let text =
-        serde_json::to_string_pretty(summary).map_err(|e| DesignError::output(SUMMARY_FILE, e))?;
-    write_atomic(dir, SUMMARY_FILE, text)?;
+    write_atomic(dir, SUMMARY_FILE, summary.to_json()?)?;
     Ok(())
+}
+
+/// Writes `wing-cycle-N.vtu`: the wing of `cycle`'s structural discipline
+/// with the new layout (`result`), the `analysed` densities, the last SIMP
+/// densities, the design domain and the cycle-mean pressure jump. Returns
+/// the file's name (relative to `dir`).
+pub(crate) fn write_cycle_wing(
+    dir: &Path,
+    cycle: usize,
+    problem: &DesignProblem,
+    analysed: &[f64],
+    result: &EslsoResult,
+    pressure: &PressureHistory,
+) -> Result<String, DesignError> {
+    let vtu_name = format!("wing-cycle-{cycle}.vtu");
+    let layout = layout_densities(&result.layout);
+    let mean_pressure: Vec<f64> = (0..problem.mesh.elements.len())
+        .map(|e| pressure.samples.iter().map(|s| s[e]).sum::<f64>() / pressure.samples.len() as f64)
+        .collect();
+    let domain = layout_densities(&problem.design);
+    vtu::write(
+        &dir.join(&vtu_name),
+        &problem.mesh,
+        &[
+            Field::CellScalar("carbon", &layout),
+            Field::CellScalar("carbon_analysed", analysed),
+            Field::CellScalar("simp_density", &result.densities),
+            Field::CellScalar("design_domain", &domain),
+            Field::CellScalar("mean_pressure_jump_pa", &mean_pressure),
+        ],
+    )
+    .map_err(|e| DesignError::output(&vtu_name, e))?;
+    Ok(vtu_name)
 }
 
 /// A temporary name for a picture, renamed into place once drawn (the

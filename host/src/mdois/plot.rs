@@ -12,7 +12,7 @@ use plotters::prelude::*;
 
 use crate::discipline::kinematic::DesignSpace;
 
-use super::stage::SystemRecord;
+use super::records::SystemRecord;
 use super::summary::Summary;
 
 /// A picture could not be drawn (the crate's one drawing error).

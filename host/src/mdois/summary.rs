@@ -10,18 +10,25 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
+use crate::file_format::{FileFormat, FormatError, ReadError};
+
 use crate::aeroelastic::config::SystemConfig;
 use crate::discipline::section::SectionResult;
 
 use super::error::DesignError;
 use super::profile::{actuator_check, ActuatorCheck};
-use super::stage::{
-    load_kinematics, load_system, load_topology, KinematicRecord, KinematicValues, TopologyRecord,
+use super::records::{
+    load_kinematics, load_system, load_topology, KinematicRecord, SystemRecord, TopologyRecord,
 };
-use super::state::{Outcome, RunState, Stage};
+use super::stage::KinematicValues;
+use super::state::{Outcome, RunState, Stage, StageRecord};
 
-/// The `format` value of `summary.json`.
-pub const SUMMARY_FORMAT: &str = "fwav-design-summary-1";
+/// The kind of file and the version this build reads and writes.
+pub const FORMAT: FileFormat = FileFormat {
+    file: "summary.json",
+    format: "fwav-design-summary",
+    version: 1,
+};
 
 /// How much the design changed in a cycle's disciplines, and whether that
 /// counts as unchanged ([`super::config::MdoisConfig`]).
@@ -196,9 +203,12 @@ pub struct Comparison {
 
 /// The whole `summary.json`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Summary {
-    /// [`SUMMARY_FORMAT`].
+    /// Always [`FORMAT`]'s `format`.
     pub format: String,
+    /// [`FORMAT`]'s `version`.
+    pub format_version: u32,
     /// Whether the run is over.
     pub finished: bool,
     /// `"converged"`, `"cycle cap reached"` or `"unfinished"`.
@@ -229,6 +239,82 @@ pub struct Summary {
     /// `kinematics.json` flies (once the run is over).
     #[serde(default)]
     pub actuator: Option<ActuatorCheck>,
+}
+
+impl Summary {
+    /// The file's text (pretty-printed: a person reads it).
+    pub fn to_json(&self) -> Result<String, FormatError> {
+        FORMAT.to_json(self, true)
+    }
+
+    /// Parses the text of a `summary.json` (its header first).
+    pub fn from_json(text: &str) -> Result<Self, FormatError> {
+        FORMAT.parse(text)
+    }
+
+    /// Reads the `summary.json` at `path`.
+    pub fn read(path: &Path) -> Result<Self, ReadError> {
+        FORMAT.read(path)
+    }
+}
+
+impl SystemSummary {
+    /// The summary of a system analysis record and its stage record.
+    fn of(s: &SystemRecord, r: &StageRecord) -> Self {
+        Self {
+            ct: s.means.ct,
+            cl: s.means.cl,
+            cp: s.means.cp,
+            efficiency: s.means.efficiency,
+            ct_change_last_two_cycles: s.means.ct_change_last_two_cycles,
+            tip_deflection_amplitude_m: s.tip_deflection_amplitude_m,
+            wing_mass_kg: s.wing_mass_kg,
+            seconds: r.seconds,
+            run: r.run,
+        }
+    }
+}
+
+impl KinematicsSummary {
+    /// The summary of an aerodynamic discipline record and its stage
+    /// record.
+    fn of(k: &KinematicRecord, r: &StageRecord) -> Self {
+        Self {
+            analysed_2d: k.result.initial.result.clone().ok(),
+            chosen: k.chosen.clone(),
+            proposed: k.proposed,
+            proposed_2d: k.proposed_2d,
+            evaluations_reused: k.evaluations_reused,
+            seconds: r.seconds,
+            run: r.run,
+        }
+    }
+}
+
+impl TopologySummary {
+    /// The summary of a structural discipline record and its stage
+    /// record.
+    fn of(t: &TopologyRecord, r: &StageRecord) -> Self {
+        Self {
+            strain_energy_j: t
+                .result
+                .cycles
+                .first()
+                .map_or(f64::NAN, |c| c.strain_energy_j),
+            final_strain_energy_j: t
+                .result
+                .cycles
+                .last()
+                .map_or(f64::NAN, |c| c.strain_energy_j),
+            mass_fraction: t.mass_fraction,
+            carbon_elements: t.result.carbon_elements(),
+            elements_changed: t.elements_changed,
+            eslso_cycles: t.result.cycles.len(),
+            eslso_converged: t.result.converged,
+            seconds: r.seconds,
+            run: r.run,
+        }
+    }
 }
 
 /// Builds the summary of the run in `dir` from its `state`.
@@ -271,45 +357,11 @@ pub fn build(config: &SystemConfig, dir: &Path, state: &RunState) -> Result<Summ
             cycle,
             kinematics: analysed,
             carbon_mass_fraction,
-            system: system.as_ref().map(|(s, r)| SystemSummary {
-                ct: s.means.ct,
-                cl: s.means.cl,
-                cp: s.means.cp,
-                efficiency: s.means.efficiency,
-                ct_change_last_two_cycles: s.means.ct_change_last_two_cycles,
-                tip_deflection_amplitude_m: s.tip_deflection_amplitude_m,
-                wing_mass_kg: s.wing_mass_kg,
-                seconds: r.seconds,
-                run: r.run,
-            }),
-            aerodynamic: kinematics.as_ref().map(|(k, r)| KinematicsSummary {
-                analysed_2d: k.result.initial.result.clone().ok(),
-                chosen: k.chosen.clone(),
-                proposed: k.proposed,
-                proposed_2d: k.proposed_2d,
-                evaluations_reused: k.evaluations_reused,
-                seconds: r.seconds,
-                run: r.run,
-            }),
-            structural: topology.as_ref().map(|(t, r)| TopologySummary {
-                strain_energy_j: t
-                    .result
-                    .cycles
-                    .first()
-                    .map_or(f64::NAN, |c| c.strain_energy_j),
-                final_strain_energy_j: t
-                    .result
-                    .cycles
-                    .last()
-                    .map_or(f64::NAN, |c| c.strain_energy_j),
-                mass_fraction: t.mass_fraction,
-                carbon_elements: t.result.layout.iter().filter(|&&c| c).count(),
-                elements_changed: t.elements_changed,
-                eslso_cycles: t.result.cycles.len(),
-                eslso_converged: t.result.converged,
-                seconds: r.seconds,
-                run: r.run,
-            }),
+            system: system.as_ref().map(|(s, r)| SystemSummary::of(s, r)),
+            aerodynamic: kinematics
+                .as_ref()
+                .map(|(k, r)| KinematicsSummary::of(k, r)),
+            structural: topology.as_ref().map(|(t, r)| TopologySummary::of(t, r)),
             change: match (&kinematics, &topology) {
                 (Some((k, _)), Some((t, _))) => Some(change(config, k, t)),
                 _ => None,
@@ -353,7 +405,8 @@ pub fn build(config: &SystemConfig, dir: &Path, state: &RunState) -> Result<Summ
         _ => None,
     };
     Ok(Summary {
-        format: SUMMARY_FORMAT.to_string(),
+        format: FORMAT.format.to_string(),
+        format_version: FORMAT.version,
         finished: state.outcome.is_some(),
         outcome: outcome.to_string(),
         converged_cycle,

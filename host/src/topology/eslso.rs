@@ -235,6 +235,11 @@ impl EslsoResult {
             .map(|&c| f64::from(u8::from(c)))
             .collect()
     }
+
+    /// Elements with carbon in the layout (the spar included).
+    pub fn carbon_elements(&self) -> usize {
+        self.layout.iter().filter(|&&c| c).count()
+    }
 }
 
 /// Why the optimization stopped short.

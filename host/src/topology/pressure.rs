@@ -5,18 +5,20 @@
 //! non-design mylar layer at every time step of the nonlinear dynamic
 //! analysis).
 //!
-//! The file form is the `pressure.json` that `fwav system-analysis` writes:
-//! `{"dt_s": 0.00227, "samples": [[p_0, p_1, ...], ...]}`, one sample a
-//! step, sample `k` at `(k + 1) dt` after the start of a period, pressures
-//! in Pa (lower minus upper surface, positive along the element normal).
+//! The file form is the `pressure.json` that `fwav system-analysis` writes
+//! ([`PressureFile`]): one sample a step, sample `k` at `(k + 1) dt` after
+//! the start of a period, pressures in Pa (lower minus upper surface,
+//! positive along the element normal).
+//!
+//! May import: the handoff file type of [`crate::aeroelastic::handoff`].
 
-use serde::{Deserialize, Serialize};
+use crate::aeroelastic::handoff::PressureFile;
+use crate::file_format::FormatError;
 
 /// A periodic pressure history, Pa per element.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct PressureHistory {
     /// Time between samples, s.
-    #[serde(rename = "dt_s")]
     pub dt: f64,
     /// Pressure jump per element, one sample a step over one period;
     /// sample `k` is at `(k + 1) dt`, so the last is at the period's end
@@ -27,9 +29,9 @@ pub struct PressureHistory {
 /// What is wrong with a pressure history.
 #[derive(Debug, thiserror::Error)]
 pub enum PressureError {
-    /// Not the JSON shape described in the module docs.
-    #[error("pressure history is not {{\"dt_s\": number, \"samples\": [[Pa, ...], ...]}}: {0}")]
-    Json(#[from] serde_json::Error),
+    /// Not a `pressure.json` of this version ([`PressureFile`]).
+    #[error(transparent)]
+    File(#[from] FormatError),
     /// No samples.
     #[error("pressure history has no samples")]
     Empty,
@@ -68,12 +70,16 @@ impl PressureHistory {
         Ok(history)
     }
 
-    /// Reads the `pressure.json` form (module docs) and checks it against
-    /// a mesh of `elements` elements.
+    /// Reads the `pressure.json` form ([`PressureFile`]) and checks it
+    /// against a mesh of `elements` elements.
     pub fn from_json(text: &str, elements: usize) -> Result<Self, PressureError> {
-        let history: Self = serde_json::from_str(text)?;
-        history.check(elements)?;
-        Ok(history)
+        Self::from_file(PressureFile::from_json(text)?, elements)
+    }
+
+    /// The history of a `pressure.json`, checked against a mesh of
+    /// `elements` elements.
+    pub fn from_file(file: PressureFile, elements: usize) -> Result<Self, PressureError> {
+        Self::new(file.dt_s, file.samples, elements)
     }
 
     /// Checks the step, the sample count and shape and every value.
@@ -126,22 +132,30 @@ mod tests {
     /// refused with its own error.
     #[test]
     fn reads_and_refuses() {
-        let ok = PressureHistory::from_json(r#"{"dt_s": 0.5, "samples": [[1, 2], [3, -4]]}"#, 2)
-            .unwrap();
+        let file = |body: &str| {
+            format!(r#"{{"format": "fwav-pressure-history", "format_version": 1, {body}}}"#)
+        };
+        let ok =
+            PressureHistory::from_json(&file(r#""dt_s": 0.5, "samples": [[1, 2], [3, -4]]"#), 2)
+                .unwrap();
         assert_eq!(ok.period(), 1.0);
         assert_eq!(ok.peak(), 4.0);
-        let bad = |text: &str| PressureHistory::from_json(text, 2).unwrap_err();
-        assert!(matches!(bad("{}"), PressureError::Json(_)));
+        let bad = |body: &str| PressureHistory::from_json(&file(body), 2).unwrap_err();
+        assert!(matches!(bad(r#""dt_s": 1"#), PressureError::File(_)));
         assert!(matches!(
-            bad(r#"{"dt_s": 0, "samples": [[1, 2]]}"#),
+            PressureHistory::from_json(r#"{"dt_s": 1, "samples": [[1, 2]]}"#, 2).unwrap_err(),
+            PressureError::File(FormatError::WrongFormat { .. })
+        ));
+        assert!(matches!(
+            bad(r#""dt_s": 0, "samples": [[1, 2]]"#),
             PressureError::Step(_)
         ));
         assert!(matches!(
-            bad(r#"{"dt_s": 1, "samples": []}"#),
+            bad(r#""dt_s": 1, "samples": []"#),
             PressureError::Empty
         ));
         assert!(matches!(
-            bad(r#"{"dt_s": 1, "samples": [[1, 2], [1]]}"#),
+            bad(r#""dt_s": 1, "samples": [[1, 2], [1]]"#),
             PressureError::Shape { sample: 1, .. }
         ));
         let nan = PressureHistory::new(1.0, vec![vec![1.0, f64::NAN]], 2).unwrap_err();
