@@ -6,8 +6,8 @@
 
 use std::time::Instant;
 
-use fwav::aeroelastic::config::SystemConfig;
 use fwav::aeroelastic::run;
+use fwav::config::SystemConfig;
 use fwav::discipline::cache::EvaluationCache;
 use fwav::discipline::kinematic::{optimize, Weights};
 use fwav::discipline::section::SectionCase;

@@ -21,7 +21,8 @@ pub struct Template {
 struct Commented {
     name: &'static str,
     doc: &'static str,
-    keys: Vec<(&'static str, String)>,
+    /// Each key with its doc and its range text.
+    keys: Vec<(&'static str, &'static str, String)>,
 }
 
 /// Why a template could not be rendered: the TOML and the declarations
@@ -70,7 +71,7 @@ impl Template {
             keys: table
                 .settings
                 .iter()
-                .map(|s| (s.key, s.comment()))
+                .map(|s| (s.key, s.doc, s.limits().to_string()))
                 .collect(),
         });
         self
@@ -97,7 +98,7 @@ impl Template {
                     }
                 })?;
                 out.push('\n');
-                out.push_str(&wrap(t.doc));
+                out.push_str(&wrap(t.doc, None));
                 out.push_str(trimmed);
                 out.push('\n');
                 table = Some(t);
@@ -108,13 +109,13 @@ impl Template {
                     key: key.to_string(),
                 };
                 let t = table.ok_or_else(undeclared)?;
-                let (k, comment) = t
+                let (k, doc, limits) = t
                     .keys
                     .iter()
-                    .find(|(k, _)| *k == key)
+                    .find(|(k, _, _)| *k == key)
                     .ok_or_else(undeclared)?;
                 seen.push((t.name, k));
-                out.push_str(&wrap(comment));
+                out.push_str(&wrap(doc, Some(limits)));
                 out.push_str(trimmed);
                 out.push('\n');
             } else if !trimmed.is_empty() {
@@ -123,7 +124,7 @@ impl Template {
             }
         }
         for t in &self.tables {
-            for (k, _) in &t.keys {
+            for (k, _, _) in &t.keys {
                 if !seen.contains(&(t.name, k)) {
                     return Err(TemplateError::Missing {
                         table: t.name,
@@ -141,12 +142,21 @@ fn comment_line(text: &str) -> String {
     format!("# {text}")
 }
 
-/// `text` as `# ` comment lines of at most [`WIDTH`] columns (a longer
-/// word stands alone), each ending in a newline.
-fn wrap(text: &str) -> String {
+/// `doc` as `# ` comment lines of at most [`WIDTH`] columns (a longer
+/// word stands alone), each ending in a newline; with `limits`, the
+/// [`crate::setting::Setting::comment`] form `<doc>; <limits>.`, the
+/// limits never broken across lines.
+fn wrap(doc: &str, limits: Option<&str>) -> String {
+    let mut words: Vec<String> = doc.split_whitespace().map(str::to_string).collect();
+    if let Some(limits) = limits {
+        match words.last_mut() {
+            Some(last) => *last = format!("{last}; {limits}."),
+            None => words.push(format!("{limits}.")),
+        }
+    }
     let mut out = String::new();
     let mut line = String::from("#");
-    for word in text.split_whitespace() {
+    for word in &words {
         if line.len() > 1 && line.len() + 1 + word.len() > WIDTH {
             out.push_str(&line);
             out.push('\n');

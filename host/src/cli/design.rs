@@ -9,9 +9,9 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use anyhow::{bail, Context, Result};
-use fwav::aeroelastic::config::SystemConfig;
+use fwav::config::template::commented_toml;
+use fwav::config::SystemConfig;
 use fwav::mdois::summary::Summary;
-use fwav::mdois::template::commented_toml;
 use fwav::mdois::{resume, start, Event, Outcome, Progress, RunOptions, Stage};
 
 /// `fwav design`'s options.

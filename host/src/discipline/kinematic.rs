@@ -34,7 +34,10 @@ use super::section::{SectionCase, SectionResult};
 /// The four design variables and their three levels (physical units:
 /// Hz and degrees, as a person sets them), low, middle (the initial
 /// design) and high; the RSM and NSGA-II search between low and high.
+/// Its fields are the level keys of the design file's `[design]` table
+/// (a missing one keeps [`DesignSpace::fwav`]'s).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct DesignSpace {
     /// Flapping frequency levels, Hz.
     pub frequency_hz: [f64; 3],
@@ -44,6 +47,13 @@ pub struct DesignSpace {
     pub mean_angle_deg: [f64; 3],
     /// Stroke-plane inclination levels, degrees.
     pub stroke_plane_deg: [f64; 3],
+}
+
+impl Default for DesignSpace {
+    /// [`DesignSpace::fwav`].
+    fn default() -> Self {
+        Self::fwav()
+    }
 }
 
 impl DesignSpace {

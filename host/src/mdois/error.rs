@@ -3,8 +3,8 @@
 
 use std::path::PathBuf;
 
-use crate::aeroelastic::config::ConfigError;
 use crate::aeroelastic::SystemError;
+use crate::config::ConfigError;
 use crate::discipline::cache::CacheError;
 use crate::discipline::kinematic::KinematicError;
 use crate::files::WriteError;

@@ -17,10 +17,10 @@ use std::time::Instant;
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 
-use crate::aeroelastic::config::SystemConfig;
 use crate::aeroelastic::handoff::{self, SectionFile};
 use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::aeroelastic::{run, CycleMeans, StepRecord, WingModel};
+use crate::config::SystemConfig;
 use crate::discipline::cache::EvaluationCache;
 use crate::discipline::kinematic::{optimize_reporting, KinematicResult, Weights};
 use crate::discipline::section::{SectionCase, SectionResult};

@@ -10,7 +10,7 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
-use crate::aeroelastic::config::SystemConfig;
+use crate::config::SystemConfig;
 use crate::discipline::section::SectionResult;
 
 use super::error::DesignError;
@@ -24,7 +24,7 @@ use super::state::{Outcome, RunState, Stage};
 pub const SUMMARY_FORMAT: &str = "fwav-design-summary-1";
 
 /// How much the design changed in a cycle's disciplines, and whether that
-/// counts as unchanged ([`super::config::MdoisConfig`]).
+/// counts as unchanged ([`crate::config::MdoisConfig`]).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CycleChange {
     /// Largest move of a kinematic variable, as a fraction of its level
