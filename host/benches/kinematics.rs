@@ -38,7 +38,7 @@ fn main() {
     let result = optimize(
         &case,
         &config.design_space(),
-        [11.0, 30.0, 0.0, 90.0],
+        fwav::aeroelastic::kinematics::FlappingKinematics::from_degrees([11.0, 30.0, 0.0, 90.0]),
         Weights {
             thrust: 1.0,
             efficiency: 1.0,

@@ -204,10 +204,10 @@ fn print_summary(s: &Summary, dir: &Path) {
         let mut line = format!(
             "cycle {}: {:.2} Hz, ±{:.1}°, mean {:+.1}°, stroke plane {:.1}°, carbon {:.3}",
             c.cycle,
-            k.frequency_hz,
-            k.amplitude_deg,
-            k.mean_angle_deg,
-            k.stroke_plane_deg,
+            k.frequency,
+            k.amplitude_deg(),
+            k.mean_angle_deg(),
+            k.stroke_plane_deg(),
             c.carbon_mass_fraction
         );
         if let Some(sys) = &c.system {

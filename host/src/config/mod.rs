@@ -53,7 +53,6 @@ use crate::shell::wing::Planform;
 
 pub use design::DesignConfig;
 pub use flight::FlightConfig;
-pub use kinematics::KinematicsConfig;
 pub use mdois::MdoisConfig;
 pub use topology::TopologyConfig;
 pub use wing::WingConfig;
@@ -91,7 +90,7 @@ pub struct SystemConfig {
     /// The wing.
     pub wing: WingConfig,
     /// Its flapping kinematics.
-    pub kinematics: KinematicsConfig,
+    pub kinematics: FlappingKinematics,
     /// The flight condition.
     pub flight: FlightConfig,
     /// Solver settings.
@@ -148,9 +147,9 @@ impl SystemConfig {
         )?)
     }
 
-    /// The kinematics in SI.
+    /// The initial kinematics (SI).
     pub fn kinematics(&self) -> FlappingKinematics {
-        self.kinematics.si()
+        self.kinematics
     }
 
     /// The kinematic design space (a copy of `design.space`).

@@ -37,63 +37,12 @@ use super::state::{Stage, StageRecord};
 /// The evaluation cache's file in the run's directory.
 pub const CACHE_FILE: &str = "evaluations.json";
 
-/// The kinematic design variables as a person reads them.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct KinematicValues {
-    /// Flapping frequency, Hz.
-    pub frequency_hz: f64,
-    /// Flapping amplitude, degrees.
-    pub amplitude_deg: f64,
-    /// Mean flapping angle, degrees.
-    pub mean_angle_deg: f64,
-    /// Stroke-plane inclination, degrees.
-    pub stroke_plane_deg: f64,
-}
-
-impl KinematicValues {
-    /// From the discipline's `[f Hz, A deg, mean deg, stroke deg]`.
-    pub fn from_array(x: [f64; 4]) -> Self {
-        Self {
-            frequency_hz: x[0],
-            amplitude_deg: x[1],
-            mean_angle_deg: x[2],
-            stroke_plane_deg: x[3],
-        }
-    }
-
-    /// As the discipline's `[f Hz, A deg, mean deg, stroke deg]`.
-    pub fn array(&self) -> [f64; 4] {
-        [
-            self.frequency_hz,
-            self.amplitude_deg,
-            self.mean_angle_deg,
-            self.stroke_plane_deg,
-        ]
-    }
-
-    /// The kinematics in SI.
-    pub fn kinematics(&self) -> FlappingKinematics {
-        crate::discipline::kinematic::DesignSpace::kinematics(&self.array())
-    }
-
-    /// The initial design of a configuration.
-    pub fn initial(config: &SystemConfig) -> Self {
-        let k = &config.kinematics;
-        Self {
-            frequency_hz: k.frequency_hz,
-            amplitude_deg: k.amplitude_deg,
-            mean_angle_deg: k.mean_angle_deg,
-            stroke_plane_deg: k.stroke_plane_deg,
-        }
-    }
-}
-
 /// The design one cycle analyses: its kinematics and the carbon density
 /// per shell element.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Design {
     /// The kinematics.
-    pub kinematics: KinematicValues,
+    pub kinematics: FlappingKinematics,
     /// Carbon density per element (0/1 after the first cycle).
     pub densities: Vec<f64>,
 }
@@ -102,7 +51,7 @@ pub struct Design {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SystemRecord {
     /// The kinematics analysed.
-    pub kinematics: KinematicValues,
+    pub kinematics: FlappingKinematics,
     /// Means over the last simulated cycle (3D thrust, lift, power,
     /// efficiency).
     pub means: CycleMeans,
@@ -126,10 +75,10 @@ pub struct SystemRecord {
 pub struct KinematicRecord {
     /// The kinematics of the cycle's design (the discipline's initial
     /// design and reference).
-    pub analysed: KinematicValues,
+    pub analysed: FlappingKinematics,
     /// What the discipline proposes: the chosen candidate, or the
     /// analysed design when no candidate beats it.
-    pub proposed: KinematicValues,
+    pub proposed: FlappingKinematics,
     /// The chosen candidate's method, if one was chosen.
     pub chosen: Option<String>,
     /// The proposed design's 2D result (None if it failed).
@@ -248,7 +197,7 @@ impl Context<'_> {
     pub fn design(&self, cycle: usize) -> Result<Design, DesignError> {
         if cycle <= 1 {
             return Ok(Design {
-                kinematics: KinematicValues::initial(&self.config),
+                kinematics: self.config.kinematics(),
                 densities: self.base.densities.clone(),
             });
         }
@@ -286,7 +235,7 @@ impl Context<'_> {
         let analysis = &self.config.analysis;
         let result = run(
             &wing,
-            &design.kinematics.kinematics(),
+            &design.kinematics,
             &self.config.flight(),
             analysis,
             0,
@@ -368,7 +317,7 @@ impl Context<'_> {
             seed: design_config.seed,
             ..Nsga2Config::default()
         };
-        let initial = design.kinematics.array();
+        let initial = design.kinematics;
         let before = self.cache.len();
         let result = optimize_reporting(
             &case,
@@ -411,7 +360,7 @@ impl Context<'_> {
         };
         let record = KinematicRecord {
             analysed: design.kinematics,
-            proposed: KinematicValues::from_array(proposed),
+            proposed,
             chosen,
             proposed_2d,
             evaluations_reused: evaluations.saturating_sub(computed),

@@ -10,14 +10,13 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
+use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::config::SystemConfig;
 use crate::discipline::section::SectionResult;
 
 use super::error::DesignError;
 use super::profile::{actuator_check, ActuatorCheck};
-use super::stage::{
-    load_kinematics, load_system, load_topology, KinematicRecord, KinematicValues, TopologyRecord,
-};
+use super::stage::{load_kinematics, load_system, load_topology, KinematicRecord, TopologyRecord};
 use super::state::{Outcome, RunState, Stage};
 
 /// The `format` value of `summary.json`.
@@ -56,7 +55,7 @@ pub fn change(
         space.stroke_plane_deg,
     ]
     .map(|l| (l[2] - l[0]).abs().max(f64::MIN_POSITIVE));
-    let (a, p) = (kinematics.analysed.array(), kinematics.proposed.array());
+    let (a, p) = (kinematics.analysed.degrees(), kinematics.proposed.degrees());
     let kinematics_change_of_range = (0..4)
         .map(|i| (p[i] - a[i]).abs() / ranges[i])
         .fold(0.0f64, f64::max);
@@ -105,7 +104,7 @@ pub struct KinematicsSummary {
     /// The chosen candidate's method (None: the analysed design stays).
     pub chosen: Option<String>,
     /// The proposal.
-    pub proposed: KinematicValues,
+    pub proposed: FlappingKinematics,
     /// The proposal's 2D result.
     pub proposed_2d: Option<SectionResult>,
     /// 2D evaluations reused from the cache.
@@ -146,7 +145,7 @@ pub struct CycleSummary {
     /// Cycle number from 1.
     pub cycle: usize,
     /// The kinematics analysed.
-    pub kinematics: KinematicValues,
+    pub kinematics: FlappingKinematics,
     /// Carbon mass fraction of the design analysed.
     pub carbon_mass_fraction: f64,
     /// The system analysis (None: not finished).
@@ -168,7 +167,7 @@ pub struct DesignPoint {
     /// The cycle that analysed it.
     pub cycle: usize,
     /// Its kinematics.
-    pub kinematics: KinematicValues,
+    pub kinematics: FlappingKinematics,
     /// Its carbon mass fraction.
     pub carbon_mass_fraction: f64,
     /// Mean thrust coefficient (3D).
@@ -257,7 +256,7 @@ pub fn build(config: &SystemConfig, dir: &Path, state: &RunState) -> Result<Summ
         let analysed = system
             .as_ref()
             .map(|(s, _)| s.kinematics)
-            .unwrap_or_else(|| KinematicValues::initial(config));
+            .unwrap_or_else(|| config.kinematics());
         let seconds = [
             c.get(Stage::System),
             c.get(Stage::Kinematics),
