@@ -9,7 +9,7 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use fwav::aeroelastic::config::SystemConfig;
+use fwav::config::SystemConfig;
 use fwav::mdois::{resume, start, Event, Progress, RunOptions};
 
 fn main() {

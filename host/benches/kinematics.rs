@@ -6,8 +6,8 @@
 
 use std::time::Instant;
 
-use fwav::aeroelastic::config::SystemConfig;
 use fwav::aeroelastic::run;
+use fwav::config::SystemConfig;
 use fwav::discipline::cache::EvaluationCache;
 use fwav::discipline::kinematic::{optimize, Weights};
 use fwav::discipline::section::SectionCase;
@@ -38,7 +38,7 @@ fn main() {
     let result = optimize(
         &case,
         &config.design_space(),
-        [11.0, 30.0, 0.0, 90.0],
+        fwav::aeroelastic::kinematics::FlappingKinematics::from_degrees([11.0, 30.0, 0.0, 90.0]),
         Weights {
             thrust: 1.0,
             efficiency: 1.0,

@@ -8,8 +8,8 @@
 
 use std::time::Instant;
 
-use fwav::aeroelastic::config::SystemConfig;
 use fwav::aeroelastic::{run, FlappingKinematics, FlightCondition, SystemSettings};
+use fwav::config::SystemConfig;
 
 fn main() {
     // The default configuration's wing: the full carbon layer.

@@ -4,7 +4,8 @@
 //! seed paper ([`mdois`]: the 3D aeroelastic system analysis of
 //! [`aeroelastic`], the kinematic optimization of [`discipline`] on the 2D
 //! unsteady aerodynamics of [`aero2d`], the ESL topology optimization of
-//! [`topology`]) and the link side: the kinematics profile file that `fwav
+//! [`topology`]; the design file's tables, checks and template in
+//! [`config`]) and the link side: the kinematics profile file that `fwav
 //! design` writes and `fwav upload` sends ([`profile_file`]), serial ports
 //! ([`port`]), the framed request/response client with retries ([`link`])
 //! and the operations on a connected flight controller ([`device`]).
@@ -17,6 +18,7 @@
 
 pub mod aero2d;
 pub mod aeroelastic;
+pub mod config;
 pub mod device;
 pub mod discipline;
 pub mod drawing;

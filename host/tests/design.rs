@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
 
-use fwav::aeroelastic::config::SystemConfig;
+use fwav::config::SystemConfig;
 use fwav::file_format::{FormatError, ReadError};
 use fwav::mdois::state::RunState;
 use fwav::mdois::summary::Summary;
@@ -381,7 +381,11 @@ fn init_writes_the_default_configuration() {
     for table in ["[wing]", "[analysis]", "[design]", "[topology]", "[mdois]"] {
         assert!(text.contains(table), "{table}");
     }
-    assert!(text.contains("max_cycles = 5") && text.contains("# Design cycles allowed; 1..=50"));
+    assert!(
+        text.contains("max_cycles = 5")
+            && text.contains("# Design cycles allowed")
+            && text.contains("1..=50.")
+    );
     let again = fwav(&["init", "--out", path]);
     assert!(!again.status.success());
     assert!(String::from_utf8_lossy(&again.stderr).contains("--force"));

@@ -87,7 +87,7 @@ fn equal_weights(
     optimize(
         case,
         &DesignSpace::fwav(),
-        [11.0, 30.0, 0.0, 90.0],
+        fwav::aeroelastic::kinematics::FlappingKinematics::from_degrees([11.0, 30.0, 0.0, 90.0]),
         Weights {
             thrust: 1.0,
             efficiency: 1.0,
@@ -106,7 +106,6 @@ fn equal_weights(
 #[test]
 fn kinematic_discipline_beats_the_initial_design() {
     use fwav::discipline::cache::EvaluationCache;
-    use fwav::discipline::kinematic::DesignSpace;
     let case = SectionCase::fwav_mid_span();
     let cache = EvaluationCache::new();
     let started = std::time::Instant::now();
@@ -139,9 +138,7 @@ fn kinematic_discipline_beats_the_initial_design() {
     let chosen = result.chosen.expect("a candidate beats the initial design");
     let confirmed = result.candidates[chosen].combined.unwrap();
     let direct = case
-        .evaluate(&DesignSpace::kinematics(
-            &result.candidates[chosen].confirmation.design,
-        ))
+        .evaluate(&result.candidates[chosen].confirmation.design)
         .unwrap();
     let again = direct.ct / initial.ct + direct.efficiency / initial.efficiency;
     assert!(confirmed > 2.0, "{confirmed}");
@@ -185,7 +182,7 @@ fn failed_evaluations_are_recorded_and_the_discipline_goes_on() {
     let result = optimize(
         &SectionCase::fwav_mid_span(),
         &space,
-        [11.0, 30.0, 0.0, 90.0],
+        fwav::aeroelastic::kinematics::FlappingKinematics::from_degrees([11.0, 30.0, 0.0, 90.0]),
         Weights {
             thrust: 1.0,
             efficiency: 1.0,

@@ -8,7 +8,7 @@
 
 use std::time::{Duration, Instant};
 
-use fwav::aeroelastic::config::SystemConfig;
+use fwav::config::SystemConfig;
 use fwav::device::Device;
 use fwav::mdois::{start, Outcome, RunOptions};
 use fwav::port;

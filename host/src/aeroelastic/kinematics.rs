@@ -21,8 +21,24 @@
 use nalgebra::{Rotation3, Unit, Vector3};
 use serde::{Deserialize, Serialize};
 
-/// Flapping kinematics (SI: Hz and radians).
+/// Flapping kinematics (SI: Hz and radians): the one kinematic design
+/// type — the `[kinematics]` table of the design file, the designs of the
+/// aerodynamic discipline and of its records and cache keys.
+///
+/// Files carry it in Hz and degrees (`frequency_hz`, `amplitude_deg`,
+/// `mean_angle_deg`, `stroke_plane_deg`; a missing key takes
+/// [`FlappingKinematics::default`]'s). Reading converts each angle once
+/// with `to_radians`. Writing gives the angle as the shortest decimal
+/// whose `to_radians` is the stored angle exactly ([`Self::degrees`]), so
+/// a file written and read back by a correctly rounding reader (TOML;
+/// serde_json's default reader may be a unit in the last place off)
+/// yields the same radians to the bit, and
+/// an angle that came from degrees people typed is written as they typed
+/// it (30, not the 29.999999999999996 of `to_degrees`). An angle that did
+/// not come from degrees (no decimal maps to it) is written as its
+/// `to_degrees`.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(from = "Degrees", into = "Degrees")]
 pub struct FlappingKinematics {
     /// Flapping frequency, Hz (paper: 11 Hz).
     pub frequency: f64,
@@ -33,6 +49,74 @@ pub struct FlappingKinematics {
     /// Stroke-plane inclination from the horizontal (side view), rad; 90°
     /// is the vertical stroke plane across the flight path.
     pub stroke_plane: f64,
+}
+
+/// [`FlappingKinematics`] as files write it: Hz and degrees.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+struct Degrees {
+    frequency_hz: f64,
+    amplitude_deg: f64,
+    mean_angle_deg: f64,
+    stroke_plane_deg: f64,
+}
+
+impl Default for Degrees {
+    fn default() -> Self {
+        FlappingKinematics::default().into()
+    }
+}
+
+impl From<Degrees> for FlappingKinematics {
+    fn from(d: Degrees) -> Self {
+        Self::from_degrees([
+            d.frequency_hz,
+            d.amplitude_deg,
+            d.mean_angle_deg,
+            d.stroke_plane_deg,
+        ])
+    }
+}
+
+impl From<FlappingKinematics> for Degrees {
+    fn from(k: FlappingKinematics) -> Self {
+        let [frequency_hz, amplitude_deg, mean_angle_deg, stroke_plane_deg] = k.degrees();
+        Self {
+            frequency_hz,
+            amplitude_deg,
+            mean_angle_deg,
+            stroke_plane_deg,
+        }
+    }
+}
+
+/// The shortest decimal number of degrees whose `to_radians` is
+/// `radians` exactly, looked for around `to_degrees` (a few units in the
+/// last place either side); `to_degrees` itself when there is none.
+fn degrees_of(radians: f64) -> f64 {
+    let near = radians.to_degrees();
+    if !near.is_finite() {
+        return near;
+    }
+    let step = |x: f64, ulps: i64| f64::from_bits(x.to_bits().wrapping_add_signed(ulps));
+    let candidates: Vec<f64> = (-3..=3).map(|u| step(near, u)).collect();
+    for digits in 1..=17usize {
+        for &c in &candidates {
+            let d: f64 = format!("{c:.*e}", digits - 1).parse().unwrap_or(c);
+            if d.to_radians() == radians {
+                return d;
+            }
+        }
+    }
+    near
+}
+
+impl Default for FlappingKinematics {
+    /// [`FlappingKinematics::INITIAL`] from the degrees a person types
+    /// (11 Hz, 30°, 0°, 90°, each converted with `to_radians`).
+    fn default() -> Self {
+        Self::from_degrees([FlappingKinematics::INITIAL.frequency, 30.0, 0.0, 90.0])
+    }
 }
 
 /// Why kinematics were refused.
@@ -97,6 +181,44 @@ impl FlappingKinematics {
             }
         }
         Ok(())
+    }
+
+    /// From `[frequency Hz, amplitude deg, mean angle deg, stroke plane
+    /// deg]`, each angle converted with `to_radians`.
+    pub fn from_degrees(x: [f64; 4]) -> Self {
+        Self {
+            frequency: x[0],
+            amplitude: x[1].to_radians(),
+            mean_angle: x[2].to_radians(),
+            stroke_plane: x[3].to_radians(),
+        }
+    }
+
+    /// `[frequency Hz, amplitude deg, mean angle deg, stroke plane deg]`
+    /// as files write them (the type's docs: the shortest degrees that
+    /// convert back to these radians exactly).
+    pub fn degrees(&self) -> [f64; 4] {
+        [
+            self.frequency,
+            degrees_of(self.amplitude),
+            degrees_of(self.mean_angle),
+            degrees_of(self.stroke_plane),
+        ]
+    }
+
+    /// The amplitude in degrees as files write it ([`Self::degrees`]).
+    pub fn amplitude_deg(&self) -> f64 {
+        degrees_of(self.amplitude)
+    }
+
+    /// The mean angle in degrees as files write it.
+    pub fn mean_angle_deg(&self) -> f64 {
+        degrees_of(self.mean_angle)
+    }
+
+    /// The stroke-plane inclination in degrees as files write it.
+    pub fn stroke_plane_deg(&self) -> f64 {
+        degrees_of(self.stroke_plane)
     }
 
     /// The flapping period, s.
@@ -176,6 +298,40 @@ impl RootMotion {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Degrees people typed come back as typed; any angle from degrees
+    /// makes the file round trip to the same radians.
+    #[test]
+    fn files_carry_degrees_that_round_trip() {
+        let k = FlappingKinematics::from_degrees([11.0, 30.0, -7.3, 90.0]);
+        assert_eq!(k.degrees(), [11.0, 30.0, -7.3, 90.0]);
+        let json = serde_json::to_string(&k).unwrap();
+        assert_eq!(
+            json,
+            r#"{"frequency_hz":11.0,"amplitude_deg":30.0,"mean_angle_deg":-7.3,"stroke_plane_deg":90.0}"#
+        );
+        for x in [
+            33.271_948_237_104_41,
+            1e-3,
+            79.999_999_999_999_99,
+            0.1 + 0.2,
+        ] {
+            let k = FlappingKinematics::from_degrees([9.0, x, -x, 180.0 - x]);
+            // (TOML, whose reader rounds correctly; serde_json's default
+            // reader may land a unit in the last place off.)
+            let back: FlappingKinematics = toml::from_str(&toml::to_string(&k).unwrap()).unwrap();
+            assert_eq!(back, k, "{x}");
+            assert_eq!(FlappingKinematics::from_degrees(k.degrees()), k, "{x}");
+        }
+        let partial: FlappingKinematics = serde_json::from_str(r#"{"frequency_hz":9.0}"#).unwrap();
+        assert_eq!(
+            partial,
+            FlappingKinematics {
+                frequency: 9.0,
+                ..FlappingKinematics::default()
+            }
+        );
+    }
 
     #[test]
     fn rates_are_the_derivatives_of_the_angle() {

@@ -23,7 +23,6 @@
 //! - [`series`]: `.vtu`/`.pvd` output of the wing and wake.
 
 pub mod analysis;
-pub mod config;
 pub mod floating_frame;
 pub mod handoff;
 pub mod interface;

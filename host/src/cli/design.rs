@@ -9,9 +9,9 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use anyhow::{bail, Context, Result};
-use fwav::aeroelastic::config::SystemConfig;
+use fwav::config::template::commented_toml;
+use fwav::config::SystemConfig;
 use fwav::mdois::summary::Summary;
-use fwav::mdois::template::commented_toml;
 use fwav::mdois::{resume, start, Event, Outcome, Progress, RunOptions, Stage};
 
 /// `fwav design`'s options.
@@ -204,10 +204,10 @@ fn print_summary(s: &Summary, dir: &Path) {
         let mut line = format!(
             "cycle {}: {:.2} Hz, ±{:.1}°, mean {:+.1}°, stroke plane {:.1}°, carbon {:.3}",
             c.cycle,
-            k.frequency_hz,
-            k.amplitude_deg,
-            k.mean_angle_deg,
-            k.stroke_plane_deg,
+            k.frequency,
+            k.amplitude_deg(),
+            k.mean_angle_deg(),
+            k.stroke_plane_deg(),
             c.carbon_mass_fraction
         );
         if let Some(sys) = &c.system {

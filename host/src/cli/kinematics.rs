@@ -6,6 +6,7 @@ use std::time::Instant;
 
 use anyhow::{Context, Result};
 use fwav::aeroelastic::handoff::SectionFile;
+use fwav::aeroelastic::kinematics::FlappingKinematics;
 use fwav::discipline::cache::EvaluationCache;
 use fwav::discipline::kinematic::{optimize, KinematicResult, Weights};
 use fwav::discipline::section::SectionCase;
@@ -54,13 +55,7 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
         None => EvaluationCache::new(),
     };
     let reused = cache.len();
-    let k = &config.kinematics;
-    let initial = [
-        k.frequency_hz,
-        k.amplitude_deg,
-        k.mean_angle_deg,
-        k.stroke_plane_deg,
-    ];
+    let initial = config.kinematics();
     let weights = Weights {
         thrust: config.design.thrust_weight,
         efficiency: config.design.efficiency_weight,
@@ -111,10 +106,13 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
 /// The discipline's run as a person reads it: the initial design, each
 /// candidate, the surfaces' quality and the choice.
 fn print_result(result: &KinematicResult) {
-    let show = |d: &[f64; 4]| {
+    let show = |d: &FlappingKinematics| {
         format!(
             "{:.2} Hz, ±{:.1}°, mean {:+.1}°, stroke plane {:.1}°",
-            d[0], d[1], d[2], d[3]
+            d.frequency,
+            d.amplitude_deg(),
+            d.mean_angle_deg(),
+            d.stroke_plane_deg()
         )
     };
     if let Ok(r) = &result.initial.result {

@@ -6,10 +6,10 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{Context, Result};
-use fwav::aeroelastic::config::SystemConfig;
 use fwav::aeroelastic::handoff;
 use fwav::aeroelastic::series::write_series;
 use fwav::aeroelastic::{run, SystemResult};
+use fwav::config::SystemConfig;
 
 /// The command's options.
 #[derive(clap::Args)]

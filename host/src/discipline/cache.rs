@@ -1,7 +1,7 @@
 //! Evaluations keyed by their inputs, so a rerun (or a resumed design
 //! run) reuses every 2D analysis already done. The key is a 64-bit FNV-1a
 //! hash of the evaluation's inputs serialized as JSON (the section case and
-//! the design values), stable across runs and platforms; the file is JSON,
+//! the design, in Hz and degrees as [`FlappingKinematics`] writes them), stable across runs and platforms; the file is JSON,
 //! written atomically.
 
 use std::collections::HashMap;
@@ -9,6 +9,8 @@ use std::path::Path;
 use std::sync::Mutex;
 
 use serde::{Deserialize, Serialize};
+
+use crate::aeroelastic::kinematics::FlappingKinematics;
 
 use super::section::{SectionCase, SectionResult};
 
@@ -111,12 +113,12 @@ impl EvaluationCache {
     }
 
     /// The stored result for these inputs, if any.
-    pub fn get(&self, case: &SectionCase, design: &[f64; 4]) -> Option<SectionResult> {
+    pub fn get(&self, case: &SectionCase, design: &FlappingKinematics) -> Option<SectionResult> {
         self.lock().get(&key(case, design)).copied()
     }
 
     /// Stores a result.
-    pub fn insert(&self, case: &SectionCase, design: &[f64; 4], result: SectionResult) {
+    pub fn insert(&self, case: &SectionCase, design: &FlappingKinematics, result: SectionResult) {
         self.lock().insert(key(case, design), result);
     }
 
@@ -128,7 +130,7 @@ impl EvaluationCache {
 }
 
 /// The key of an evaluation: FNV-1a of its inputs' JSON, hex.
-pub fn key(case: &SectionCase, design: &[f64; 4]) -> String {
+pub fn key(case: &SectionCase, design: &FlappingKinematics) -> String {
     let text = serde_json::json!({ "case": case, "design": design }).to_string();
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
     for b in text.bytes() {

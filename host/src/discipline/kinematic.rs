@@ -34,7 +34,10 @@ use super::section::{SectionCase, SectionResult};
 /// The four design variables and their three levels (physical units:
 /// Hz and degrees, as a person sets them), low, middle (the initial
 /// design) and high; the RSM and NSGA-II search between low and high.
+/// Its fields are the level keys of the design file's `[design]` table
+/// (a missing one keeps [`DesignSpace::fwav`]'s).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
 pub struct DesignSpace {
     /// Flapping frequency levels, Hz.
     pub frequency_hz: [f64; 3],
@@ -44,6 +47,13 @@ pub struct DesignSpace {
     pub mean_angle_deg: [f64; 3],
     /// Stroke-plane inclination levels, degrees.
     pub stroke_plane_deg: [f64; 3],
+}
+
+impl Default for DesignSpace {
+    /// [`DesignSpace::fwav`].
+    fn default() -> Self {
+        Self::fwav()
+    }
 }
 
 impl DesignSpace {
@@ -68,19 +78,11 @@ impl DesignSpace {
         ]
     }
 
-    /// The kinematics at physical values `[f Hz, A deg, mean deg, stroke deg]`.
-    pub fn kinematics(x: &[f64; 4]) -> FlappingKinematics {
-        FlappingKinematics {
-            frequency: x[0],
-            amplitude: x[1].to_radians(),
-            mean_angle: x[2].to_radians(),
-            stroke_plane: x[3].to_radians(),
-        }
-    }
-
-    /// Physical values of coded ones (`-1` low, `0` middle, `1` high; the
-    /// middle need not be halfway, so each half is mapped on its own).
-    pub fn decode(&self, coded: &[f64]) -> [f64; 4] {
+    /// The kinematics at coded values (`-1` low, `0` middle, `1` high;
+    /// the middle need not be halfway, so each half is mapped on its own,
+    /// in Hz and degrees, then converted by
+    /// [`FlappingKinematics::from_degrees`]).
+    pub fn decode(&self, coded: &[f64]) -> FlappingKinematics {
         let mut x = [0.0; 4];
         for (f, l) in self.levels().iter().enumerate() {
             let c = coded[f].clamp(-1.0, 1.0);
@@ -90,15 +92,15 @@ impl DesignSpace {
                 l[1] + c * (l[2] - l[1])
             };
         }
-        x
+        FlappingKinematics::from_degrees(x)
     }
 }
 
 /// One direct evaluation.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Evaluated {
-    /// Design values `[f Hz, A deg, mean deg, stroke deg]`.
-    pub design: [f64; 4],
+    /// The design evaluated.
+    pub design: FlappingKinematics,
     /// The results, or why the run failed.
     pub result: Result<SectionResult, String>,
 }
@@ -127,9 +129,9 @@ pub struct KinematicResult {
     pub level_means: Vec<Vec<f64>>,
     /// R², adjusted R² and PRESS of the CT and efficiency surfaces.
     pub surface_quality: [(f64, f64, Option<f64>); 2],
-    /// The Pareto front of the surfaces: design values, predicted CT and
+    /// The Pareto front of the surfaces: design, predicted CT and
     /// efficiency.
-    pub pareto: Vec<([f64; 4], f64, f64)>,
+    pub pareto: Vec<(FlappingKinematics, f64, f64)>,
     /// The three candidates.
     pub candidates: Vec<Candidate>,
     /// Index of the chosen candidate, None: the initial design stays.
@@ -160,13 +162,12 @@ pub struct Weights {
 /// the 18 array rows and the ANOM and RSM confirmations.
 pub const EVALUATIONS: usize = 21;
 
-/// Runs the discipline on `case` over `space` from `initial` physical
-/// values; `cache` supplies evaluations already done and receives the new
+/// Runs the discipline on `case` over `space` from the `initial` design; `cache` supplies evaluations already done and receives the new
 /// ones.
 pub fn optimize(
     case: &SectionCase,
     space: &DesignSpace,
-    initial: [f64; 4],
+    initial: FlappingKinematics,
     weights: Weights,
     nsga: &Nsga2Config,
     cache: &EvaluationCache,
@@ -180,7 +181,7 @@ pub fn optimize(
 pub fn optimize_reporting(
     case: &SectionCase,
     space: &DesignSpace,
-    initial: [f64; 4],
+    initial: FlappingKinematics,
     weights: Weights,
     nsga: &Nsga2Config,
     cache: &EvaluationCache,
@@ -192,13 +193,11 @@ pub fn optimize_reporting(
         let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
         progress(n, EVALUATIONS);
     };
-    let run = |design: [f64; 4]| {
+    let run = |design: FlappingKinematics| {
         let result = match cache.get(case, &design) {
             Some(r) => Ok(r),
             None => {
-                let r = case
-                    .evaluate(&DesignSpace::kinematics(&design))
-                    .map_err(|e| e.to_string());
+                let r = case.evaluate(&design).map_err(|e| e.to_string());
                 if let Ok(r) = &r {
                     cache.insert(case, &design, *r);
                 }
@@ -223,7 +222,7 @@ pub fn optimize_reporting(
     let plan = array.design(&columns, &levels).map_err(|e| method(&e))?;
     let runs: Vec<Evaluated> = plan
         .par_iter()
-        .map(|x| run([x[0], x[1], x[2], x[3]]))
+        .map(|x| run(FlappingKinematics::from_degrees([x[0], x[1], x[2], x[3]])))
         .collect();
     let worst = |values: Vec<Option<f64>>| -> Vec<f64> {
         let floor = values
@@ -241,7 +240,9 @@ pub fn optimize_reporting(
     // 2. ANOM on the combined objective.
     let anom = Anom::new(&array, &columns, &scores).map_err(|e| method(&e))?;
     let (best_levels, anom_prediction) = anom.optimum(Goal::LargerIsBetter);
-    let anom_design = [0, 1, 2, 3].map(|f| space.levels()[f][usize::from(best_levels[f])]);
+    let anom_design = FlappingKinematics::from_degrees(
+        [0, 1, 2, 3].map(|f| space.levels()[f][usize::from(best_levels[f])]),
+    );
 
     // 3. Response surfaces in coded levels, NSGA-II on them.
     let coded: Vec<Vec<f64>> = (0..plan.len())

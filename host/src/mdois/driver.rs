@@ -4,7 +4,7 @@
 //! deformation, the structural discipline on the pressure history — then
 //! the next cycle's system analysis with both proposals, until a cycle's
 //! disciplines leave every design variable unchanged
-//! ([`super::config::MdoisConfig`] says within what). At the cycle cap the
+//! ([`crate::config::MdoisConfig`] says within what). At the cycle cap the
 //! last proposal is analysed once more and the run ends as "cycle cap
 //! reached", never as converged. A later cycle's structural discipline
 //! starts SIMP from the last cycle's design variables: started cold, the
@@ -21,7 +21,7 @@ use std::path::{Path, PathBuf};
 use std::sync::{Mutex, MutexGuard};
 use std::time::{Instant, SystemTime, UNIX_EPOCH};
 
-use crate::aeroelastic::config::SystemConfig;
+use crate::config::SystemConfig;
 use crate::discipline::cache::EvaluationCache;
 use crate::files::write_atomic;
 use crate::shell::material::Layer;
@@ -34,7 +34,7 @@ use super::records::{load_kinematics, load_topology};
 use super::stage::{Context, CACHE_FILE};
 use super::state::{Outcome, RunRecord, RunState, Stage, StageRecord};
 use super::summary::{self, Summary};
-use super::template::commented_toml;
+use crate::config::template::commented_toml;
 
 /// The resolved configuration's file name in the run's directory.
 pub const CONFIG_FILE: &str = "config.toml";

@@ -3,9 +3,9 @@
 
 use std::path::PathBuf;
 
-use crate::aeroelastic::config::ConfigError;
 use crate::aeroelastic::handoff::HandoffError;
 use crate::aeroelastic::SystemError;
+use crate::config::ConfigError;
 use crate::discipline::cache::CacheError;
 use crate::discipline::kinematic::KinematicError;
 use crate::file_format::{FormatError, ReadError};

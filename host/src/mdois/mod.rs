@@ -8,7 +8,6 @@
 //! whose proposals make the next cycle's design. The process stops when no
 //! design variable changes.
 //!
-//! - [`config`]: the `[mdois]` table (cycle cap, "unchanged" tolerances).
 //! - [`driver`]: the cycle loop, [`start`] and [`resume`].
 //! - [`stage`]: the three stages as functions from files to files (the
 //!   computation, and the order of reading, computing and writing).
@@ -21,11 +20,8 @@
 //!   `report.md`.
 //! - [`profile`]: the final kinematics as a flight-controller profile
 //!   (a stand-in to be replaced).
-//! - [`template`]: the default configuration as commented TOML
-//!   (`fwav init`).
 //! - [`error`]: why a run stopped.
 
-pub mod config;
 pub mod driver;
 pub mod error;
 pub mod outputs;
@@ -37,7 +33,6 @@ pub mod report;
 pub mod stage;
 pub mod state;
 pub mod summary;
-pub mod template;
 
 pub use driver::{resume, start, DesignRun, RunOptions};
 pub use error::DesignError;

@@ -152,7 +152,7 @@ pub fn convergence(summary: &Summary, space: &DesignSpace, png: &Path) -> Result
             let points = summary
                 .cycles
                 .iter()
-                .map(|c| (c.cycle as f64, coded(i, c.kinematics.array()[i])))
+                .map(|c| (c.cycle as f64, coded(i, c.kinematics.degrees()[i])))
                 .collect();
             (name, points)
         })

@@ -24,10 +24,10 @@ use fwav_hil_sim::feasibility::{
 use fwav_protocol::Limits;
 use serde::{Deserialize, Serialize};
 
+use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::profile_file::ProfileFile;
 
 use super::error::DesignError;
-use super::stage::KinematicValues;
 
 /// The profile file's name in the run's directory.
 pub const KINEMATICS_FILE: &str = "kinematics.json";
@@ -110,18 +110,18 @@ struct Judged {
 /// Judges `kinematics` (to 6 significant digits) on the simulator's
 /// default actuator (see the module docs): the verdict `summary.json`
 /// keeps. Analytic, a few milliseconds.
-pub fn actuator_check(kinematics: &KinematicValues) -> Result<ActuatorCheck, DesignError> {
+pub fn actuator_check(kinematics: &FlappingKinematics) -> Result<ActuatorCheck, DesignError> {
     Ok(judge(kinematics)?.check)
 }
 
-fn judge(kinematics: &KinematicValues) -> Result<Judged, DesignError> {
+fn judge(kinematics: &FlappingKinematics) -> Result<Judged, DesignError> {
     let fail = |e: &dyn std::fmt::Display| DesignError::output(KINEMATICS_FILE, e);
     let plant = PlantParams::default();
     let limits = ActuatorLimits::firmware_default();
     let demand = FlappingDemand {
-        frequency_hz: round(kinematics.frequency_hz),
-        amplitude_deg: round(kinematics.amplitude_deg),
-        mean_deg: round(kinematics.mean_angle_deg),
+        frequency_hz: round(kinematics.frequency),
+        amplitude_deg: round(kinematics.amplitude_deg()),
+        mean_deg: round(kinematics.mean_angle_deg()),
     };
     let verdict = check(&plant, &limits, &demand).map_err(|e| fail(&e))?;
     let nearest = nearest_feasible(&plant, &limits, &ENVELOPE, &demand).map_err(|e| fail(&e))?;
@@ -165,7 +165,7 @@ const ENVELOPE: Limits = Limits::REFERENCE_FWAV;
 /// and the file's path.
 pub fn write_kinematics(
     dir: &Path,
-    kinematics: &KinematicValues,
+    kinematics: &FlappingKinematics,
     description: &str,
 ) -> Result<(ActuatorCheck, PathBuf), DesignError> {
     let Judged {
@@ -185,7 +185,7 @@ pub fn write_kinematics(
     };
     let source = format!(
         "{description} Stroke plane {:.1} deg (set by the mounting); {verdict_text}",
-        kinematics.stroke_plane_deg
+        kinematics.stroke_plane_deg()
     );
     let path = dir.join(KINEMATICS_FILE);
     let profile = ProfileFile::from_kinematics(

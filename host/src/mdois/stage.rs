@@ -23,12 +23,10 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use serde::{Deserialize, Serialize};
-
-use crate::aeroelastic::config::SystemConfig;
 use crate::aeroelastic::handoff::{self, SectionFile};
 use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::aeroelastic::{run, SystemResult, WingModel};
+use crate::config::SystemConfig;
 use crate::discipline::cache::EvaluationCache;
 use crate::discipline::kinematic::{optimize_reporting, KinematicResult, Weights};
 use crate::discipline::section::SectionCase;
@@ -49,63 +47,12 @@ use super::state::{Stage, StageRecord};
 /// The evaluation cache's file in the run's directory.
 pub const CACHE_FILE: &str = "evaluations.json";
 
-/// The kinematic design variables as a person reads them.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct KinematicValues {
-    /// Flapping frequency, Hz.
-    pub frequency_hz: f64,
-    /// Flapping amplitude, degrees.
-    pub amplitude_deg: f64,
-    /// Mean flapping angle, degrees.
-    pub mean_angle_deg: f64,
-    /// Stroke-plane inclination, degrees.
-    pub stroke_plane_deg: f64,
-}
-
-impl KinematicValues {
-    /// From the discipline's `[f Hz, A deg, mean deg, stroke deg]`.
-    pub fn from_array(x: [f64; 4]) -> Self {
-        Self {
-            frequency_hz: x[0],
-            amplitude_deg: x[1],
-            mean_angle_deg: x[2],
-            stroke_plane_deg: x[3],
-        }
-    }
-
-    /// As the discipline's `[f Hz, A deg, mean deg, stroke deg]`.
-    pub fn array(&self) -> [f64; 4] {
-        [
-            self.frequency_hz,
-            self.amplitude_deg,
-            self.mean_angle_deg,
-            self.stroke_plane_deg,
-        ]
-    }
-
-    /// The kinematics in SI.
-    pub fn kinematics(&self) -> FlappingKinematics {
-        crate::discipline::kinematic::DesignSpace::kinematics(&self.array())
-    }
-
-    /// The initial design of a configuration.
-    pub fn initial(config: &SystemConfig) -> Self {
-        let k = &config.kinematics;
-        Self {
-            frequency_hz: k.frequency_hz,
-            amplitude_deg: k.amplitude_deg,
-            mean_angle_deg: k.mean_angle_deg,
-            stroke_plane_deg: k.stroke_plane_deg,
-        }
-    }
-}
-
 /// The design one cycle analyses: its kinematics and the carbon density
 /// per shell element.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Design {
     /// The kinematics.
-    pub kinematics: KinematicValues,
+    pub kinematics: FlappingKinematics,
     /// Carbon density per element (0/1 after the first cycle).
     pub densities: Vec<f64>,
 }
@@ -189,7 +136,7 @@ impl Context<'_> {
     pub fn design(&self, cycle: usize) -> Result<Design, DesignError> {
         if cycle <= 1 {
             return Ok(Design {
-                kinematics: KinematicValues::initial(&self.config),
+                kinematics: self.config.kinematics(),
                 densities: self.base.densities.clone(),
             });
         }
@@ -238,7 +185,7 @@ impl Context<'_> {
         let wing = self.config.wing_model_with(Some(&design.densities))?;
         run(
             &wing,
-            &design.kinematics.kinematics(),
+            &design.kinematics,
             &self.config.flight(),
             &self.config.analysis,
             0,
@@ -306,7 +253,7 @@ impl Context<'_> {
         optimize_reporting(
             &case,
             &self.config.design_space(),
-            design.kinematics.array(),
+            design.kinematics,
             weights,
             &nsga,
             &self.cache,

@@ -12,7 +12,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::file_format::{FileFormat, FormatError, ReadError};
 
-use crate::aeroelastic::config::SystemConfig;
+use crate::aeroelastic::kinematics::FlappingKinematics;
+use crate::config::SystemConfig;
 use crate::discipline::section::SectionResult;
 
 use super::error::DesignError;
@@ -20,7 +21,6 @@ use super::profile::{actuator_check, ActuatorCheck};
 use super::records::{
     load_kinematics, load_system, load_topology, KinematicRecord, SystemRecord, TopologyRecord,
 };
-use super::stage::KinematicValues;
 use super::state::{Outcome, RunState, Stage, StageRecord};
 
 /// The kind of file and the version this build reads and writes.
@@ -31,7 +31,7 @@ pub const FORMAT: FileFormat = FileFormat {
 };
 
 /// How much the design changed in a cycle's disciplines, and whether that
-/// counts as unchanged ([`super::config::MdoisConfig`]).
+/// counts as unchanged ([`crate::config::MdoisConfig`]).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CycleChange {
     /// Largest move of a kinematic variable, as a fraction of its level
@@ -63,7 +63,7 @@ pub fn change(
         space.stroke_plane_deg,
     ]
     .map(|l| (l[2] - l[0]).abs().max(f64::MIN_POSITIVE));
-    let (a, p) = (kinematics.analysed.array(), kinematics.proposed.array());
+    let (a, p) = (kinematics.analysed.degrees(), kinematics.proposed.degrees());
     let kinematics_change_of_range = (0..4)
         .map(|i| (p[i] - a[i]).abs() / ranges[i])
         .fold(0.0f64, f64::max);
@@ -112,7 +112,7 @@ pub struct KinematicsSummary {
     /// The chosen candidate's method (None: the analysed design stays).
     pub chosen: Option<String>,
     /// The proposal.
-    pub proposed: KinematicValues,
+    pub proposed: FlappingKinematics,
     /// The proposal's 2D result.
     pub proposed_2d: Option<SectionResult>,
     /// 2D evaluations reused from the cache.
@@ -153,7 +153,7 @@ pub struct CycleSummary {
     /// Cycle number from 1.
     pub cycle: usize,
     /// The kinematics analysed.
-    pub kinematics: KinematicValues,
+    pub kinematics: FlappingKinematics,
     /// Carbon mass fraction of the design analysed.
     pub carbon_mass_fraction: f64,
     /// The system analysis (None: not finished).
@@ -175,7 +175,7 @@ pub struct DesignPoint {
     /// The cycle that analysed it.
     pub cycle: usize,
     /// Its kinematics.
-    pub kinematics: KinematicValues,
+    pub kinematics: FlappingKinematics,
     /// Its carbon mass fraction.
     pub carbon_mass_fraction: f64,
     /// Mean thrust coefficient (3D).
@@ -343,7 +343,7 @@ pub fn build(config: &SystemConfig, dir: &Path, state: &RunState) -> Result<Summ
         let analysed = system
             .as_ref()
             .map(|(s, _)| s.kinematics)
-            .unwrap_or_else(|| KinematicValues::initial(config));
+            .unwrap_or_else(|| config.kinematics());
         let seconds = [
             c.get(Stage::System),
             c.get(Stage::Kinematics),

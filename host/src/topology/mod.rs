@@ -10,10 +10,8 @@
 //!   every load case, one factorization an iteration.
 //! - [`filter`]: SIMP's density filter.
 //! - [`eslso`]: the cycle (steps 1–5: 0/1 transformation, stop rule).
-//! - [`config`]: the `[topology]` table of the configuration file.
 //! - [`picture`]: the layout as a PNG of the planform.
 
-pub mod config;
 pub mod esl;
 pub mod eslso;
 pub mod filter;

@@ -5,11 +5,11 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
+use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::discipline::kinematic::KinematicResult;
 use crate::discipline::section::SectionResult;
 
 use super::super::error::DesignError;
-use super::super::stage::KinematicValues;
 use super::{cycle_file, load_json};
 
 /// The file's name in `cycle-N/`.
@@ -27,10 +27,10 @@ const CONFIRMATIONS: usize = 2;
 pub struct KinematicRecord {
     /// The kinematics of the cycle's design (the discipline's initial
     /// design and reference).
-    pub analysed: KinematicValues,
+    pub analysed: FlappingKinematics,
     /// What the discipline proposes: the chosen candidate, or the
     /// analysed design when no candidate beats it.
-    pub proposed: KinematicValues,
+    pub proposed: FlappingKinematics,
     /// The chosen candidate's method, if one was chosen.
     pub chosen: Option<String>,
     /// The proposed design's 2D result (None if it failed).
@@ -61,7 +61,7 @@ pub fn evaluations_failed(result: &KinematicResult) -> usize {
 impl KinematicRecord {
     /// The record of a discipline run from `analysed` that computed
     /// `computed` of its evaluations (the rest came from the cache).
-    pub fn of(analysed: KinematicValues, result: KinematicResult, computed: usize) -> Self {
+    pub fn of(analysed: FlappingKinematics, result: KinematicResult, computed: usize) -> Self {
         let (proposed, chosen, proposed_2d) = match result.chosen {
             Some(i) => {
                 let c = &result.candidates[i];
@@ -71,11 +71,11 @@ impl KinematicRecord {
                     c.confirmation.result.clone().ok(),
                 )
             }
-            None => (analysed.array(), None, result.initial.result.clone().ok()),
+            None => (analysed, None, result.initial.result.clone().ok()),
         };
         Self {
             analysed,
-            proposed: KinematicValues::from_array(proposed),
+            proposed,
             chosen,
             proposed_2d,
             evaluations_reused: evaluations_asked(&result).saturating_sub(computed),

@@ -10,8 +10,8 @@ use crate::aeroelastic::{CycleMeans, StepRecord, SystemResult};
 use crate::file_format::{FileFormat, FormatError};
 
 use super::super::error::DesignError;
-use super::super::stage::KinematicValues;
 use super::cycle_path;
+use crate::aeroelastic::kinematics::FlappingKinematics;
 
 /// The kind of file and the version this build reads and writes.
 pub const FORMAT: FileFormat = FileFormat {
@@ -29,7 +29,7 @@ pub struct SystemRecord {
     /// [`FORMAT`]'s `version`.
     pub format_version: u32,
     /// The kinematics analysed.
-    pub kinematics: KinematicValues,
+    pub kinematics: FlappingKinematics,
     /// Means over the last simulated cycle (3D thrust, lift, power,
     /// efficiency).
     pub means: CycleMeans,
@@ -51,7 +51,11 @@ pub struct SystemRecord {
 impl SystemRecord {
     /// The record of `result`, the analysis of `kinematics` with
     /// `steps_per_cycle` steps a cycle.
-    pub fn of(kinematics: KinematicValues, result: &SystemResult, steps_per_cycle: usize) -> Self {
+    pub fn of(
+        kinematics: FlappingKinematics,
+        result: &SystemResult,
+        steps_per_cycle: usize,
+    ) -> Self {
         Self {
             format: FORMAT.format.to_string(),
             format_version: FORMAT.version,

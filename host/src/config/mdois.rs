@@ -25,7 +25,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::aeroelastic::config::{check_ranges, ConfigError, RangeCheck};
+use fwav_settings::{Allowed, Integers, Interval, Setting, Table, Value};
 
 /// The `[mdois]` table.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -55,35 +55,38 @@ impl Default for MdoisConfig {
     }
 }
 
-impl MdoisConfig {
-    /// Checks every key's range; the error names the key.
-    pub fn check(&self) -> Result<(), ConfigError> {
-        let ranges: [RangeCheck; 3] = [
-            (
-                "mdois.max_cycles",
-                self.max_cycles as f64,
-                1.0,
-                50.0,
-                "1..=50",
-            ),
-            (
-                "mdois.kinematics_tolerance",
-                self.kinematics_tolerance,
-                0.0,
-                0.5,
-                "[0, 0.5] of a level range",
-            ),
-            (
-                "mdois.layout_tolerance",
-                self.layout_tolerance,
-                0.0,
-                0.5,
-                "[0, 0.5] of the design elements",
-            ),
-        ];
-        check_ranges(&ranges)
-    }
-}
+/// The `[mdois]` table's settings.
+pub const MDOIS: Table<MdoisConfig> = Table {
+    name: "mdois",
+    doc: "The MDOIS cycle loop: system analysis, then both disciplines, until no design \
+          variable changes.",
+    settings: &[
+        Setting {
+            key: "max_cycles",
+            unit: "",
+            allowed: Allowed::Integer(Integers::between(1, 50)),
+            doc: "Design cycles allowed (at the cap the last proposal is analysed once more \
+                  and the cap reported)",
+            value: |m| Value::unsigned(m.max_cycles),
+        },
+        Setting {
+            key: "kinematics_tolerance",
+            unit: "of a level range",
+            allowed: Allowed::Real(Interval::closed(0.0, 0.5)),
+            doc: "A kinematic variable is unchanged when it moved by at most this fraction of \
+                  its level range (high - low level of [design])",
+            value: |m| Value::Real(m.kinematics_tolerance),
+        },
+        Setting {
+            key: "layout_tolerance",
+            unit: "of the design elements",
+            allowed: Allowed::Real(Interval::closed(0.0, 0.5)),
+            doc: "The layout is unchanged when at most this fraction of the design elements \
+                  changed (0: none, the paper's rule; 0.01 by default, see the topology key)",
+            value: |m| Value::Real(m.layout_tolerance),
+        },
+    ],
+};
 
 #[cfg(test)]
 mod tests {
@@ -92,12 +95,12 @@ mod tests {
     /// The defaults pass; a bad key is named with its range.
     #[test]
     fn defaults_pass_and_errors_name_the_key() {
-        MdoisConfig::default().check().unwrap();
+        MDOIS.check(&MdoisConfig::default()).unwrap();
         let bad = MdoisConfig {
             max_cycles: 0,
             ..MdoisConfig::default()
         };
-        let e = bad.check().unwrap_err().to_string();
+        let e = MDOIS.check(&bad).unwrap_err().to_string();
         assert!(
             e.contains("mdois.max_cycles") && e.contains("1..=50"),
             "{e}"
@@ -106,7 +109,7 @@ mod tests {
             layout_tolerance: f64::NAN,
             ..MdoisConfig::default()
         };
-        let e = bad.check().unwrap_err().to_string();
+        let e = MDOIS.check(&bad).unwrap_err().to_string();
         assert!(e.contains("mdois.layout_tolerance"), "{e}");
     }
 }

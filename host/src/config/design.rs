@@ -1,0 +1,122 @@
+//! The `[design]` table: the kinematic optimization's levels (the
+//! discipline's own [`DesignSpace`], its keys written in this table), the
+//! weights of its combined objective and the genetic algorithm's seed.
+//!
+//! The levels are [`DesignSpace`]'s fields flattened into the table, so
+//! serde cannot refuse unknown keys here (`deny_unknown_fields` does not
+//! work with `flatten`); [`check_keys`] refuses them from the declared
+//! settings instead.
+
+use fwav_settings::{Allowed, Integers, Interval, Setting, Table, Value};
+use serde::{Deserialize, Serialize};
+
+use crate::discipline::kinematic::DesignSpace;
+
+use super::ConfigError;
+
+/// The `[design]` table.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct DesignConfig {
+    /// The levels (low, initial, high) of the four kinematic variables.
+    #[serde(flatten)]
+    pub space: DesignSpace,
+    /// Weight of the relative thrust gain in the combined objective.
+    pub thrust_weight: f64,
+    /// Weight of the relative efficiency gain.
+    pub efficiency_weight: f64,
+    /// Seed of the genetic algorithm.
+    pub seed: u64,
+}
+
+impl Default for DesignConfig {
+    /// [`DesignSpace::fwav`], equal weights, seed 1.
+    fn default() -> Self {
+        Self {
+            space: DesignSpace::fwav(),
+            thrust_weight: 1.0,
+            efficiency_weight: 1.0,
+            seed: 1,
+        }
+    }
+}
+
+/// The `[design]` table's settings.
+pub const DESIGN: Table<DesignConfig> = Table {
+    name: "design",
+    doc: "The aerodynamic discipline: three levels (low, initial, high) of each kinematic \
+          variable for the L18 array, and the weights of the combined objective \
+          w_ct CT/CT_0 + w_eta eta/eta_0.",
+    settings: &[
+        Setting {
+            key: "frequency_hz",
+            unit: "Hz",
+            allowed: Allowed::Increasing(Interval::closed(0.1, 200.0)),
+            doc: "Frequency levels",
+            value: |d| Value::Reals(d.space.frequency_hz.to_vec()),
+        },
+        Setting {
+            key: "amplitude_deg",
+            unit: "deg",
+            allowed: Allowed::Increasing(Interval::closed(0.0, 80.0)),
+            doc: "Amplitude levels",
+            value: |d| Value::Reals(d.space.amplitude_deg.to_vec()),
+        },
+        Setting {
+            key: "mean_angle_deg",
+            unit: "deg",
+            allowed: Allowed::Increasing(Interval::closed(-60.0, 60.0)),
+            doc: "Mean angle levels",
+            value: |d| Value::Reals(d.space.mean_angle_deg.to_vec()),
+        },
+        Setting {
+            key: "stroke_plane_deg",
+            unit: "deg",
+            allowed: Allowed::Increasing(Interval::closed(0.0, 180.0)),
+            doc: "Stroke-plane levels",
+            value: |d| Value::Reals(d.space.stroke_plane_deg.to_vec()),
+        },
+        Setting {
+            key: "thrust_weight",
+            unit: "",
+            allowed: Allowed::Real(Interval::closed(0.0, 100.0)),
+            doc: "Weight of the relative thrust gain CT/CT_0",
+            value: |d| Value::Real(d.thrust_weight),
+        },
+        Setting {
+            key: "efficiency_weight",
+            unit: "",
+            allowed: Allowed::Real(Interval::closed(0.0, 100.0)),
+            doc: "Weight of the relative efficiency gain eta/eta_0",
+            value: |d| Value::Real(d.efficiency_weight),
+        },
+        Setting {
+            key: "seed",
+            unit: "",
+            allowed: Allowed::Integer(Integers::at_least(0)),
+            doc: "Seed of the genetic algorithm (NSGA-II)",
+            value: |d| Value::unsigned(d.seed),
+        },
+    ],
+};
+
+/// Refuses a key of the file's `[design]` table that [`DESIGN`] does not
+/// declare.
+pub fn check_keys(file: &toml::Table) -> Result<(), ConfigError> {
+    let Some(toml::Value::Table(table)) = file.get(DESIGN.name) else {
+        return Ok(());
+    };
+    match table.keys().find(|k| DESIGN.setting(k).is_none()) {
+        None => Ok(()),
+        Some(key) => Err(ConfigError::Unknown {
+            table: DESIGN.name,
+            key: key.clone(),
+            expected: DESIGN
+                .settings
+                .iter()
+                .map(|s| format!("`{}`", s.key))
+                .collect::<Vec<_>>()
+                .join(", "),
+        }),
+    }
+}

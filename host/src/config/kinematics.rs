@@ -1,0 +1,43 @@
+//! The `[kinematics]` table: the initial flapping kinematics (the first
+//! system analysis flies them), in Hz and degrees. Its type is
+//! [`FlappingKinematics`] itself (SI inside, degrees in the file through
+//! its serde); the declarations here check the degrees the file holds.
+
+use crate::aeroelastic::kinematics::FlappingKinematics;
+use fwav_settings::{Allowed, Interval, Setting, Table, Value};
+
+/// The `[kinematics]` table's settings.
+pub const KINEMATICS: Table<FlappingKinematics> = Table {
+    name: "kinematics",
+    doc: "The initial flapping kinematics (the first system analysis flies them).",
+    settings: &[
+        Setting {
+            key: "frequency_hz",
+            unit: "Hz",
+            allowed: Allowed::Real(Interval::closed(0.1, 200.0)),
+            doc: "Flapping frequency",
+            value: |k| Value::Real(k.frequency),
+        },
+        Setting {
+            key: "amplitude_deg",
+            unit: "deg",
+            allowed: Allowed::Real(Interval::closed(0.0, 80.0)),
+            doc: "Flapping amplitude (half the stroke)",
+            value: |k| Value::Real(k.amplitude_deg()),
+        },
+        Setting {
+            key: "mean_angle_deg",
+            unit: "deg",
+            allowed: Allowed::Real(Interval::closed(-60.0, 60.0)),
+            doc: "Mean flapping angle",
+            value: |k| Value::Real(k.mean_angle_deg()),
+        },
+        Setting {
+            key: "stroke_plane_deg",
+            unit: "deg",
+            allowed: Allowed::Real(Interval::closed(0.0, 180.0)),
+            doc: "Stroke-plane inclination (90: flapping across the flight direction)",
+            value: |k| Value::Real(k.stroke_plane_deg()),
+        },
+    ],
+};

@@ -1,0 +1,208 @@
+//! The design file (TOML): the wing, its kinematics, the flight
+//! condition, the system analysis and the two disciplines' and the cycle
+//! loop's settings — every table's type, every key declared once with its
+//! unit, range and doc ([`fwav_settings`]), the checks those declarations
+//! drive, the conversions to the solvers' own settings, and `fwav init`'s
+//! commented template. Every key is optional with the built-in FWAV's
+//! value as default; units are in the key names, angles in degrees
+//! (people type them).
+//!
+//! ```toml
+//! [wing]
+//! semi_span_m = 0.15
+//! carbon_fraction = 0.3
+//! [kinematics]
+//! frequency_hz = 11.0
+//! amplitude_deg = 30.0
+//! [analysis]
+//! cycles = 4
+//! [topology]
+//! mass_fraction = 0.3
+//! [mdois]
+//! max_cycles = 5
+//! ```
+//!
+//! - [`wing`], [`kinematics`], [`flight`], [`analysis`], [`design`],
+//!   [`topology`], [`mdois`]: one table each, its type and declarations.
+//! - [`template`]: the commented file (`fwav init`, a run's
+//!   `config.toml`).
+//!
+//! This room sits above the solvers: it may import [`crate::aeroelastic`],
+//! [`crate::shell`], [`crate::discipline`] and [`crate::topology`] (their
+//! settings types), and only [`crate::mdois`] and the program import it;
+//! no solver module imports from here.
+
+pub mod analysis;
+pub mod design;
+pub mod flight;
+pub mod kinematics;
+pub mod mdois;
+pub mod template;
+pub mod topology;
+pub mod wing;
+
+use fwav_settings::SettingError;
+use serde::{Deserialize, Serialize};
+
+use crate::aeroelastic::analysis::SystemSettings;
+use crate::aeroelastic::kinematics::FlappingKinematics;
+use crate::aeroelastic::model::{FlightCondition, WingModel, WingModelError};
+use crate::discipline::kinematic::DesignSpace;
+use crate::shell::material::Layer;
+use crate::shell::wing::Planform;
+
+pub use design::DesignConfig;
+pub use flight::FlightConfig;
+pub use mdois::MdoisConfig;
+pub use topology::TopologyConfig;
+pub use wing::WingConfig;
+
+/// Why a configuration was refused.
+#[derive(Debug, thiserror::Error)]
+pub enum ConfigError {
+    /// Not TOML or an unknown/mistyped field (the message names it).
+    #[error("{0}")]
+    Parse(#[from] toml::de::Error),
+    /// A key no table declares (in the tables the TOML parser cannot
+    /// check itself, see [`design`]).
+    #[error("unknown field `{table}.{key}`, expected one of {expected}")]
+    Unknown {
+        /// The table.
+        table: &'static str,
+        /// The key given.
+        key: String,
+        /// The table's keys, listed.
+        expected: String,
+    },
+    /// A value outside its declared range (the message names the field as
+    /// `table.key`, its value and the range).
+    #[error(transparent)]
+    Range(#[from] SettingError),
+    /// The wing could not be built.
+    #[error(transparent)]
+    Wing(#[from] WingModelError),
+}
+
+/// The whole file.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SystemConfig {
+    /// The wing.
+    pub wing: WingConfig,
+    /// Its flapping kinematics.
+    pub kinematics: FlappingKinematics,
+    /// The flight condition.
+    pub flight: FlightConfig,
+    /// Solver settings.
+    pub analysis: SystemSettings,
+    /// The kinematic optimization.
+    pub design: DesignConfig,
+    /// The structural discipline (ESLSO).
+    pub topology: TopologyConfig,
+    /// The MDOIS cycle loop (cycle cap, "unchanged" tolerances).
+    pub mdois: MdoisConfig,
+}
+
+impl SystemConfig {
+    /// Parses and checks a TOML text.
+    pub fn from_toml(text: &str) -> Result<Self, ConfigError> {
+        let config: Self = toml::from_str(text)?;
+        design::check_keys(&toml::from_str(text)?)?;
+        config.check()?;
+        Ok(config)
+    }
+
+    /// Checks every key against its declared range, table by table in
+    /// the file's order; the first key outside is the error.
+    pub fn check(&self) -> Result<(), ConfigError> {
+        wing::WING.check(&self.wing)?;
+        kinematics::KINEMATICS.check(&self.kinematics)?;
+        flight::FLIGHT.check(&self.flight)?;
+        analysis::ANALYSIS.check(&self.analysis)?;
+        design::DESIGN.check(&self.design)?;
+        topology::TOPOLOGY.check(&self.topology)?;
+        mdois::MDOIS.check(&self.mdois)?;
+        Ok(())
+    }
+
+    /// The planform.
+    pub fn planform(&self) -> Planform {
+        self.wing.planform()
+    }
+
+    /// The wing model at the uniform starting design (paper's materials).
+    pub fn wing_model(&self) -> Result<WingModel, ConfigError> {
+        self.wing_model_with(None)
+    }
+
+    /// The wing model with carbon `densities` per element (a layout of the
+    /// structural discipline), or the uniform starting design for `None`.
+    pub fn wing_model_with(&self, densities: Option<&[f64]>) -> Result<WingModel, ConfigError> {
+        Ok(WingModel::new(
+            self.planform(),
+            &Layer::CARBON,
+            &Layer::MYLAR,
+            densities,
+            self.wing.carbon_fraction,
+        )?)
+    }
+
+    /// The initial kinematics (SI).
+    pub fn kinematics(&self) -> FlappingKinematics {
+        self.kinematics
+    }
+
+    /// The kinematic design space (a copy of `design.space`).
+    pub fn design_space(&self) -> DesignSpace {
+        self.design.space.clone()
+    }
+
+    /// The flight condition in SI.
+    pub fn flight(&self) -> FlightCondition {
+        self.flight.condition()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_and_errors_name_the_field() {
+        let c = SystemConfig::from_toml("").unwrap();
+        assert_eq!(c.planform(), Planform::FWAV);
+        let (k, i) = (c.kinematics(), FlappingKinematics::INITIAL);
+        assert!((k.amplitude - i.amplitude).abs() < 1e-15 && k.frequency == i.frequency);
+        let e = SystemConfig::from_toml("[kinematics]\nfrequency_hz = -3\n").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "kinematics.frequency_hz = -3 is outside [0.1, 200] Hz"
+        );
+        let e = SystemConfig::from_toml("[wing]\nspan = 3\n").unwrap_err();
+        assert!(e.to_string().contains("span"), "{e}");
+        let e = SystemConfig::from_toml("[analysis]\ncycles = \"four\"\n").unwrap_err();
+        assert!(e.to_string().contains("cycles"), "{e}");
+        let e = SystemConfig::from_toml("[design]\nfrequency = [1, 2, 3]\n").unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("unknown field `design.frequency`, expected one of"),
+            "{e}"
+        );
+        let e = SystemConfig::from_toml("[design]\namplitude_deg = [40, 30, 20]\n").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "design.amplitude_deg = [40, 30, 20] is outside increasing, each in [0, 80] deg"
+        );
+    }
+
+    /// A partial `[design]` table keeps the other levels and weights.
+    #[test]
+    fn a_partial_design_table_keeps_the_defaults() {
+        let c =
+            SystemConfig::from_toml("[design]\nfrequency_hz = [10, 11, 12]\nseed = 7\n").unwrap();
+        let d = DesignConfig::default();
+        assert_eq!(c.design.space.frequency_hz, [10.0, 11.0, 12.0]);
+        assert_eq!(c.design.space.amplitude_deg, d.space.amplitude_deg);
+        assert_eq!((c.design.seed, c.design.thrust_weight), (7, 1.0));
+    }
+}
