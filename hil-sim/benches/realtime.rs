@@ -3,7 +3,7 @@
 //! on one core, i.e. <= 0.5 ms per simulated 0.1 s).
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use fwav_hil_sim::config::PlantParams;
+use fwav_actuator::params::PlantParams;
 use fwav_hil_sim::scenario::{HostLink, Scenario};
 use fwav_hil_sim::sim::Simulator;
 use fwav_protocol::{Command, Hello};

@@ -15,6 +15,7 @@
 //! kind = "link_silence"     # or encoder_loss, stall, supply_drop (with battery_v)
 //! ```
 
+use fwav_actuator::params::PlantParams;
 use fwav_fc_core::reference::ReferenceGenerator;
 use fwav_protocol::document::{ProfileDocument, SegmentDocument, FORMAT, FORMAT_VERSION};
 use fwav_protocol::frame::encode_frame_vec;
@@ -24,7 +25,6 @@ use fwav_protocol::{
 };
 use serde::{Deserialize, Serialize};
 
-use crate::config::PlantParams;
 use crate::metrics::{Report, TracePoint};
 use crate::sim::{InjectedFaults, Simulator};
 

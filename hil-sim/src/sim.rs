@@ -14,8 +14,8 @@ use rand::rngs::StdRng;
 use rand::SeedableRng;
 use rand_distr::{Distribution, Normal};
 
-use crate::config::PlantParams;
-use crate::plant::{Drive, Plant};
+use fwav_actuator::params::PlantParams;
+use fwav_actuator::plant::{Drive, Plant};
 
 /// Faults that can be injected.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
