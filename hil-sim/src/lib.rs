@@ -6,12 +6,12 @@
 //! behind a quantized encoder and a noisy current sensor, and runs the
 //! firmware's portable core, `fwav-fc-core`, unchanged, at its control rate
 //! in simulated time ([`sim`]). A host reaches it over the same framed link
-//! as a board: in process ([`scenario`]) or through a pseudo-terminal
-//! ([`serve`]), so `fwav upload --port <pty>` talks to it exactly as to a
-//! flight controller.
+//! as a board: in process, through the host's own link client (`fwav-link`,
+//! in [`scenario`]), or through a pseudo-terminal ([`serve`]), so `fwav
+//! upload --port <pty>` talks to it exactly as to a flight controller.
 //! [`metrics`] judges a run and [`plot`] draws it.
 //!
-//! It may import `fwav-actuator`, `fwav-protocol` and
+//! It may import `fwav-actuator`, `fwav-link`, `fwav-protocol` and
 //! `fwav-fc-core`; nothing imports it but its program and the end-to-end
 //! tests (the design library uses `fwav-actuator` directly).
 //!
