@@ -3,32 +3,32 @@
 //! on one core, i.e. <= 0.5 ms per simulated 0.1 s).
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use fwav_hil_sim::config::PlantParams;
-use fwav_hil_sim::scenario::{HostLink, Scenario};
+use fwav_actuator::params::PlantParams;
+use fwav_hil_sim::scenario::Scenario;
 use fwav_hil_sim::sim::Simulator;
-use fwav_protocol::{Command, Hello};
+use fwav_link::Link;
+use fwav_protocol::Command;
 
-fn flying() -> (Simulator, HostLink) {
+fn flying() -> Link<Simulator> {
     let scenario = Scenario::from_toml(include_str!("../scenarios/cruise-11hz.toml"))
         .expect("shipped scenario");
     let profile = scenario.profile().expect("valid profile");
-    let mut sim = Simulator::new(&PlantParams::default());
-    let mut host = HostLink::default();
+    let mut host = Link::new(Simulator::new(&PlantParams::default()));
+    host.handshake().expect("handshake");
     for command in [
-        Command::Handshake(Hello::THIS),
         Command::UploadProfile(profile),
         Command::Arm,
         Command::Start,
     ] {
-        host.request(&mut sim, command);
+        host.command(command).expect("accepted");
     }
     for k in 0..20_000 {
         if k % 1000 == 0 {
-            host.request(&mut sim, Command::Ping { nonce: k }); // heartbeat
+            host.request(Command::Ping { nonce: k }).expect("pong"); // heartbeat
         }
-        sim.step(); // past the 1 s ramp
+        host.get_mut().step(); // past the 1 s ramp
     }
-    (sim, host)
+    host
 }
 
 fn realtime(c: &mut Criterion) {
@@ -36,12 +36,13 @@ fn realtime(c: &mut Criterion) {
         ("with energy ledger (hil-sim run)", true),
         ("without ledger (hil-sim serve)", false),
     ] {
-        let (mut sim, mut host) = flying();
-        sim.plant.keep_ledger = ledger;
-        let steps = (0.1 / sim.params().control_dt()) as usize; // 0.1 s simulated
+        let mut host = flying();
+        host.get_mut().plant.keep_ledger = ledger;
+        let steps = (0.1 / host.get_ref().params().control_dt()) as usize; // 0.1 s simulated
         c.bench_function(&format!("fly 0.1 s simulated, {name}"), |b| {
             b.iter(|| {
-                host.request(&mut sim, Command::Ping { nonce: 0 }); // heartbeat
+                host.request(Command::Ping { nonce: 0 }).expect("pong"); // heartbeat
+                let sim = host.get_mut();
                 for _ in 0..steps {
                     std::hint::black_box(sim.step());
                 }

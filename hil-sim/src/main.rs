@@ -6,7 +6,7 @@ use std::process::ExitCode;
 
 use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
-use fwav_hil_sim::config::PlantParams;
+use fwav_actuator::params::{PlantParams, DEFAULT_PLANT_TOML};
 use fwav_hil_sim::scenario::{self, Scenario};
 use fwav_hil_sim::serve::Server;
 
@@ -74,7 +74,7 @@ fn main() -> ExitCode {
 fn run(cli: Cli) -> Result<ExitCode> {
     match cli.command {
         Command::Plant => {
-            print!("{}", fwav_hil_sim::config::DEFAULT_PLANT_TOML);
+            print!("{DEFAULT_PLANT_TOML}");
         }
         Command::Serve { plant, speed } => {
             let plant = load_plant(plant.as_deref())?;

@@ -10,10 +10,10 @@ use fwav_fc_core::reference::Waveform;
 use fwav_protocol::ParamId;
 use serde::Serialize;
 
-use crate::config::PlantParams;
-use crate::plant::{balance_residual, EnergyLedger};
 use crate::scenario::{FaultKind, Scenario};
 use crate::sim::{Sample, Simulator};
+use fwav_actuator::params::PlantParams;
+use fwav_actuator::plant::{balance_residual, EnergyLedger};
 
 /// One control period of a run.
 #[derive(Clone, Copy, Debug, PartialEq)]

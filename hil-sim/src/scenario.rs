@@ -1,6 +1,7 @@
 //! Scripted runs: a host that handshakes, uploads a profile, arms, starts
-//! and keeps a heartbeat, over the framed link, while faults are injected at
-//! given times; the trace goes to [`crate::metrics`].
+//! and keeps a heartbeat, over the framed link (the host's own client,
+//! `fwav_link::Link`, on the in-process [`Simulator`]), while faults are
+//! injected at given times; the trace goes to [`crate::metrics`].
 //!
 //! ```toml
 //! duration_s = 4.0
@@ -15,16 +16,13 @@
 //! kind = "link_silence"     # or encoder_loss, stall, supply_drop (with battery_v)
 //! ```
 
+use fwav_actuator::params::PlantParams;
 use fwav_fc_core::reference::ReferenceGenerator;
+use fwav_link::{Link, LinkError};
 use fwav_protocol::document::{ProfileDocument, SegmentDocument, FORMAT, FORMAT_VERSION};
-use fwav_protocol::frame::encode_frame_vec;
-use fwav_protocol::{
-    Command, DeviceMessage, EndAction, FrameDecoder, Hello, Limits, Profile, Reply, Request,
-    Response,
-};
+use fwav_protocol::{Command, EndAction, Limits, Profile};
 use serde::{Deserialize, Serialize};
 
-use crate::config::PlantParams;
 use crate::metrics::{Report, TracePoint};
 use crate::sim::{InjectedFaults, Simulator};
 
@@ -93,14 +91,10 @@ pub enum ScenarioError {
     /// The profile is not a valid document.
     #[error("profile: {0}")]
     Document(#[from] fwav_protocol::document::DocumentError),
-    /// The simulated device refused a command (its answer, for people).
-    #[error("the flight controller refused {command}: {reply}")]
-    Refused {
-        /// The command.
-        command: &'static str,
-        /// Its answer.
-        reply: String,
-    },
+    /// The simulated device refused a command, gave an unexpected answer or
+    /// none.
+    #[error("the simulated flight controller: {0}")]
+    Link(#[from] LinkError),
     /// A bad value.
     #[error("{0}")]
     Invalid(String),
@@ -134,66 +128,6 @@ impl Scenario {
     }
 }
 
-/// An in-process host on the simulator's byte link.
-pub struct HostLink {
-    decoder: FrameDecoder,
-    seq: u16,
-}
-
-impl Default for HostLink {
-    fn default() -> Self {
-        Self {
-            decoder: FrameDecoder::new(),
-            seq: 0,
-        }
-    }
-}
-
-impl HostLink {
-    /// Sends one command and returns the device's reply to it.
-    pub fn request(&mut self, sim: &mut Simulator, command: Command) -> Option<Reply> {
-        self.seq = self.seq.wrapping_add(1);
-        let request = Request {
-            seq: self.seq,
-            command,
-        };
-        sim.receive(&encode_frame_vec(&request).ok()?);
-        let bytes = sim.take_output();
-        let seq = self.seq;
-        self.decoder
-            .feed::<DeviceMessage>(&bytes)
-            .filter_map(Result::ok)
-            .find_map(|m| match m {
-                DeviceMessage::Response(Response { seq: s, reply }) if s == seq => Some(reply),
-                DeviceMessage::Hello(h) if h.seq == seq && h.accepted => Some(Reply::Ack),
-                _ => None,
-            })
-    }
-
-    fn expect_ack(
-        &mut self,
-        sim: &mut Simulator,
-        name: &'static str,
-        command: Command,
-    ) -> Result<(), ScenarioError> {
-        match self.request(sim, command) {
-            Some(Reply::Ack) => Ok(()),
-            Some(Reply::Nack(reason)) => Err(ScenarioError::Refused {
-                command: name,
-                reply: reason.to_string(),
-            }),
-            Some(other) => Err(ScenarioError::Refused {
-                command: name,
-                reply: format!("{other:?}"),
-            }),
-            None => Err(ScenarioError::Refused {
-                command: name,
-                reply: "no answer".to_owned(),
-            }),
-        }
-    }
-}
-
 /// Runs `scenario` on a plant; returns the metrics report.
 pub fn run(scenario: &Scenario, plant: &PlantParams) -> Result<Report, ScenarioError> {
     let (report, _) = run_with_trace(scenario, plant)?;
@@ -207,12 +141,11 @@ pub fn run_with_trace(
     plant: &PlantParams,
 ) -> Result<(Report, Vec<TracePoint>), ScenarioError> {
     let profile = scenario.profile()?;
-    let mut sim = Simulator::new(plant);
-    let mut host = HostLink::default();
-    host.expect_ack(&mut sim, "handshake", Command::Handshake(Hello::THIS))?;
-    host.expect_ack(&mut sim, "upload", Command::UploadProfile(profile.clone()))?;
-    host.expect_ack(&mut sim, "arm", Command::Arm)?;
-    host.expect_ack(&mut sim, "start", Command::Start)?;
+    let mut host = Link::new(Simulator::new(plant));
+    host.handshake()?;
+    host.command(Command::UploadProfile(profile.clone()))?;
+    host.command(Command::Arm)?;
+    host.command(Command::Start)?;
     let mut reference = ReferenceGenerator::new();
     reference.start(&profile, &Limits::REFERENCE_FWAV);
 
@@ -222,8 +155,8 @@ pub fn run_with_trace(
     let mut faults = InjectedFaults::default();
     let mut silent = false;
     let mut trace = Vec::with_capacity(steps);
-    let start_ledger = sim.plant.ledger;
-    let start_stored = sim.plant.stored_energy();
+    let start_ledger = host.get_ref().plant.ledger;
+    let start_stored = host.get_ref().plant.stored_energy();
     for k in 0..steps {
         let t = k as f64 * dt;
         for f in scenario
@@ -237,18 +170,18 @@ pub fn run_with_trace(
                 FaultKind::Stall => faults.stalled = true,
                 FaultKind::SupplyDrop => faults.battery_v = f.battery_v,
             }
-            sim.set_faults(faults);
+            host.get_mut().set_faults(faults);
         }
         if !silent && k % heartbeat_every == 0 && k > 0 {
-            host.request(&mut sim, Command::Ping { nonce: k as u32 });
+            host.request(Command::Ping { nonce: k as u32 })?;
         }
         let target = reference.waveform();
         let segment = reference.active_segment();
-        let sample = sim.step();
+        let sample = host.get_mut().step();
         reference.advance(dt as f32);
         trace.push(TracePoint::new(&sample, &target, segment));
     }
-    sim.take_output();
-    let report = Report::from_trace(scenario, plant, &trace, &sim, &start_ledger, start_stored);
+    let sim = host.get_ref();
+    let report = Report::from_trace(scenario, plant, &trace, sim, &start_ledger, start_stored);
     Ok((report, trace))
 }

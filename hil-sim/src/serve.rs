@@ -4,9 +4,9 @@
 use std::io::{ErrorKind, Read, Write};
 use std::time::{Duration, Instant};
 
+use fwav_actuator::params::PlantParams;
 use serialport::{SerialPort, TTYPort};
 
-use crate::config::PlantParams;
 use crate::sim::Simulator;
 
 /// Why the server stopped.

@@ -1,9 +1,12 @@
 //! The virtual flight controller: `fwav-fc-core`'s [`FlightController`] —
 //! the code the STM32 runs — stepped at its control rate against the
 //! simulated [`Plant`], reading a quantized encoder and a noisy current
-//! sensor, and reached through the same framed byte link as the board.
+//! sensor, and reached through the same framed byte link as the board (the
+//! [`Simulator`] is a byte port: what is written to it is received, what
+//! it sent is read back).
 
 use std::f64::consts::PI;
+use std::io::{ErrorKind, Read, Write};
 
 use fwav_fc_core::controller::Measurement;
 use fwav_fc_core::flight::{FlightController, Handled, LinkId};
@@ -14,8 +17,8 @@ use rand::rngs::StdRng;
 use rand::SeedableRng;
 use rand_distr::{Distribution, Normal};
 
-use crate::config::PlantParams;
-use crate::plant::{Drive, Plant};
+use fwav_actuator::params::PlantParams;
+use fwav_actuator::plant::{Drive, Plant};
 
 /// Faults that can be injected.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -209,5 +212,34 @@ impl Simulator {
             armed: self.armed,
             battery_j: self.plant.ledger.battery_j,
         }
+    }
+}
+
+/// The simulator as the device end of a byte link, for an in-process host
+/// (`fwav_link::Link<Simulator>`): writing is [`Simulator::receive`] (the
+/// answers are queued at once), reading takes the queued bytes in order,
+/// and an empty queue reads as [`ErrorKind::WouldBlock`] (nothing yet, as a
+/// serial port's timeout). Simulated time advances only by
+/// [`Simulator::step`].
+impl Write for Simulator {
+    fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
+        self.receive(bytes);
+        Ok(bytes.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+impl Read for Simulator {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        if self.outgoing.is_empty() {
+            return Err(ErrorKind::WouldBlock.into());
+        }
+        let n = buf.len().min(self.outgoing.len());
+        buf[..n].copy_from_slice(&self.outgoing[..n]);
+        self.outgoing.drain(..n);
+        Ok(n)
     }
 }

@@ -1,7 +1,7 @@
 //! The numbers the hil-sim issue asks of the default plant with the
 //! firmware core in the loop. Each run is a scenario through the framed link.
 
-use fwav_hil_sim::config::{PlantParams, PwmModel};
+use fwav_actuator::params::{PlantParams, PwmModel};
 use fwav_hil_sim::metrics::Report;
 use fwav_hil_sim::scenario::{run, FaultEvent, FaultKind, Scenario};
 use fwav_protocol::document::SegmentDocument;
@@ -225,38 +225,11 @@ fn energy_balances_with_switching_pwm() {
 }
 
 #[test]
-fn shipped_files_parse() {
-    let plant = PlantParams::from_toml(fwav_hil_sim::config::DEFAULT_PLANT_TOML).unwrap();
-    // The controller's default model is this plant (fwav-protocol ParamId).
-    let sim = fwav_hil_sim::sim::Simulator::new(&plant);
-    let inertia = sim.plant.inertia();
-    assert!((inertia - 7.5e-6).abs() < 1e-9, "{inertia}");
-    assert!(
-        (sim.plant.aero_damping() - 1.0465e-5).abs() < 1e-8,
-        "{}",
-        sim.plant.aero_damping()
-    );
+fn shipped_scenarios_parse() {
     let text = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/scenarios/cruise-11hz.toml"
     ))
     .unwrap();
     Scenario::from_toml(&text).unwrap();
-}
-
-#[test]
-fn bad_parameters_name_the_field() {
-    let text = fwav_hil_sim::config::DEFAULT_PLANT_TOML
-        .replace("resistance_ohm = 5.0", "resistance_ohm = -5.0");
-    let e = PlantParams::from_toml(&text).unwrap_err().to_string();
-    assert!(
-        e.contains("motor.resistance_ohm") && e.contains("-5"),
-        "{e}"
-    );
-    let text = fwav_hil_sim::config::DEFAULT_PLANT_TOML.replace("gear_ratio", "gear_ration");
-    let e = PlantParams::from_toml(&text).unwrap_err().to_string();
-    assert!(e.contains("gear_ration"), "{e}");
-    let text = fwav_hil_sim::config::DEFAULT_PLANT_TOML.replace("substeps = 10", "substeps = 4");
-    let e = PlantParams::from_toml(&text).unwrap_err().to_string();
-    assert!(e.contains("simulation.substeps"), "{e}");
 }

@@ -6,7 +6,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use fwav_hil_sim::config::PlantParams;
+use fwav_actuator::params::PlantParams;
 use fwav_hil_sim::serve::Server;
 use fwav_protocol::frame::encode_frame_vec;
 use fwav_protocol::{Command, DeviceMessage, FrameDecoder, Hello, Reply, Request, Response};

@@ -9,7 +9,7 @@
 //! k = J (2 pi 11)^2 = 3.6e-2 N m/rad, blade-element quadratic damping
 //! 0.5 rho C_D int c(r) r^3 dr = 1.05e-5 N m s^2 (rho 1.225 kg/m^3,
 //! C_D 3.0, 0.15 m span, chord 0.075 m tapering to half at the tip): the
-//! values of hil-sim's default plant (`hil-sim/plant.toml`).
+//! values of the default plant (`actuator/plant.toml`), which hil-sim flies.
 
 use postcard_schema::Schema;
 use serde::{Deserialize, Serialize};

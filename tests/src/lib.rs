@@ -9,7 +9,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::thread::JoinHandle;
 
-use fwav_hil_sim::config::PlantParams;
+use fwav_actuator::params::PlantParams;
 use fwav_hil_sim::serve::Server;
 
 /// hil-sim serving in real time on a pty, until dropped.

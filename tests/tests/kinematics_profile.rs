@@ -1,11 +1,11 @@
 //! Optimized kinematics to `kinematics.json`: the host's profile builder
-//! (protocol limits) and hil-sim's actuator feasibility together, as the
-//! design run writes the file, and the written file flown by the firmware
-//! core on the simulated plant.
+//! (protocol limits) and the actuator feasibility check (`fwav-actuator`)
+//! together, as the design run writes the file, and the written file flown
+//! by the firmware core on the simulated plant.
 
 use fwav::profile_file::{ProfileFile, ProfileFileError};
-use fwav_hil_sim::config::PlantParams;
-use fwav_hil_sim::feasibility::{check, nearest_feasible, ActuatorLimits, FlappingDemand};
+use fwav_actuator::feasibility::{check, nearest_feasible, ActuatorLimits, FlappingDemand};
+use fwav_actuator::params::PlantParams;
 use fwav_hil_sim::scenario::{run, Scenario};
 use fwav_protocol::document::ProfileDocument;
 use fwav_protocol::{Limits, ProfileError};

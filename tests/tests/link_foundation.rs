@@ -4,8 +4,8 @@
 //! link-commands issue.)
 
 use fwav::profile_file::ProfileFile;
+use fwav_actuator::params::PlantParams;
 use fwav_fc_core::flight::FlightController;
-use fwav_hil_sim::config::PlantParams;
 use fwav_hil_sim::sim::Simulator;
 use fwav_protocol::frame::encode_frame_vec;
 use fwav_protocol::*;

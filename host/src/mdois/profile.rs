@@ -4,7 +4,7 @@
 //! `fwav upload`), after the actuator feasibility check.
 //!
 //! Before the file is written, the kinematics are judged against the
-//! actuator model of the simulator ([`fwav_hil_sim::feasibility`]: the
+//! actuator model ([`fwav_actuator::feasibility`], the one hil-sim flies: the
 //! steady-state motor torque, current and terminal voltage that harmonic
 //! flapping at that frequency, amplitude and mean angle needs from the
 //! default motor, gearbox, spring and battery, against the stall torque,
@@ -17,10 +17,10 @@
 
 use std::path::{Path, PathBuf};
 
-use fwav_hil_sim::config::PlantParams;
-use fwav_hil_sim::feasibility::{
+use fwav_actuator::feasibility::{
     check, nearest_feasible, ActuatorLimits, Change, FlappingDemand, Margin,
 };
+use fwav_actuator::params::PlantParams;
 use fwav_protocol::Limits;
 use serde::{Deserialize, Serialize};
 
@@ -107,9 +107,9 @@ struct Judged {
     limiting: Margin,
 }
 
-/// Judges `kinematics` (to 6 significant digits) on the simulator's
-/// default actuator (see the module docs): the verdict `summary.json`
-/// keeps. Analytic, a few milliseconds.
+/// Judges `kinematics` (to 6 significant digits) on the default actuator
+/// (`fwav-actuator`'s shipped plant; see the module docs): the verdict
+/// `summary.json` keeps. Analytic, a few milliseconds.
 pub fn actuator_check(kinematics: &FlappingKinematics) -> Result<ActuatorCheck, DesignError> {
     Ok(judge(kinematics)?.check)
 }

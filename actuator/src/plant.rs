@@ -24,10 +24,12 @@
 //! - bridge: averaged `V = d V_bus` or switching `V = +-V_bus` at the PWM
 //!   frequency (locked anti-phase), `V_bus = V_batt - R_batt i_supply`;
 //!   a disabled bridge is an open circuit (`i = 0`).
+//!
+//! Imports the parameters ([`crate::params`]) only.
 
 use serde::{Deserialize, Serialize};
 
-use crate::config::PlantParams;
+use crate::params::{PlantParams, PwmModel};
 
 /// 1 / rate scale of the regularized sign of friction (0.05 rad/s), s/rad.
 pub(crate) const FRICTION_SLOPE: f64 = 1.0 / 0.05;
@@ -117,7 +119,7 @@ pub struct Plant {
     pub battery_v: f64,
     /// The rotor is locked (stall fault).
     pub stalled: bool,
-    /// Keep the energy ledger (on by default; `serve` turns it off since
+    /// Keep the energy ledger (on by default; `hil-sim serve` turns it off since
     /// nobody reads it there, which makes each step ~20% cheaper).
     pub keep_ledger: bool,
 }
@@ -275,8 +277,8 @@ impl Plant {
         // Averaged: one bridge state for the whole step. Switching: the state
         // at each stage's time.
         let averaged = match self.p.supply.pwm {
-            crate::config::PwmModel::Averaged => Some(self.electrical(drive.duty, drive.enabled)),
-            crate::config::PwmModel::Switching => None,
+            PwmModel::Averaged => Some(self.electrical(drive.duty, drive.enabled)),
+            PwmModel::Switching => None,
         };
         let s = &self.state;
         let x: Vector = [s.current_a, s.angle_rad, s.rate_rad_s];

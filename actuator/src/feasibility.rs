@@ -48,15 +48,17 @@
 //!
 //! A demand is feasible when every margin `1 - value / limit` is at least
 //! the [`ActuatorLimits::reserve`] kept for the feedback loop.
+//!
+//! Imports the parameters and the plant's friction regularization of this
+//! crate, and the device's parameters and envelope from `fwav-protocol`.
 
 use std::f64::consts::PI;
 use std::fmt;
 
-use fwav_fc_core::params::ParamSet;
 use fwav_protocol::ParamId;
 use serde::Serialize;
 
-use crate::config::{ConfigError, PlantParams};
+use crate::params::{ConfigError, PlantParams};
 use crate::plant::FRICTION_SLOPE;
 
 pub mod nearest;
@@ -196,11 +198,12 @@ impl Default for ActuatorLimits {
 }
 
 impl ActuatorLimits {
-    /// The firmware's default current limit (`ParamSet::DEFAULT`, what the
-    /// flight controller boots with) and [`DEFAULT_RESERVE`].
+    /// The firmware's default current limit (the protocol's default of
+    /// `ParamId::CurrentLimit`, what the flight controller boots with) and
+    /// [`DEFAULT_RESERVE`].
     pub fn firmware_default() -> Self {
         Self {
-            current_a: f64::from(ParamSet::DEFAULT.get(ParamId::CurrentLimit)),
+            current_a: f64::from(ParamId::CurrentLimit.info().default),
             reserve: DEFAULT_RESERVE,
         }
     }

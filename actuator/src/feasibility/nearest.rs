@@ -30,7 +30,7 @@ use fwav_protocol::Limits;
 use serde::Serialize;
 
 use super::{check, ActuatorLimits, Feasibility, FeasibilityError, FlappingDemand};
-use crate::config::PlantParams;
+use crate::params::PlantParams;
 
 /// Points of the downward scan.
 pub const SCAN_STEPS: usize = 200;

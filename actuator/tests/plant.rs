@@ -2,8 +2,8 @@
 
 use std::f64::consts::PI;
 
-use fwav_hil_sim::config::PlantParams;
-use fwav_hil_sim::plant::{Drive, Plant};
+use fwav_actuator::params::PlantParams;
+use fwav_actuator::plant::{Drive, Plant};
 
 /// Blade elements vs the closed form for a linear taper:
 /// `int_0^R c(r) r^3 dr = c_root R^4/4 + (c_tip - c_root) R^4/5`.

@@ -1,6 +1,8 @@
-//! The plant's parameters, read from TOML (`hil-sim/plant.toml` documents
-//! every default). SI units; every field is checked with an error that
-//! names it.
+//! The plant's parameters, read from TOML (`actuator/plant.toml` documents
+//! every default): the actuator's physics (motor, supply, transmission,
+//! wing) and what a simulation of it adds (sensors, time stepping). SI
+//! units; every field is checked with an error that names it. Imports
+//! nothing of this crate.
 
 use serde::{Deserialize, Serialize};
 
@@ -160,13 +162,13 @@ pub struct PlantParams {
     pub simulation: Simulation,
 }
 
-/// The documented default plant (the file shipped as `hil-sim/plant.toml`).
+/// The documented default plant (the file shipped as `actuator/plant.toml`).
 pub const DEFAULT_PLANT_TOML: &str = include_str!("../plant.toml");
 
 impl Default for PlantParams {
     fn default() -> Self {
         // The shipped file is tested to parse and validate.
-        Self::from_toml(DEFAULT_PLANT_TOML).unwrap_or_else(|e| panic!("hil-sim/plant.toml: {e}"))
+        Self::from_toml(DEFAULT_PLANT_TOML).unwrap_or_else(|e| panic!("actuator/plant.toml: {e}"))
     }
 }
 
