@@ -4,6 +4,7 @@
 //! units; every field is checked with an error that names it. Imports
 //! nothing of this crate.
 
+use fwav_settings::{Allowed, Integers, Interval, Setting, SettingError, Table, Value};
 use serde::{Deserialize, Serialize};
 
 /// Why a parameter file was refused.
@@ -12,16 +13,10 @@ pub enum ConfigError {
     /// Not TOML, or an unknown or mistyped key (with line and column).
     #[error("{0}")]
     Toml(#[from] toml::de::Error),
-    /// A value outside its allowed range.
-    #[error("{field} = {value} is outside {range}")]
-    OutOfRange {
-        /// The key, e.g. `motor.resistance_ohm`.
-        field: &'static str,
-        /// The value given.
-        value: f64,
-        /// The allowed range, for people.
-        range: &'static str,
-    },
+    /// A value outside its declared range (the error names the key,
+    /// e.g. `motor.resistance_ohm`, the value and the range).
+    #[error(transparent)]
+    OutOfRange(#[from] SettingError),
 }
 
 /// The H-bridge model.
@@ -182,156 +177,12 @@ impl PlantParams {
 
     /// Checks every value's range.
     pub fn validate(&self) -> Result<(), ConfigError> {
-        let positive = "(0, inf)";
-        let checks: [(&'static str, f64, bool, &'static str); 20] = [
-            (
-                "motor.resistance_ohm",
-                self.motor.resistance_ohm,
-                self.motor.resistance_ohm > 0.0,
-                positive,
-            ),
-            (
-                "motor.inductance_h",
-                self.motor.inductance_h,
-                self.motor.inductance_h > 0.0,
-                positive,
-            ),
-            (
-                "motor.torque_constant_nm_per_a",
-                self.motor.torque_constant_nm_per_a,
-                self.motor.torque_constant_nm_per_a > 0.0,
-                positive,
-            ),
-            (
-                "motor.rotor_inertia_kg_m2",
-                self.motor.rotor_inertia_kg_m2,
-                self.motor.rotor_inertia_kg_m2 >= 0.0,
-                "[0, inf)",
-            ),
-            (
-                "motor.coulomb_friction_nm",
-                self.motor.coulomb_friction_nm,
-                self.motor.coulomb_friction_nm >= 0.0,
-                "[0, inf)",
-            ),
-            (
-                "motor.viscous_friction_nms_per_rad",
-                self.motor.viscous_friction_nms_per_rad,
-                self.motor.viscous_friction_nms_per_rad >= 0.0,
-                "[0, inf)",
-            ),
-            (
-                "supply.battery_v",
-                self.supply.battery_v,
-                self.supply.battery_v > 0.0,
-                positive,
-            ),
-            (
-                "supply.internal_resistance_ohm",
-                self.supply.internal_resistance_ohm,
-                self.supply.internal_resistance_ohm >= 0.0,
-                "[0, inf)",
-            ),
-            (
-                "supply.pwm_hz",
-                self.supply.pwm_hz,
-                self.supply.pwm_hz > 0.0,
-                positive,
-            ),
-            (
-                "transmission.gear_ratio",
-                self.transmission.gear_ratio,
-                self.transmission.gear_ratio > 0.0,
-                positive,
-            ),
-            (
-                "transmission.efficiency",
-                self.transmission.efficiency,
-                self.transmission.efficiency > 0.0 && self.transmission.efficiency <= 1.0,
-                "(0, 1]",
-            ),
-            (
-                "transmission.spring_nm_per_rad",
-                self.transmission.spring_nm_per_rad,
-                self.transmission.spring_nm_per_rad >= 0.0,
-                "[0, inf)",
-            ),
-            (
-                "wing.inertia_kg_m2",
-                self.wing.inertia_kg_m2,
-                self.wing.inertia_kg_m2 > 0.0,
-                positive,
-            ),
-            (
-                "wing.span_m",
-                self.wing.span_m,
-                self.wing.span_m > 0.0,
-                positive,
-            ),
-            (
-                "wing.root_chord_m",
-                self.wing.root_chord_m,
-                self.wing.root_chord_m > 0.0,
-                positive,
-            ),
-            (
-                "wing.tip_chord_m",
-                self.wing.tip_chord_m,
-                self.wing.tip_chord_m >= 0.0,
-                "[0, inf)",
-            ),
-            (
-                "wing.air_density_kg_m3",
-                self.wing.air_density_kg_m3,
-                self.wing.air_density_kg_m3 >= 0.0,
-                "[0, inf)",
-            ),
-            (
-                "wing.drag_coefficient",
-                self.wing.drag_coefficient,
-                self.wing.drag_coefficient >= 0.0,
-                "[0, inf)",
-            ),
-            (
-                "simulation.control_hz",
-                self.simulation.control_hz,
-                self.simulation.control_hz >= 100.0 && self.simulation.control_hz <= 100_000.0,
-                "[100, 100000]",
-            ),
-            (
-                "simulation.substeps",
-                f64::from(self.simulation.substeps),
-                self.simulation.substeps >= 10,
-                "[10, inf) (RK4 at least 10x finer than control)",
-            ),
-        ];
-        for (field, value, ok, range) in checks {
-            // `ok` is false for NaN, since every comparison with NaN is.
-            if !ok || !value.is_finite() {
-                return Err(ConfigError::OutOfRange {
-                    field,
-                    value,
-                    range,
-                });
-            }
-        }
-        if self.sensors.encoder_counts_per_rev < 4 {
-            return Err(ConfigError::OutOfRange {
-                field: "sensors.encoder_counts_per_rev",
-                value: f64::from(self.sensors.encoder_counts_per_rev),
-                range: "[4, inf)",
-            });
-        }
-        // Written so that NaN fails.
-        let noise_ok =
-            self.sensors.current_noise_a >= 0.0 && self.sensors.current_noise_a.is_finite();
-        if !noise_ok || !self.sensors.current_offset_a.is_finite() {
-            return Err(ConfigError::OutOfRange {
-                field: "sensors.current_noise_a",
-                value: self.sensors.current_noise_a,
-                range: "[0, inf)",
-            });
-        }
+        MOTOR.check(&self.motor)?;
+        SUPPLY.check(&self.supply)?;
+        TRANSMISSION.check(&self.transmission)?;
+        WING.check(&self.wing)?;
+        SENSORS.check(&self.sensors)?;
+        SIMULATION.check(&self.simulation)?;
         Ok(())
     }
 
@@ -340,3 +191,248 @@ impl PlantParams {
         1.0 / self.simulation.control_hz
     }
 }
+
+/// A real setting of a plant table, declared once (key, unit, range, doc).
+const fn real<T>(
+    key: &'static str,
+    unit: &'static str,
+    allowed: Interval,
+    doc: &'static str,
+    value: fn(&T) -> Value,
+) -> Setting<T> {
+    Setting {
+        key,
+        unit,
+        allowed: Allowed::Real(allowed),
+        doc,
+        value,
+    }
+}
+
+/// The `[motor]` table's settings.
+pub const MOTOR: Table<Motor> = Table {
+    name: "motor",
+    doc: "DC motor.",
+    settings: &[
+        real(
+            "resistance_ohm",
+            "ohm",
+            Interval::positive(),
+            "Winding resistance",
+            |m| Value::Real(m.resistance_ohm),
+        ),
+        real(
+            "inductance_h",
+            "H",
+            Interval::positive(),
+            "Winding inductance",
+            |m| Value::Real(m.inductance_h),
+        ),
+        real(
+            "torque_constant_nm_per_a",
+            "N m/A",
+            Interval::positive(),
+            "Torque constant (= back-EMF constant)",
+            |m| Value::Real(m.torque_constant_nm_per_a),
+        ),
+        real(
+            "rotor_inertia_kg_m2",
+            "kg m^2",
+            Interval::at_least(0.0),
+            "Rotor inertia",
+            |m| Value::Real(m.rotor_inertia_kg_m2),
+        ),
+        real(
+            "coulomb_friction_nm",
+            "N m",
+            Interval::at_least(0.0),
+            "Coulomb friction at the motor shaft",
+            |m| Value::Real(m.coulomb_friction_nm),
+        ),
+        real(
+            "viscous_friction_nms_per_rad",
+            "N m s/rad",
+            Interval::at_least(0.0),
+            "Viscous friction at the motor shaft",
+            |m| Value::Real(m.viscous_friction_nms_per_rad),
+        ),
+    ],
+};
+
+/// The `[supply]` table's settings.
+pub const SUPPLY: Table<Supply> = Table {
+    name: "supply",
+    doc: "Battery and H-bridge.",
+    settings: &[
+        Setting {
+            key: "pwm",
+            unit: "",
+            allowed: Allowed::Choice(&["averaged", "switching"]),
+            doc: "Bridge model: the average voltage over a PWM period, or each period's switching",
+            value: |s| {
+                Value::Choice(match s.pwm {
+                    PwmModel::Averaged => "averaged",
+                    PwmModel::Switching => "switching",
+                })
+            },
+        },
+        real(
+            "battery_v",
+            "V",
+            Interval::positive(),
+            "Open-circuit battery voltage",
+            |s| Value::Real(s.battery_v),
+        ),
+        real(
+            "internal_resistance_ohm",
+            "ohm",
+            Interval::at_least(0.0),
+            "Battery internal resistance",
+            |s| Value::Real(s.internal_resistance_ohm),
+        ),
+        real(
+            "pwm_hz",
+            "Hz",
+            Interval::positive(),
+            "PWM frequency of the switching bridge model",
+            |s| Value::Real(s.pwm_hz),
+        ),
+    ],
+};
+
+/// The `[transmission]` table's settings.
+pub const TRANSMISSION: Table<Transmission> = Table {
+    name: "transmission",
+    doc: "Gearbox and spring.",
+    settings: &[
+        real(
+            "gear_ratio",
+            "",
+            Interval::positive(),
+            "Motor turns per flapping-axis turn",
+            |t| Value::Real(t.gear_ratio),
+        ),
+        real(
+            "efficiency",
+            "",
+            Interval::above_up_to(0.0, 1.0),
+            "Gearbox efficiency",
+            |t| Value::Real(t.efficiency),
+        ),
+        real(
+            "spring_nm_per_rad",
+            "N m/rad",
+            Interval::at_least(0.0),
+            "Torsional spring about the flapping axis",
+            |t| Value::Real(t.spring_nm_per_rad),
+        ),
+    ],
+};
+
+/// The `[wing]` table's settings.
+pub const WING: Table<Wing> = Table {
+    name: "wing",
+    doc: "The wing as the actuator sees it.",
+    settings: &[
+        real(
+            "inertia_kg_m2",
+            "kg m^2",
+            Interval::positive(),
+            "Inertia of the wing (and linkage) about the flapping axis",
+            |w| Value::Real(w.inertia_kg_m2),
+        ),
+        real(
+            "span_m",
+            "m",
+            Interval::positive(),
+            "Span from the flapping axis to the tip",
+            |w| Value::Real(w.span_m),
+        ),
+        real(
+            "root_chord_m",
+            "m",
+            Interval::positive(),
+            "Chord at the root",
+            |w| Value::Real(w.root_chord_m),
+        ),
+        real(
+            "tip_chord_m",
+            "m",
+            Interval::at_least(0.0),
+            "Chord at the tip (linear taper)",
+            |w| Value::Real(w.tip_chord_m),
+        ),
+        real(
+            "air_density_kg_m3",
+            "kg/m^3",
+            Interval::at_least(0.0),
+            "Air density",
+            |w| Value::Real(w.air_density_kg_m3),
+        ),
+        real(
+            "drag_coefficient",
+            "",
+            Interval::at_least(0.0),
+            "Drag coefficient of the wing normal to the flow",
+            |w| Value::Real(w.drag_coefficient),
+        ),
+    ],
+};
+
+/// The `[sensors]` table's settings.
+pub const SENSORS: Table<Sensors> = Table {
+    name: "sensors",
+    doc: "Sensors.",
+    settings: &[
+        Setting {
+            key: "encoder_counts_per_rev",
+            unit: "",
+            allowed: Allowed::Integer(Integers::at_least(4)),
+            doc: "Encoder counts per revolution of the flapping axis",
+            value: |s| Value::unsigned(s.encoder_counts_per_rev),
+        },
+        real(
+            "current_noise_a",
+            "A",
+            Interval::at_least(0.0),
+            "Standard deviation of the current sensor's noise",
+            |s| Value::Real(s.current_noise_a),
+        ),
+        real(
+            "current_offset_a",
+            "A",
+            Interval::finite(),
+            "Offset of the current sensor",
+            |s| Value::Real(s.current_offset_a),
+        ),
+        Setting {
+            key: "seed",
+            unit: "",
+            allowed: Allowed::Integer(Integers::at_least(0)),
+            doc: "Seed of the sensor noise (recorded in results)",
+            value: |s| Value::unsigned(s.seed),
+        },
+    ],
+};
+
+/// The `[simulation]` table's settings.
+pub const SIMULATION: Table<Simulation> = Table {
+    name: "simulation",
+    doc: "Time stepping.",
+    settings: &[
+        real(
+            "control_hz",
+            "Hz",
+            Interval::closed(100.0, 100_000.0),
+            "Control rate of the flight controller",
+            |s| Value::Real(s.control_hz),
+        ),
+        Setting {
+            key: "substeps",
+            unit: "",
+            allowed: Allowed::Integer(Integers::at_least(10)),
+            doc: "Plant RK4 steps per control period (RK4 at least 10x finer than control)",
+            value: |s| Value::unsigned(s.substeps),
+        },
+    ],
+};
