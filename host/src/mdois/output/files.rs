@@ -8,24 +8,22 @@
 
 use std::path::Path;
 
-use crate::discipline::plot as discipline_plot;
 use crate::files::write_atomic;
-use crate::shell::vtu::{self, Field};
+use crate::mdois::error::DesignError;
+use crate::mdois::profile::write_kinematics;
+use crate::mdois::records::{load_kinematics, load_system, load_topology};
+use crate::mdois::stage::{layout_densities, Context};
+use crate::mdois::state::{Outcome, RunState, Stage};
+use crate::mdois::summary::{Summary, FORMAT};
+use crate::output::vtu::{self, Field};
+use crate::output::{discipline_plot, layout_picture};
 use crate::topology::eslso::{transform, DesignProblem, EslsoResult};
-use crate::topology::picture;
 use crate::topology::pressure::PressureHistory;
 
-use super::error::DesignError;
-use super::plot;
-use super::profile::write_kinematics;
-use super::records::{load_kinematics, load_system, load_topology};
-use super::report;
-use super::stage::{layout_densities, Context};
-use super::state::{Outcome, RunState, Stage};
-use super::summary::Summary;
+use super::{plot, report};
 
 /// The summary's file name.
-pub const SUMMARY_FILE: &str = super::summary::FORMAT.file;
+pub const SUMMARY_FILE: &str = FORMAT.file;
 
 /// Writes `summary.json`.
 pub fn write_summary(dir: &Path, summary: &Summary) -> Result<(), DesignError> {
@@ -121,7 +119,7 @@ pub(crate) fn write_final(
         if converged { "" } else { ", not converged" }
     );
     draw_atomic(dir, "topology.png", |p| {
-        picture::planform(&problem.mesh, &layout, &title, 1200, p).map_err(|e| e.to_string())
+        layout_picture::planform(&problem.mesh, &layout, &title, 1200, p).map_err(|e| e.to_string())
     })?;
     let mut pictures = vec![
         ("convergence.png", "MDOIS convergence: 3D thrust and efficiency, kinematics analysed, layout changes per cycle."),

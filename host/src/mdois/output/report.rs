@@ -4,7 +4,7 @@
 
 use std::fmt::Write as _;
 
-use super::summary::Summary;
+use crate::mdois::summary::Summary;
 
 /// A number with `digits` decimals, or "–" when missing or not finite.
 fn num(value: Option<f64>, digits: usize) -> String {
