@@ -5,7 +5,8 @@
 //! [`aeroelastic`], the kinematic optimization of [`discipline`] on the 2D
 //! unsteady aerodynamics of [`aero2d`], the ESL topology optimization of
 //! [`topology`]; the design file's tables, checks and template in
-//! [`config`]) and the link side: the kinematics profile file that `fwav
+//! [`config`]; the pictures and ParaView files of the results in
+//! [`output`], which no solver imports) and the link side: the kinematics profile file that `fwav
 //! design` writes and `fwav upload` sends ([`profile_file`]), serial ports
 //! ([`port`]), the framed request/response client with retries ([`link`])
 //! and the operations on a connected flight controller ([`device`]).
@@ -21,12 +22,12 @@ pub mod aeroelastic;
 pub mod config;
 pub mod device;
 pub mod discipline;
-pub mod drawing;
 pub mod file_format;
 pub mod files;
 pub mod link;
 pub mod mdois;
 pub mod optimize;
+pub mod output;
 pub mod port;
 pub mod profile_file;
 pub mod shell;

@@ -9,7 +9,7 @@
 //! - [`panel`]: thick sections (NACA 4-digit or point files, [`naca`]),
 //!   rigid or deforming, by an unsteady source/doublet panel method.
 //! - [`history`]: load histories and cycle means; [`friction`]: the laminar
-//!   skin-friction estimate for net thrust; [`plot`]: pictures of a run.
+//!   skin-friction estimate for net thrust.
 //! - [`theory`]: Theodorsen, Garrick and Wagner, the references.
 //! - [`case`]: one analysis as `fwav aero2d` runs it: the solver chosen by
 //!   the section, the last cycle's means and periodicity.
@@ -22,5 +22,4 @@ pub mod ldvm;
 pub mod motion;
 pub mod naca;
 pub mod panel;
-pub mod plot;
 pub mod theory;

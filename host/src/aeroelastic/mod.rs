@@ -20,7 +20,6 @@
 //!   deflection, drive power, coupling effort).
 //! - [`handoff`]: the section and pressure histories as the disciplines'
 //!   input files, one versioned type each.
-//! - [`series`]: `.vtu`/`.pvd` output of the wing and wake.
 
 pub mod analysis;
 pub mod floating_frame;
@@ -29,7 +28,6 @@ pub mod interface;
 pub mod kinematics;
 pub mod last_cycle;
 pub mod model;
-pub mod series;
 
 pub use analysis::{
     run, CycleMeans, Snapshot, StepRecord, SystemError, SystemResult, SystemSettings,

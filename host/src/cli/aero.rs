@@ -7,8 +7,8 @@ use anyhow::{bail, Context, Result};
 use fwav::aero2d::case::{Case, SectionModel};
 use fwav::aero2d::friction::FWAV_REYNOLDS;
 use fwav::aero2d::motion::Motion;
-use fwav::aero2d::plot::draw;
 use fwav::aeroelastic::handoff::SectionFile;
+use fwav::output::section_plot::draw;
 
 /// The command's options.
 #[derive(clap::Args)]

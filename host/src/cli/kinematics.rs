@@ -79,12 +79,12 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     }
     if let Some(dir) = &a.plot {
         std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-        fwav::discipline::plot::main_effects(
+        fwav::output::discipline_plot::main_effects(
             &result,
             &config.design_space(),
             &dir.join("main-effects.png"),
         )?;
-        fwav::discipline::plot::pareto(&result, &dir.join("pareto.png"))?;
+        fwav::output::discipline_plot::pareto(&result, &dir.join("pareto.png"))?;
     }
     if a.json {
         let out = serde_json::json!({

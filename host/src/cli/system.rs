@@ -7,9 +7,9 @@ use std::time::Instant;
 
 use anyhow::{Context, Result};
 use fwav::aeroelastic::handoff;
-use fwav::aeroelastic::series::write_series;
 use fwav::aeroelastic::{run, SystemResult};
 use fwav::config::SystemConfig;
+use fwav::output::wing_series::write_series;
 
 /// The command's options.
 #[derive(clap::Args)]

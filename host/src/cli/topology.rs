@@ -9,9 +9,9 @@ use anyhow::{Context, Result};
 use fwav::aeroelastic::handoff::PressureFile;
 use fwav::aeroelastic::run;
 use fwav::files::write_atomic;
-use fwav::shell::vtu::{self, Field};
+use fwav::output::layout_picture;
+use fwav::output::vtu::{self, Field};
 use fwav::topology::eslso::{optimize, DesignProblem, EslsoProgress, EslsoResult};
-use fwav::topology::picture;
 use fwav::topology::pressure::PressureHistory;
 
 /// The command's options.
@@ -151,7 +151,7 @@ fn write_outputs(a: &TopologyArgs, problem: &DesignProblem, result: &EslsoResult
             Field::CellScalar("design_domain", &design),
         ],
     )?;
-    picture::planform(
+    layout_picture::planform(
         &problem.mesh,
         &result.layout,
         &format!(

@@ -19,6 +19,8 @@
 //! if none beats it. Every evaluation runs in parallel (rayon); a failed
 //! one is recorded with its reason and counts as the worst response seen.
 
+use std::sync::atomic::{AtomicUsize, Ordering};
+
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -26,7 +28,7 @@ use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::optimize::anom::{Anom, Goal};
 use crate::optimize::doe::{l18_quadratic_columns, OrthogonalArray};
 use crate::optimize::nsga2::{minimize, Bounds, Nsga2Config};
-use crate::optimize::rsm::{fit_reduced, ReduceOptions};
+use crate::optimize::rsm::{fit_reduced, ReduceOptions, ReducedFit, RsmError};
 
 use super::cache::EvaluationCache;
 use super::section::{SectionCase, SectionResult};
@@ -187,130 +189,41 @@ pub fn optimize_reporting(
     cache: &EvaluationCache,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<KinematicResult, KinematicError> {
-    let method = |e: &dyn std::fmt::Display| KinematicError::Method(e.to_string());
-    let done = std::sync::atomic::AtomicUsize::new(0);
-    let report = || {
-        let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-        progress(n, EVALUATIONS);
+    let evaluations = Evaluations {
+        case,
+        cache,
+        progress,
+        done: AtomicUsize::new(0),
     };
-    let run = |design: FlappingKinematics| {
-        let result = match cache.get(case, &design) {
-            Some(r) => Ok(r),
-            None => {
-                let r = case.evaluate(&design).map_err(|e| e.to_string());
-                if let Ok(r) = &r {
-                    cache.insert(case, &design, *r);
-                }
-                r
-            }
-        };
-        report();
-        Evaluated { design, result }
-    };
-    let initial = run(initial);
+    let initial = evaluations.run(initial);
     let reference = initial.result.clone().map_err(KinematicError::Initial)?;
-    let combined = |r: &SectionResult| {
-        weights.thrust * r.ct / reference.ct
-            + weights.efficiency * r.efficiency / reference.efficiency
-    };
-    let score = |e: &Evaluated| e.result.as_ref().ok().map(combined);
+    let objective = Objective { weights, reference };
 
     // 1. The array.
-    let array = OrthogonalArray::l18();
-    let columns = l18_quadratic_columns(4).map_err(|e| method(&e))?;
-    let levels: Vec<Vec<f64>> = space.levels().iter().map(|l| l.to_vec()).collect();
-    let plan = array.design(&columns, &levels).map_err(|e| method(&e))?;
-    let runs: Vec<Evaluated> = plan
-        .par_iter()
-        .map(|x| run(FlappingKinematics::from_degrees([x[0], x[1], x[2], x[3]])))
-        .collect();
-    let worst = |values: Vec<Option<f64>>| -> Vec<f64> {
-        let floor = values
-            .iter()
-            .flatten()
-            .copied()
-            .fold(f64::INFINITY, f64::min);
-        values.into_iter().map(|v| v.unwrap_or(floor)).collect()
-    };
-    let scores = worst(runs.iter().map(score).collect());
-    let best_row = (0..runs.len())
+    let array = ArrayRuns::evaluate(space, &evaluations)?;
+    let scores = worst(array.runs.iter().map(|e| objective.score(e)).collect());
+    let best_row = (0..array.runs.len())
         .max_by(|&a, &b| scores[a].total_cmp(&scores[b]))
         .ok_or_else(|| KinematicError::Method("no runs".into()))?;
 
     // 2. ANOM on the combined objective.
-    let anom = Anom::new(&array, &columns, &scores).map_err(|e| method(&e))?;
+    let anom = Anom::new(&array.array, &array.columns, &scores).map_err(|e| method(&e))?;
     let (best_levels, anom_prediction) = anom.optimum(Goal::LargerIsBetter);
     let anom_design = FlappingKinematics::from_degrees(
         [0, 1, 2, 3].map(|f| space.levels()[f][usize::from(best_levels[f])]),
     );
 
     // 3. Response surfaces in coded levels, NSGA-II on them.
-    let coded: Vec<Vec<f64>> = (0..plan.len())
-        .map(|r| {
-            columns
-                .iter()
-                .map(|&c| f64::from(array.runs[r][c]) - 1.0)
-                .collect()
-        })
-        .collect();
-    let ct = worst(
-        runs.iter()
-            .map(|e| e.result.as_ref().ok().map(|r| r.ct))
-            .collect(),
-    );
-    let eta = worst(
-        runs.iter()
-            .map(|e| e.result.as_ref().ok().map(|r| r.efficiency))
-            .collect(),
-    );
-    let ct_fit = fit_reduced(&coded, &ct, ReduceOptions::default()).map_err(|e| method(&e))?;
-    let eta_fit = fit_reduced(&coded, &eta, ReduceOptions::default()).map_err(|e| method(&e))?;
-    let bounds = Bounds::new(vec![-1.0; 4], vec![1.0; 4]).map_err(|e| method(&e))?;
-    let front = minimize(&bounds, 2, nsga, |x: &[f64]| {
-        let c = ct_fit.surface.predict(x)?;
-        let e = eta_fit.surface.predict(x)?;
-        Ok::<_, crate::optimize::rsm::RsmError>(vec![-c, -e])
-    })
-    .map_err(|e| method(&e))?
-    .front;
-    let predicted = |o: &[f64]| {
-        weights.thrust * -o[0] / reference.ct + weights.efficiency * -o[1] / reference.efficiency
-    };
-    let knee = front
-        .iter()
-        .max_by(|a, b| predicted(&a.objectives).total_cmp(&predicted(&b.objectives)))
-        .ok_or_else(|| KinematicError::Method("NSGA-II returned an empty front".into()))?;
-    let rsm_design = space.decode(&knee.x);
-    let pareto = front
-        .iter()
-        .map(|i| (space.decode(&i.x), -i.objectives[0], -i.objectives[1]))
-        .collect();
+    let surfaces = Surfaces::search(&array, space, nsga, &objective)?;
 
     // Confirmations.
-    let confirmations: Vec<Evaluated> = [anom_design, rsm_design]
-        .par_iter()
-        .map(|&d| run(d))
-        .collect();
-    let candidate = |method: &str, predicted: Option<f64>, confirmation: Evaluated| Candidate {
-        method: method.to_string(),
-        predicted,
-        combined: score(&confirmation),
-        confirmation,
-    };
-    let mut confirmations = confirmations.into_iter();
-    let candidates = vec![
-        candidate("best L18 row", None, runs[best_row].clone()),
-        candidate(
-            "ANOM",
-            Some(anom_prediction),
-            confirmations.next().unwrap_or_else(|| run(anom_design)),
-        ),
-        candidate(
-            "RSM + NSGA-II",
-            Some(predicted(&knee.objectives)),
-            confirmations.next().unwrap_or_else(|| run(rsm_design)),
-        ),
-    ];
+    let candidates = confirm(
+        &evaluations,
+        &objective,
+        array.runs[best_row].clone(),
+        (anom_design, anom_prediction),
+        (surfaces.knee_design, surfaces.knee_prediction),
+    );
     let initial_score = weights.thrust + weights.efficiency;
     let chosen = (0..candidates.len())
         .filter(|&i| candidates[i].combined.is_some_and(|s| s > initial_score))
@@ -318,20 +231,237 @@ pub fn optimize_reporting(
             let s = |i: usize| candidates[i].combined.unwrap_or(f64::NEG_INFINITY);
             s(a).total_cmp(&s(b))
         });
-    let quality = |f: &crate::optimize::rsm::ReducedFit| {
-        (
-            f.surface.r_squared,
-            f.surface.adjusted_r_squared,
-            f.surface.press,
-        )
-    };
     Ok(KinematicResult {
         initial,
-        runs,
+        runs: array.runs,
         level_means: anom.level_means.clone(),
-        surface_quality: [quality(&ct_fit), quality(&eta_fit)],
-        pareto,
+        surface_quality: [quality(&surfaces.ct_fit), quality(&surfaces.eta_fit)],
+        pareto: surfaces.pareto,
         candidates,
         chosen,
     })
+}
+
+/// A method's refusal as the discipline's error.
+fn method(e: &dyn std::fmt::Display) -> KinematicError {
+    KinematicError::Method(e.to_string())
+}
+
+/// The values with each missing one (a failed run) replaced by the worst
+/// value seen.
+fn worst(values: Vec<Option<f64>>) -> Vec<f64> {
+    let floor = values
+        .iter()
+        .flatten()
+        .copied()
+        .fold(f64::INFINITY, f64::min);
+    values.into_iter().map(|v| v.unwrap_or(floor)).collect()
+}
+
+/// R², adjusted R² and PRESS of a fitted surface.
+fn quality(f: &ReducedFit) -> (f64, f64, Option<f64>) {
+    (
+        f.surface.r_squared,
+        f.surface.adjusted_r_squared,
+        f.surface.press,
+    )
+}
+
+/// The discipline's direct evaluations: from the cache or run (and then
+/// cached), each one counted for the progress report.
+struct Evaluations<'a> {
+    case: &'a SectionCase,
+    cache: &'a EvaluationCache,
+    progress: &'a (dyn Fn(usize, usize) + Sync),
+    done: AtomicUsize,
+}
+
+impl Evaluations<'_> {
+    /// Evaluates `design` (a failure is recorded with its reason).
+    fn run(&self, design: FlappingKinematics) -> Evaluated {
+        let result = match self.cache.get(self.case, &design) {
+            Some(r) => Ok(r),
+            None => {
+                let r = self.case.evaluate(&design).map_err(|e| e.to_string());
+                if let Ok(r) = &r {
+                    self.cache.insert(self.case, &design, *r);
+                }
+                r
+            }
+        };
+        let n = self.done.fetch_add(1, Ordering::Relaxed) + 1;
+        (self.progress)(n, EVALUATIONS);
+        Evaluated { design, result }
+    }
+}
+
+/// The combined objective, relative to the initial design's results.
+struct Objective {
+    weights: Weights,
+    reference: SectionResult,
+}
+
+impl Objective {
+    /// The combined objective of a result.
+    fn combined(&self, r: &SectionResult) -> f64 {
+        self.weights.thrust * r.ct / self.reference.ct
+            + self.weights.efficiency * r.efficiency / self.reference.efficiency
+    }
+
+    /// The combined objective of a run, None if it failed.
+    fn score(&self, e: &Evaluated) -> Option<f64> {
+        e.result.as_ref().ok().map(|r| self.combined(r))
+    }
+
+    /// The combined objective of the surfaces' objectives `[-CT, -eta]`.
+    fn predicted(&self, o: &[f64]) -> f64 {
+        self.weights.thrust * -o[0] / self.reference.ct
+            + self.weights.efficiency * -o[1] / self.reference.efficiency
+    }
+}
+
+/// Step 1: the L18 array over the design space's levels and its runs.
+struct ArrayRuns {
+    array: OrthogonalArray,
+    columns: Vec<usize>,
+    runs: Vec<Evaluated>,
+}
+
+impl ArrayRuns {
+    /// Lays out the array over `space` and evaluates its rows in parallel.
+    fn evaluate(space: &DesignSpace, evaluations: &Evaluations) -> Result<Self, KinematicError> {
+        let array = OrthogonalArray::l18();
+        let columns = l18_quadratic_columns(4).map_err(|e| method(&e))?;
+        let levels: Vec<Vec<f64>> = space.levels().iter().map(|l| l.to_vec()).collect();
+        let plan = array.design(&columns, &levels).map_err(|e| method(&e))?;
+        let runs: Vec<Evaluated> = plan
+            .par_iter()
+            .map(|x| evaluations.run(FlappingKinematics::from_degrees([x[0], x[1], x[2], x[3]])))
+            .collect();
+        Ok(Self {
+            array,
+            columns,
+            runs,
+        })
+    }
+
+    /// Each run's factor levels coded in [-1, 1].
+    fn coded(&self) -> Vec<Vec<f64>> {
+        (0..self.runs.len())
+            .map(|r| {
+                self.columns
+                    .iter()
+                    .map(|&c| f64::from(self.array.runs[r][c]) - 1.0)
+                    .collect()
+            })
+            .collect()
+    }
+}
+
+/// Step 3: the CT and efficiency surfaces, their Pareto front and its
+/// knee (the front's best combined objective).
+struct Surfaces {
+    ct_fit: ReducedFit,
+    eta_fit: ReducedFit,
+    pareto: Vec<(FlappingKinematics, f64, f64)>,
+    knee_design: FlappingKinematics,
+    knee_prediction: f64,
+}
+
+impl Surfaces {
+    /// Fits the surfaces to the array's runs and searches them by NSGA-II.
+    fn search(
+        array: &ArrayRuns,
+        space: &DesignSpace,
+        nsga: &Nsga2Config,
+        objective: &Objective,
+    ) -> Result<Self, KinematicError> {
+        let coded = array.coded();
+        let ct = worst(
+            array
+                .runs
+                .iter()
+                .map(|e| e.result.as_ref().ok().map(|r| r.ct))
+                .collect(),
+        );
+        let eta = worst(
+            array
+                .runs
+                .iter()
+                .map(|e| e.result.as_ref().ok().map(|r| r.efficiency))
+                .collect(),
+        );
+        let ct_fit = fit_reduced(&coded, &ct, ReduceOptions::default()).map_err(|e| method(&e))?;
+        let eta_fit =
+            fit_reduced(&coded, &eta, ReduceOptions::default()).map_err(|e| method(&e))?;
+        let bounds = Bounds::new(vec![-1.0; 4], vec![1.0; 4]).map_err(|e| method(&e))?;
+        let front = minimize(&bounds, 2, nsga, |x: &[f64]| {
+            let c = ct_fit.surface.predict(x)?;
+            let e = eta_fit.surface.predict(x)?;
+            Ok::<_, RsmError>(vec![-c, -e])
+        })
+        .map_err(|e| method(&e))?
+        .front;
+        let knee = front
+            .iter()
+            .max_by(|a, b| {
+                objective
+                    .predicted(&a.objectives)
+                    .total_cmp(&objective.predicted(&b.objectives))
+            })
+            .ok_or_else(|| KinematicError::Method("NSGA-II returned an empty front".into()))?;
+        let knee_design = space.decode(&knee.x);
+        let knee_prediction = objective.predicted(&knee.objectives);
+        let pareto = front
+            .iter()
+            .map(|i| (space.decode(&i.x), -i.objectives[0], -i.objectives[1]))
+            .collect();
+        Ok(Self {
+            ct_fit,
+            eta_fit,
+            pareto,
+            knee_design,
+            knee_prediction,
+        })
+    }
+}
+
+/// The three candidates: the best array row as it ran, and the ANOM and
+/// RSM designs (each with its predicted combined objective) confirmed by
+/// direct runs in parallel.
+fn confirm(
+    evaluations: &Evaluations,
+    objective: &Objective,
+    best_row: Evaluated,
+    (anom_design, anom_prediction): (FlappingKinematics, f64),
+    (rsm_design, rsm_prediction): (FlappingKinematics, f64),
+) -> Vec<Candidate> {
+    let confirmations: Vec<Evaluated> = [anom_design, rsm_design]
+        .par_iter()
+        .map(|&d| evaluations.run(d))
+        .collect();
+    let candidate = |method: &str, predicted: Option<f64>, confirmation: Evaluated| Candidate {
+        method: method.to_string(),
+        predicted,
+        combined: objective.score(&confirmation),
+        confirmation,
+    };
+    let mut confirmations = confirmations.into_iter();
+    vec![
+        candidate("best L18 row", None, best_row),
+        candidate(
+            "ANOM",
+            Some(anom_prediction),
+            confirmations
+                .next()
+                .unwrap_or_else(|| evaluations.run(anom_design)),
+        ),
+        candidate(
+            "RSM + NSGA-II",
+            Some(rsm_prediction),
+            confirmations
+                .next()
+                .unwrap_or_else(|| evaluations.run(rsm_design)),
+        ),
+    ]
 }

@@ -11,5 +11,4 @@
 
 pub mod cache;
 pub mod kinematic;
-pub mod plot;
 pub mod section;

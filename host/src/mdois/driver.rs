@@ -14,7 +14,7 @@
 //! A run lives in a directory: `config.toml` (the resolved configuration,
 //! checked on resume), `state.json` ([`super::state`]), each stage's files
 //! under `cycle-N/` ([`super::stage`]), and the result files
-//! ([`super::outputs`]). [`start`] begins a run, [`resume`] continues one
+//! ([`super::output`]). [`start`] begins a run, [`resume`] continues one
 //! without redoing its finished stages.
 
 use std::path::{Path, PathBuf};
@@ -28,7 +28,7 @@ use crate::shell::material::Layer;
 use crate::topology::eslso::DesignProblem;
 
 use super::error::DesignError;
-use super::outputs::{write_final, write_summary};
+use super::output::files::{write_final, write_summary};
 use super::progress::Progress;
 use super::records::{load_kinematics, load_topology};
 use super::stage::{Context, CACHE_FILE};

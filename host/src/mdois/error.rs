@@ -10,6 +10,8 @@ use crate::discipline::cache::CacheError;
 use crate::discipline::kinematic::KinematicError;
 use crate::file_format::{FormatError, ReadError};
 use crate::files::WriteError;
+use crate::output::vtu::VtuError;
+use crate::output::DrawingError;
 use crate::topology::eslso::EslsoError;
 use crate::topology::pressure::PressureError;
 
@@ -110,7 +112,23 @@ pub enum DesignError {
     /// The evaluation cache could not be read or written.
     #[error(transparent)]
     Cache(#[from] CacheError),
-    /// A picture, plot or ParaView file could not be written.
+    /// A picture could not be drawn.
+    #[error("{file}: {source}")]
+    Picture {
+        /// The picture's file.
+        file: String,
+        /// The cause.
+        source: DrawingError,
+    },
+    /// A ParaView file could not be written.
+    #[error("{file}: {source}")]
+    ParaView {
+        /// The ParaView file.
+        file: String,
+        /// The cause.
+        source: VtuError,
+    },
+    /// Another result file could not be made (serialized or rendered).
     #[error("{file}: {message}")]
     Output {
         /// The output file.

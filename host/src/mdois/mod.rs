@@ -16,20 +16,18 @@
 //! - [`state`]: which stages are finished (`state.json`), resumable.
 //! - [`progress`]: what the driver reports as it goes.
 //! - [`summary`]: `summary.json`, per cycle and initial against final.
-//! - [`outputs`], [`plot`], [`report`]: the result files, pictures and
-//!   `report.md`.
-//! - [`profile`]: the final kinematics as a flight-controller profile
-//!   (a stand-in to be replaced).
+//! - [`output`]: the result files, pictures and `report.md` (drawn with
+//!   [`crate::output`]'s tools).
+//! - [`profile`]: the final kinematics as a flight-controller profile,
+//!   within the actuator's limits.
 //! - [`error`]: why a run stopped.
 
 pub mod driver;
 pub mod error;
-pub mod outputs;
-pub mod plot;
+pub mod output;
 pub mod profile;
 pub mod progress;
 pub mod records;
-pub mod report;
 pub mod stage;
 pub mod state;
 pub mod summary;

@@ -13,12 +13,12 @@
 //!   `evaluations.json`;
 //! - structural discipline: `cycle-N/topology.json`
 //!   ([`super::records::TopologyRecord`]) and `wing-cycle-N.vtu` (the wing
-//!   with the cycle's layout, written by `super::outputs`).
+//!   with the cycle's layout, written by `super::output`).
 //!
 //! Here is the computation of each stage (a method of the stages' shared `Context` that
 //! returns the analysis's or discipline's result) and the order of reading,
 //! computing and writing; the records are in [`super::records`], the
-//! pictures and ParaView files in [`super::outputs`].
+//! pictures and ParaView files in [`super::output`].
 
 use std::path::PathBuf;
 use std::time::Instant;
@@ -36,7 +36,7 @@ use crate::topology::eslso::{optimize_from, DesignProblem, EslsoProgress, EslsoR
 use crate::topology::pressure::PressureHistory;
 
 use super::error::DesignError;
-use super::outputs::write_cycle_wing;
+use super::output::files::write_cycle_wing;
 use super::progress::{Event, Progress};
 use super::records::{
     self, cycle_dir, cycle_file, cycle_path, load_kinematics, load_topology, KinematicRecord,

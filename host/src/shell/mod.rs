@@ -14,7 +14,6 @@
 //! - [`corotational`], [`nonlinear`]: large displacements and rotations
 //!   (co-rotational elements, Newton with load steps), and in time
 //!   ([`nonlinear_dynamics`], generalized-alpha with Newton).
-//! - [`vtu`]: ParaView output.
 //! - [`wing`]: the planform, its mesh, spar and root attachment.
 //! - [`import`]: NASTRAN bulk data and Gmsh meshes.
 //!
@@ -33,5 +32,4 @@ pub mod nonlinear;
 pub mod nonlinear_dynamics;
 pub mod ordering;
 pub mod structure;
-pub mod vtu;
 pub mod wing;

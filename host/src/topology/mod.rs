@@ -10,12 +10,10 @@
 //!   every load case, one factorization an iteration.
 //! - [`filter`]: SIMP's density filter.
 //! - [`eslso`]: the cycle (steps 1–5: 0/1 transformation, stop rule).
-//! - [`picture`]: the layout as a PNG of the planform.
 
 pub mod esl;
 pub mod eslso;
 pub mod filter;
-pub mod picture;
 pub mod pressure;
 pub mod response;
 pub mod simp;

@@ -8,19 +8,16 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::kinematic::{DesignSpace, KinematicResult};
+use crate::discipline::kinematic::{DesignSpace, KinematicResult};
 
-/// A picture could not be drawn (the crate's one drawing error).
-pub use crate::drawing::DrawingError as PlotError;
-
-const FONT: &str = "sans-serif";
+use super::drawing::{DrawingError, FONT};
 
 /// Draws the main effects of `result` over `space` to `png`.
 pub fn main_effects(
     result: &KinematicResult,
     space: &DesignSpace,
     png: &Path,
-) -> Result<(), PlotError> {
+) -> Result<(), DrawingError> {
     let root = BitMapBackend::new(png, (1400, 420)).into_drawing_area();
     root.fill(&WHITE)?;
     let names = [
@@ -55,7 +52,7 @@ pub fn main_effects(
 }
 
 /// Draws the CT–efficiency plane of `result` to `png`.
-pub fn pareto(result: &KinematicResult, png: &Path) -> Result<(), PlotError> {
+pub fn pareto(result: &KinematicResult, png: &Path) -> Result<(), DrawingError> {
     let root = BitMapBackend::new(png, (900, 700)).into_drawing_area();
     root.fill(&WHITE)?;
     let runs: Vec<(f64, f64)> = result

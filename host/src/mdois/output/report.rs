@@ -4,7 +4,8 @@
 
 use std::fmt::Write as _;
 
-use super::summary::Summary;
+use crate::mdois::profile::ActuatorCheck;
+use crate::mdois::summary::Summary;
 
 /// A number with `digits` decimals, or "–" when missing or not finite.
 fn num(value: Option<f64>, digits: usize) -> String {
@@ -29,6 +30,20 @@ pub fn markdown(summary: &Summary, pictures: &[(&str, &str)], cycle_files: &[Str
     let mut s = String::new();
     // Writing to a String cannot fail.
     let _ = writeln!(s, "# fwav design run\n");
+    ending(&mut s, summary);
+    cycles(&mut s, summary);
+    disciplines(&mut s, summary);
+    initial_and_final(&mut s, summary);
+    if let Some(a) = &summary.actuator {
+        actuator(&mut s, a);
+    }
+    picture_list(&mut s, pictures);
+    file_list(&mut s, cycle_files);
+    s
+}
+
+/// How the run ended, and what it cost.
+fn ending(s: &mut String, summary: &Summary) {
     let ran = summary.cycles.len();
     let ending = match (summary.outcome.as_str(), summary.converged_cycle) {
         ("converged", Some(c)) => format!(
@@ -47,7 +62,10 @@ pub fn markdown(summary: &Summary, pictures: &[(&str, &str)], cycle_files: &[Str
         "{ending}\n\n{ran} cycle(s) begun, {} invocation(s) of the driver, {:.1} s of stage time. The configuration is [config.toml](config.toml); every number below is in [summary.json](summary.json).\n",
         summary.runs, summary.stage_seconds
     );
+}
 
+/// The design analysed in each cycle and its 3D system analysis.
+fn cycles(s: &mut String, summary: &Summary) {
     let _ = writeln!(s, "## Cycles\n");
     let _ = writeln!(
         s,
@@ -72,6 +90,10 @@ pub fn markdown(summary: &Summary, pictures: &[(&str, &str)], cycle_files: &[Str
             num(sys.map(|s| s.seconds), 1),
         );
     }
+}
+
+/// Each cycle's disciplines: the proposed kinematics and the new layout.
+fn disciplines(s: &mut String, summary: &Summary) {
     let _ = writeln!(
         s,
         "\nThe disciplines of each cycle (2D values on the mid-span section; strain energy of the analysed design under the cycle's pressure history):\n\n| cycle | chosen | proposed f, Hz | A, deg | mean, deg | stroke, deg | 2D CT | 2D efficiency | kinematics moved (of range) | strain energy, J | new mass fraction | elements changed | ESLSO cycles | unchanged | times, s (aero / struct) |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
@@ -107,7 +129,10 @@ pub fn markdown(summary: &Summary, pictures: &[(&str, &str)], cycle_files: &[Str
             t.seconds,
         );
     }
+}
 
+/// The initial design against the final one, once the run is over.
+fn initial_and_final(s: &mut String, summary: &Summary) {
     let _ = writeln!(s, "\n## Initial and final design\n");
     match (&summary.initial, &summary.final_design, &summary.comparison) {
         (Some(i), Some(f), Some(c)) => {
@@ -145,62 +170,71 @@ pub fn markdown(summary: &Summary, pictures: &[(&str, &str)], cycle_files: &[Str
             let _ = writeln!(s, "Not available until the run is over.");
         }
     }
-    if let Some(a) = &summary.actuator {
-        let _ = writeln!(s, "\n## Actuator\n");
-        let margins: Vec<String> = a
-            .margins
-            .iter()
-            .map(|m| {
-                format!(
-                    "{} {:.4} {} of {:.4} {} (margin {:.1}%)",
-                    m.quantity,
-                    m.value,
-                    m.unit,
-                    m.limit,
-                    m.unit,
-                    100.0 * m.margin
-                )
-            })
-            .collect();
-        let verdict = if a.optimum_feasible && !a.clamped_to_envelope {
-            format!(
-                "The final kinematics are **feasible** on the simulator's default actuator (every margin at least {:.0}%; limiting: {}). [kinematics.json](kinematics.json) flies them: {} Hz, {} deg amplitude, {} deg mean.",
-                100.0 * a.reserve,
-                a.limiting.quantity,
-                a.flown_frequency_hz,
-                a.flown_amplitude_deg,
-                a.flown_mean_angle_deg
-            )
-        } else {
-            format!(
-                "The final kinematics are **not feasible** on the simulator's default actuator (limiting: {}, {:.4} {} against {:.4} {}; reserve {:.0}%). [kinematics.json](kinematics.json) flies the nearest feasible kinematics instead: {} Hz, {} deg amplitude, {} deg mean ({} reduced by {:.1}%{}).",
-                a.limiting.quantity,
-                a.limiting.value,
-                a.limiting.unit,
-                a.limiting.limit,
-                a.limiting.unit,
-                100.0 * a.reserve,
-                a.flown_frequency_hz,
-                a.flown_amplitude_deg,
-                a.flown_mean_angle_deg,
-                a.change,
-                100.0 * a.relative_change,
-                if a.clamped_to_envelope { ", after clamping into the flight controller's envelope" } else { "" }
-            )
-        };
-        let _ = writeln!(
-            s,
-            "{verdict}\n\nMargins of the optimum: {}.",
-            margins.join("; ")
-        );
-    }
+}
 
+/// The actuator check of the final kinematics.
+fn actuator(s: &mut String, a: &ActuatorCheck) {
+    let _ = writeln!(s, "\n## Actuator\n");
+    let margins: Vec<String> = a
+        .margins
+        .iter()
+        .map(|m| {
+            format!(
+                "{} {:.4} {} of {:.4} {} (margin {:.1}%)",
+                m.quantity,
+                m.value,
+                m.unit,
+                m.limit,
+                m.unit,
+                100.0 * m.margin
+            )
+        })
+        .collect();
+    let verdict = if a.optimum_feasible && !a.clamped_to_envelope {
+        format!(
+            "The final kinematics are **feasible** on the simulator's default actuator (every margin at least {:.0}%; limiting: {}). [kinematics.json](kinematics.json) flies them: {} Hz, {} deg amplitude, {} deg mean.",
+            100.0 * a.reserve,
+            a.limiting.quantity,
+            a.flown_frequency_hz,
+            a.flown_amplitude_deg,
+            a.flown_mean_angle_deg
+        )
+    } else {
+        format!(
+            "The final kinematics are **not feasible** on the simulator's default actuator (limiting: {}, {:.4} {} against {:.4} {}; reserve {:.0}%). [kinematics.json](kinematics.json) flies the nearest feasible kinematics instead: {} Hz, {} deg amplitude, {} deg mean ({} reduced by {:.1}%{}).",
+            a.limiting.quantity,
+            a.limiting.value,
+            a.limiting.unit,
+            a.limiting.limit,
+            a.limiting.unit,
+            100.0 * a.reserve,
+            a.flown_frequency_hz,
+            a.flown_amplitude_deg,
+            a.flown_mean_angle_deg,
+            a.change,
+            100.0 * a.relative_change,
+            if a.clamped_to_envelope { ", after clamping into the flight controller's envelope" } else { "" }
+        )
+    };
+    let _ = writeln!(
+        s,
+        "{verdict}\n\nMargins of the optimum: {}.",
+        margins.join("; ")
+    );
+}
+
+/// The pictures written, with their captions.
+fn picture_list(s: &mut String, pictures: &[(&str, &str)]) {
     if !pictures.is_empty() {
         let _ = writeln!(s, "\n## Pictures\n");
         for (file, caption) in pictures {
             let _ = writeln!(s, "{caption}\n\n![{caption}]({file})\n");
         }
     }
+}
+
+/// Links to the ParaView files and the stages' files.
+fn file_list(s: &mut String, cycle_files: &[String]) {
     let _ = writeln!(s, "## Files\n");
     let _ = writeln!(
         s,
@@ -216,5 +250,4 @@ pub fn markdown(summary: &Summary, pictures: &[(&str, &str)], cycle_files: &[Str
         s,
         "- `cycle-N/`: each stage's files (`system.json`, `section.json`, `pressure.json`, `steps.csv`, `kinematics.json`, `topology.json`); [state.json](state.json) says which are finished."
     );
-    s
 }

@@ -12,10 +12,9 @@ use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
-use super::ldvm::{FreeVortex, History};
+use crate::aero2d::ldvm::{FreeVortex, History};
 
-/// A picture could not be drawn (the crate's one drawing error).
-pub use crate::drawing::DrawingError as PlotError;
+use super::drawing::{DrawingError, FONT};
 
 /// Picture size, pixels.
 const SIZE: (u32, u32) = (1200, 1350);
@@ -25,7 +24,6 @@ const WAKE_HEIGHT: u32 = 550;
 const DOT_RADIUS: (f64, f64) = (1.5, 8.0);
 /// At most this many whole-period marks are drawn.
 const MAX_PERIOD_MARKS: f64 = 2000.0;
-const FONT: &str = "sans-serif";
 /// Colour of the whole-period marks.
 const PERIOD_MARK: RGBColor = RGBColor(140, 140, 140);
 
@@ -48,7 +46,7 @@ type Chart<'a> = ChartContext<'a, BitMapBackend<'a>, Cartesian2d<RangedCoordf64,
 ///   light vertical lines. `None` (or a non-positive or non-finite value)
 ///   draws no marks.
 ///
-/// Errors (font, file or backend) come back as [`PlotError`]; nothing
+/// Errors (font, file or backend) come back as [`DrawingError`]; nothing
 /// panics on empty or non-finite inputs.
 pub fn draw(
     history: &History,
@@ -56,7 +54,7 @@ pub fn draw(
     body: &[(f64, f64)],
     period: Option<f64>,
     png: &Path,
-) -> Result<(), PlotError> {
+) -> Result<(), DrawingError> {
     let root = BitMapBackend::new(png, SIZE).into_drawing_area();
     root.fill(&WHITE)?;
     let (top, bottom) = root.split_vertically(WAKE_HEIGHT);
@@ -101,7 +99,7 @@ fn padded_range(values: impl Iterator<Item = f64>, default: Range<f64>, pad: f64
     lo - pad * span..hi + pad * span
 }
 
-fn draw_wake(area: &Panel, wake: &[FreeVortex], body: &[(f64, f64)]) -> Result<(), PlotError> {
+fn draw_wake(area: &Panel, wake: &[FreeVortex], body: &[(f64, f64)]) -> Result<(), DrawingError> {
     let title = "Wake and section at the last time \
         (red: ccw, gamma > 0; blue: cw, gamma < 0; dot size ~ |gamma|)";
     let area = area.titled(title, (FONT, 18))?;
@@ -180,7 +178,7 @@ fn draw_wake(area: &Panel, wake: &[FreeVortex], body: &[(f64, f64)]) -> Result<(
 }
 
 /// Adds a line of `style` labelled `label` to the legend of `chart`.
-fn key(chart: &mut Chart, label: &str, style: ShapeStyle) -> Result<(), PlotError> {
+fn key(chart: &mut Chart, label: &str, style: ShapeStyle) -> Result<(), DrawingError> {
     chart
         .draw_series(LineSeries::new(std::iter::empty::<(f64, f64)>(), style))?
         .label(label)
@@ -189,7 +187,7 @@ fn key(chart: &mut Chart, label: &str, style: ShapeStyle) -> Result<(), PlotErro
 }
 
 /// Draws the legend of `chart`.
-fn legend(chart: &mut Chart) -> Result<(), PlotError> {
+fn legend(chart: &mut Chart) -> Result<(), DrawingError> {
     chart
         .configure_series_labels()
         .position(SeriesLabelPosition::UpperRight)
@@ -208,7 +206,7 @@ fn draw_history(
     time: &[f64],
     series: &[(&str, &[f64], RGBColor)],
     period: Option<f64>,
-) -> Result<(), PlotError> {
+) -> Result<(), DrawingError> {
     let pairs =
         |values: &[f64]| -> Vec<(f64, f64)> { time.iter().copied().zip(values.to_vec()).collect() };
     let finite = |&(t, v): &(f64, f64)| shown(t) && shown(v);

@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use std::io;
 use std::path::Path;
 
-use super::mesh::ShellMesh;
+use crate::shell::mesh::ShellMesh;
 
 /// A field to write: name and values (3 components a point for vectors).
 #[derive(Clone, Copy, Debug)]

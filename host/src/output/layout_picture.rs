@@ -8,8 +8,7 @@ use plotters::prelude::*;
 
 use crate::shell::mesh::ShellMesh;
 
-/// A picture could not be drawn (the crate's one drawing error).
-pub use crate::drawing::DrawingError as PictureError;
+use super::drawing::{DrawingError, FONT};
 
 /// Draws `layout` (carbon or not per element of `mesh`) to `png`, about
 /// `width` pixels wide, with `title` above.
@@ -19,13 +18,12 @@ pub fn planform(
     title: &str,
     width: u32,
     png: &Path,
-) -> Result<(), PictureError> {
+) -> Result<(), DrawingError> {
     if layout.len() != mesh.elements.len() || mesh.nodes.is_empty() {
-        return Err(PictureError(format!(
-            "{} layout values for {} elements",
-            layout.len(),
-            mesh.elements.len()
-        )));
+        return Err(DrawingError::LayoutLength {
+            values: layout.len(),
+            elements: mesh.elements.len(),
+        });
     }
     // Span (y) across, chord (x) down.
     let (mut y0, mut y1, mut x0, mut x1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
@@ -42,7 +40,7 @@ pub fn planform(
     let root = BitMapBackend::new(png, (width.max(10 + 2 * margin), height_px)).into_drawing_area();
     root.fill(&WHITE)?;
     let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 18))
+        .caption(title, (FONT, 18))
         .margin(margin / 2)
         .build_cartesian_2d(y0..y1, x1..x0)?;
     let grey = RGBColor(200, 200, 200);

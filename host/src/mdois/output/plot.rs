@@ -3,7 +3,7 @@
 //! the layout's changes and mass fraction, per cycle) and the thrust
 //! history of the initial and final designs over their last flapping
 //! cycle. (The Pareto front and main effects come from
-//! [`crate::discipline::plot`].)
+//! [`crate::output::discipline_plot`].)
 
 use std::ops::Range;
 use std::path::Path;
@@ -12,13 +12,9 @@ use plotters::prelude::*;
 
 use crate::discipline::kinematic::DesignSpace;
 
-use super::records::SystemRecord;
-use super::summary::Summary;
-
-/// A picture could not be drawn (the crate's one drawing error).
-pub use crate::drawing::DrawingError as PlotError;
-
-const FONT: &str = "sans-serif";
+use crate::mdois::records::SystemRecord;
+use crate::mdois::summary::Summary;
+use crate::output::drawing::{DrawingError, FONT};
 const COLOURS: [RGBColor; 4] = [
     RGBColor(31, 119, 180),
     RGBColor(214, 39, 40),
@@ -50,7 +46,7 @@ fn panel<DB: DrawingBackend>(
     cycles: Range<f64>,
     y: Range<f64>,
     series: &[(&str, Vec<(f64, f64)>)],
-) -> Result<(), PlotError>
+) -> Result<(), DrawingError>
 where
     DB::ErrorType: 'static,
 {
@@ -73,17 +69,17 @@ where
             }
         })
         .draw()
-        .map_err(|e| PlotError(e.to_string()))?;
+        .map_err(|e| DrawingError::Backend(e.to_string()))?;
     for (i, (name, points)) in series.iter().enumerate() {
         let colour = COLOURS[i % COLOURS.len()];
         chart
             .draw_series(LineSeries::new(points.clone(), colour.stroke_width(2)))
-            .map_err(|e| PlotError(e.to_string()))?
+            .map_err(|e| DrawingError::Backend(e.to_string()))?
             .label(*name)
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], colour));
         chart
             .draw_series(points.iter().map(|&p| Circle::new(p, 4, colour.filled())))
-            .map_err(|e| PlotError(e.to_string()))?;
+            .map_err(|e| DrawingError::Backend(e.to_string()))?;
     }
     if series.len() > 1 {
         chart
@@ -91,13 +87,13 @@ where
             .background_style(WHITE.mix(0.8))
             .border_style(BLACK)
             .draw()
-            .map_err(|e| PlotError(e.to_string()))?;
+            .map_err(|e| DrawingError::Backend(e.to_string()))?;
     }
     Ok(())
 }
 
 /// Draws the convergence of `summary` over `space` to `png`.
-pub fn convergence(summary: &Summary, space: &DesignSpace, png: &Path) -> Result<(), PlotError> {
+pub fn convergence(summary: &Summary, space: &DesignSpace, png: &Path) -> Result<(), DrawingError> {
     let root = BitMapBackend::new(png, (1400, 1000)).into_drawing_area();
     root.fill(&WHITE)?;
     let areas = root.split_evenly((2, 2));
@@ -196,7 +192,7 @@ pub fn convergence(summary: &Summary, space: &DesignSpace, png: &Path) -> Result
 
 /// Draws the thrust coefficient over the last flapping cycle of each
 /// `(label, system analysis)` against the phase `t / T` to `png`.
-pub fn thrust_history(runs: &[(String, &SystemRecord)], png: &Path) -> Result<(), PlotError> {
+pub fn thrust_history(runs: &[(String, &SystemRecord)], png: &Path) -> Result<(), DrawingError> {
     let root = BitMapBackend::new(png, (1000, 600)).into_drawing_area();
     root.fill(&WHITE)?;
     let curves: Vec<(String, Vec<(f64, f64)>)> = runs

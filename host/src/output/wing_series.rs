@@ -6,10 +6,10 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use crate::aeroelastic::analysis::Snapshot;
 use crate::shell::mesh::ShellMesh;
-use crate::shell::vtu::{self, Field, VtuError};
 
-use super::analysis::Snapshot;
+use super::vtu::{self, Field, VtuError};
 
 /// Writes `wing-NNNN.vtu`, `wake-NNNN.vtu`, `wing.pvd` and `wake.pvd` into
 /// `dir` (created if missing); `elements` are the shell elements. Returns

@@ -8,24 +8,23 @@
 
 use std::path::Path;
 
-use crate::discipline::plot as discipline_plot;
 use crate::files::write_atomic;
-use crate::shell::vtu::{self, Field};
+use crate::mdois::error::DesignError;
+use crate::mdois::profile::write_kinematics;
+use crate::mdois::records::{load_kinematics, load_system, load_topology};
+use crate::mdois::stage::{layout_densities, Context};
+use crate::mdois::state::{Outcome, RunState, Stage};
+use crate::mdois::summary::{Summary, FORMAT};
+use crate::output::vtu::{self, Field};
+use crate::output::DrawingError;
+use crate::output::{discipline_plot, layout_picture};
 use crate::topology::eslso::{transform, DesignProblem, EslsoResult};
-use crate::topology::picture;
 use crate::topology::pressure::PressureHistory;
 
-use super::error::DesignError;
-use super::plot;
-use super::profile::write_kinematics;
-use super::records::{load_kinematics, load_system, load_topology};
-use super::report;
-use super::stage::{layout_densities, Context};
-use super::state::{Outcome, RunState, Stage};
-use super::summary::Summary;
+use super::{plot, report};
 
 /// The summary's file name.
-pub const SUMMARY_FILE: &str = super::summary::FORMAT.file;
+pub const SUMMARY_FILE: &str = FORMAT.file;
 
 /// Writes `summary.json`.
 pub fn write_summary(dir: &Path, summary: &Summary) -> Result<(), DesignError> {
@@ -62,7 +61,10 @@ pub(crate) fn write_cycle_wing(
             Field::CellScalar("mean_pressure_jump_pa", &mean_pressure),
         ],
     )
-    .map_err(|e| DesignError::output(&vtu_name, e))?;
+    .map_err(|source| DesignError::ParaView {
+        file: vtu_name.clone(),
+        source,
+    })?;
     Ok(vtu_name)
 }
 
@@ -71,10 +73,13 @@ pub(crate) fn write_cycle_wing(
 fn draw_atomic(
     dir: &Path,
     name: &str,
-    draw: impl FnOnce(&Path) -> Result<(), String>,
+    draw: impl FnOnce(&Path) -> Result<(), DrawingError>,
 ) -> Result<(), DesignError> {
     let temporary = dir.join(format!("partial-{name}"));
-    draw(&temporary).map_err(|e| DesignError::output(name, e))?;
+    draw(&temporary).map_err(|source| DesignError::Picture {
+        file: name.to_string(),
+        source,
+    })?;
     let path = dir.join(name);
     std::fs::rename(&temporary, &path).map_err(DesignError::io(&path))
 }
@@ -114,14 +119,17 @@ pub(crate) fn write_final(
             Field::CellScalar("design_domain", &domain),
         ],
     )
-    .map_err(|e| DesignError::output("topology.vtu", e))?;
+    .map_err(|source| DesignError::ParaView {
+        file: "topology.vtu".to_string(),
+        source,
+    })?;
     let converged = matches!(outcome, Outcome::Converged { .. });
     let title = format!(
         "carbon layout of the final design (cycle {final_cycle}{})",
         if converged { "" } else { ", not converged" }
     );
     draw_atomic(dir, "topology.png", |p| {
-        picture::planform(&problem.mesh, &layout, &title, 1200, p).map_err(|e| e.to_string())
+        layout_picture::planform(&problem.mesh, &layout, &title, 1200, p)
     })?;
     let mut pictures = vec![
         ("convergence.png", "MDOIS convergence: 3D thrust and efficiency, kinematics analysed, layout changes per cycle."),
@@ -129,7 +137,7 @@ pub(crate) fn write_final(
         ("topology.png", "Carbon layout of the final design (black carbon, white mylar only)."),
     ];
     draw_atomic(dir, "convergence.png", |p| {
-        plot::convergence(summary, &ctx.config.design_space(), p).map_err(|e| e.to_string())
+        plot::convergence(summary, &ctx.config.design_space(), p)
     })?;
     let first = load_system(dir, 1)?;
     let last = load_system(dir, final_cycle)?;
@@ -138,7 +146,7 @@ pub(crate) fn write_final(
         (format!("final design (cycle {final_cycle})"), &last),
     ];
     draw_atomic(dir, "thrust-history.png", |p| {
-        plot::thrust_history(&curves, p).map_err(|e| e.to_string())
+        plot::thrust_history(&curves, p)
     })?;
     let last_kinematics = state
         .cycles
@@ -149,11 +157,10 @@ pub(crate) fn write_final(
     if let Some(cycle) = last_kinematics {
         let record = load_kinematics(dir, cycle)?;
         draw_atomic(dir, "pareto.png", |p| {
-            discipline_plot::pareto(&record.result, p).map_err(|e| e.to_string())
+            discipline_plot::pareto(&record.result, p)
         })?;
         draw_atomic(dir, "main-effects.png", |p| {
             discipline_plot::main_effects(&record.result, &ctx.config.design_space(), p)
-                .map_err(|e| e.to_string())
         })?;
         pictures.push(("pareto.png", "Aerodynamic discipline of the last cycle: CT and efficiency of the L18 runs, the response surfaces' Pareto front, the initial design and the three candidates."));
         pictures.push(("main-effects.png", "Aerodynamic discipline of the last cycle: main effects (ANOM level means of the combined objective)."));
