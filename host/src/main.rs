@@ -1,6 +1,8 @@
 //! `fwav`: the command-line program. Parses arguments, calls the library,
 //! prints. Exit status: 0 success, 1 the input is refused, 2 usage error.
 
+#![warn(clippy::too_many_lines)]
+
 use std::path::PathBuf;
 use std::process::ExitCode;
 
