@@ -127,6 +127,17 @@ fn run(cli: Cli) -> Result<ExitCode> {
                     report.energy_per_cycle_j
                 );
                 println!(
+                    "  steady state: current peak {:.3} A, terminal voltage peak {:.3} V, duty saturated {:.1} % of the time",
+                    report.steady_peak_current_a,
+                    report.steady_peak_voltage_v,
+                    report.duty_saturated_pct
+                );
+                if report.duty_saturated_pct > 0.0 {
+                    println!(
+                        "  the drive is out of voltage: the profile is not followed at every instant (only its fundamental may be); this demand is beyond the actuator"
+                    );
+                }
+                println!(
                     "  energy balance residual {:.2e} %",
                     report.energy_balance_residual_pct
                 );

@@ -76,6 +76,18 @@ pub struct Report {
     pub rms_tracking_error_pct: f64,
     /// Largest |motor current| while running, A.
     pub peak_current_a: f64,
+    /// Largest |motor current| in the steady-state window, A.
+    pub steady_peak_current_a: f64,
+    /// Largest |terminal voltage| of the motor in the steady-state window,
+    /// V (see [`crate::sim::Sample::terminal_v`]).
+    pub steady_peak_voltage_v: f64,
+    /// Share of the window's control periods with the duty at full scale
+    /// (|duty| = 1), %. Above 0 the drive is out of voltage: the profile is
+    /// not followed at every instant; the per-stroke loop may still bring
+    /// the fundamental amplitude to the target (a small amplitude error) by
+    /// distorting the motion, which then carries harmonics. A demand the
+    /// actuator can fly keeps this at 0.
+    pub duty_saturated_pct: f64,
     /// RMS motor current over the window, A.
     pub rms_current_a: f64,
     /// The controller's current limit, A.
@@ -180,6 +192,17 @@ impl Report {
             phase_lag_deg: lag.to_degrees(),
             rms_tracking_error_pct: 100.0 * rms_err / target_amplitude,
             peak_current_a: peak_current,
+            steady_peak_current_a: window
+                .iter()
+                .map(|p| p.sample.current_a.abs())
+                .fold(0.0, f64::max),
+            steady_peak_voltage_v: window
+                .iter()
+                .map(|p| p.sample.terminal_v.abs())
+                .fold(0.0, f64::max),
+            duty_saturated_pct: 100.0
+                * window.iter().filter(|p| p.sample.duty.abs() >= 1.0).count() as f64
+                / window.len().max(1) as f64,
             rms_current_a: rms(window.iter().map(|p| p.sample.current_a)),
             current_limit_a: f64::from(sim.fc.params().get(ParamId::CurrentLimit)),
             battery_power_w: battery_window / t.max(f64::MIN_POSITIVE),

@@ -42,8 +42,13 @@ pub struct Sample {
     pub measured_rad: f32,
     /// True motor current, A.
     pub current_a: f64,
-    /// Duty commanded.
+    /// Duty commanded (applied over the next period).
     pub duty: f32,
+    /// Terminal voltage of the motor over the period just simulated, V:
+    /// the averaged bridge's `d (V_b - R_b d i)` with the duty applied over
+    /// that period and its mean current (0 with the bridge off). With the
+    /// switching bridge model, the same average over the PWM periods.
+    pub terminal_v: f64,
     /// Bridge enabled.
     pub armed: bool,
     /// Battery energy drawn since the start (the plant's ledger), J.
@@ -181,9 +186,20 @@ impl Simulator {
             duty: f64::from(self.duty),
             enabled: self.armed,
         };
+        let mut current_sum = 0.0;
         for _ in 0..substeps {
+            let before = self.plant.state.current_a;
             self.plant.step(drive, h);
+            current_sum += 0.5 * (before + self.plant.state.current_a);
         }
+        let mean_current = current_sum / f64::from(substeps);
+        let terminal_v = if drive.enabled {
+            drive.duty
+                * (self.plant.battery_v
+                    - self.params.supply.internal_resistance_ohm * drive.duty * mean_current)
+        } else {
+            0.0
+        };
         self.time_us += (dt * 1e6).round() as u64;
 
         let count = self.frozen_count.unwrap_or_else(|| self.encoder_count());
@@ -209,6 +225,7 @@ impl Simulator {
             measured_rad: measured,
             current_a: self.plant.state.current_a,
             duty: self.duty,
+            terminal_v,
             armed: self.armed,
             battery_j: self.plant.ledger.battery_j,
         }

@@ -1,0 +1,260 @@
+//! The feasibility check (`fwav_actuator::feasibility`: the plant's
+//! equations run backwards over one steady cycle of the sinusoid) against
+//! hil-sim (the same plant integrated forwards, flown by the firmware core
+//! through a quantized encoder and a noisy current sensor), over 18
+//! (frequency, amplitude, mean) demands on the default plant, from well
+//! inside the actuator's limits to far beyond them.
+//!
+//! ## The 1.58 A against 1.21 A of issue 21
+//! At 13 Hz, +-40 deg, mean -10 deg the check needs 1.577 A and 9.58 V and
+//! calls the demand infeasible; `hil-sim run` reported a -0.03% amplitude
+//! error and a 1.21 A peak. Both are right about different things:
+//! - The check's peak current falls at t/T = 0.478, the fastest downstroke
+//!   (-56.5 rad/s, back-EMF 1.69 V): following the sinusoid there needs
+//!   `R i + K_t N phi' = 5 * 1.577 + 1.69 = 9.58 V`, against the 7.16 V the
+//!   bridge reaches on the sagging 2S battery (margin -33.7%; current
+//!   -5.1%, torque -9.8%: the voltage binds first). At full duty the
+//!   current there is at most `(7.4 - 1.69) / 5.15 = 1.11 A`.
+//! - hil-sim cannot apply 9.58 V either: its duty sits at +-1 for 34.5% of
+//!   the steady cycle and the current never exceeds what full duty gives
+//!   (1.21 A, at a slower instant). Its "amplitude error" is the error of
+//!   the *fundamental* (lock-in), and the controller's per-stroke loop
+//!   raises its amplitude scale until the fundamental matches: a drive
+//!   saturated into a square wave carries `4/pi * 7.16 = 9.12 V` of
+//!   fundamental, more than the 7.62 V fundamental of the needed voltage.
+//!   So the fundamental is flown and the motion is distorted: harmonics of
+//!   1.3 deg (2nd) and 0.76 deg (3rd), an RMS tracking error of 3.55%
+//!   (against at most 0.9% for the demands the check accepts).
+//!
+//! The check was right (the profile is not followed at every instant, and
+//! the drive has no authority left); hil-sim's report was blind to it. It
+//! now reports the steady-state peaks and the share of time the duty is
+//! saturated (`duty_saturated_pct`), and `hil-sim run` says when the drive
+//! is out of voltage.
+//!
+//! ## Where the remaining differences come from (measured here)
+//! With an ideal encoder, no current noise and a lossless transmission
+//! (efficiency 1, no Coulomb friction) the check's peaks equal the flown
+//! ones within 0.25%: one set of equations on both sides. The default plant
+//! flown by the firmware shows peaks above the check's by up to 7.6%
+//! (current) and 5.9% (voltage) at 15 Hz: up to 4.2% from the encoder's
+//! quantization through the rate observer (lossless plant, real sensors),
+//! up to 6% from the gearbox loss (ideal sensors, real plant): above the
+//! resonance the current peaks at the stroke reversal, where the loss
+//! switches between back-driven and driving (a step of `2 (1 - eta)` of the
+//! torque) that the controller's model (no gear loss, no Coulomb friction)
+//! leaves to its feedback, whose transient overshoots. The check's 10%
+//! reserve (`DEFAULT_RESERVE`) covers both.
+
+use fwav_actuator::feasibility::{check, ActuatorLimits, Feasibility, FlappingDemand, Quantity};
+use fwav_actuator::params::PlantParams;
+use fwav_hil_sim::metrics::Report;
+use fwav_hil_sim::scenario::{run, Scenario};
+use fwav_protocol::document::SegmentDocument;
+use fwav_protocol::EndAction;
+
+/// (frequency Hz, amplitude deg, mean deg): below, at and above the
+/// spring's resonance (11 Hz), with mean angles up to the envelope's 20
+/// deg; feasible ones, ones inside the reserve, and ones beyond the limits
+/// (the issue's design optimum, 13 Hz +-40 deg mean -10 deg, among them).
+const DEMANDS: [(f64, f64, f64); 18] = [
+    (11.0, 30.0, 0.0),
+    (12.0, 30.0, -10.0),
+    (15.0, 20.0, 0.0),
+    (8.0, 35.0, 10.0),
+    (6.0, 45.0, 15.0),
+    (9.0, 20.0, 20.0),
+    (16.0, 20.0, -15.0),
+    (14.0, 30.0, 5.0),
+    (13.0, 35.0, 0.0),
+    (10.0, 40.0, 0.0),
+    (13.0, 40.0, -10.0),
+    (13.0, 40.0, 0.0),
+    (12.0, 45.0, 0.0),
+    (18.0, 25.0, 0.0),
+    (20.0, 30.0, 0.0),
+    (20.0, 15.0, 10.0),
+    (4.0, 30.0, 20.0),
+    (17.0, 30.0, -10.0),
+];
+
+fn demand((frequency_hz, amplitude_deg, mean_deg): (f64, f64, f64)) -> FlappingDemand {
+    FlappingDemand {
+        frequency_hz,
+        amplitude_deg,
+        mean_deg,
+    }
+}
+
+/// One held segment: a 1.2 s ramp from rest (within the device's angle
+/// slew limit at +-45 deg), held to 3.2 s; the steady state is the last 8
+/// cycles (the per-stroke loop has settled by then: the amplitude errors
+/// of the demands it can fly are below 0.1%).
+fn fly(p: &PlantParams, d: &FlappingDemand) -> Report {
+    let scenario = Scenario {
+        duration_s: 3.2,
+        heartbeat_s: 0.1,
+        measure_cycles: 8,
+        on_end: EndAction::Hold,
+        segments: vec![SegmentDocument {
+            frequency_hz: d.frequency_hz,
+            amplitude_deg: d.amplitude_deg,
+            mean_deg: d.mean_deg,
+            duration_s: 100.0,
+            ramp_s: 1.2,
+            downstroke_fraction: 0.5,
+        }],
+        faults: vec![],
+    };
+    run(&scenario, p).expect("the scenario runs")
+}
+
+/// hil-sim flies the demand: the duty never saturated in the steady state,
+/// the fundamental amplitude within 2%, the current under the controller's
+/// limit.
+fn flown(r: &Report) -> bool {
+    r.duty_saturated_pct == 0.0
+        && r.amplitude_error_pct.abs() < 2.0
+        && r.steady_peak_current_a < r.current_limit_a
+}
+
+/// The smallest margin of the three: below 0 the demand is beyond the
+/// limits even without the reserve.
+fn least_margin(c: &Feasibility) -> f64 {
+    c.limiting.margin
+}
+
+fn relative(check: f64, flown: f64) -> f64 {
+    check / flown - 1.0
+}
+
+/// Over the 18 demands on the default plant (a few seconds in debug):
+/// - every demand the check calls feasible is flown (amplitude within 2%,
+///   no duty saturation, under the current limit);
+/// - every demand beyond a limit without the reserve is not: the duty
+///   saturates or the amplitude falls short (measured: saturated 23% to
+///   78% of the time in all six);
+/// - wherever hil-sim flies the demand (feasible or inside the reserve),
+///   the check's peak current and peak terminal voltage are within 10% of
+///   the flown steady state (measured: -7.6%..-0.3% and -5.9%..-0.1%).
+#[test]
+fn the_check_agrees_with_the_firmware_flying_the_plant() {
+    let p = PlantParams::default();
+    let limits = ActuatorLimits::default();
+    let (mut feasible, mut beyond, mut compared) = (0, 0, 0);
+    let mut worst = (0.0f64, 0.0f64);
+    for point in DEMANDS {
+        let d = demand(point);
+        let c = check(&p, &limits, &d).unwrap();
+        let r = fly(&p, &d);
+        let (ci, cv) = (
+            relative(c.peaks.peak_current_a, r.steady_peak_current_a),
+            relative(c.peaks.peak_voltage_v, r.steady_peak_voltage_v),
+        );
+        println!(
+            "{d}: check {:.3} A {:.3} V, least margin {:+.3} ({}), feasible {} | hil-sim {:.3} A ({:+.1}%) {:.3} V ({:+.1}%), duty saturated {:.1}%, amplitude error {:+.3}%, RMS tracking error {:.2}%",
+            c.peaks.peak_current_a,
+            c.peaks.peak_voltage_v,
+            least_margin(&c),
+            c.limiting.quantity,
+            c.feasible,
+            r.steady_peak_current_a,
+            100.0 * ci,
+            r.steady_peak_voltage_v,
+            100.0 * cv,
+            r.duty_saturated_pct,
+            r.amplitude_error_pct,
+            r.rms_tracking_error_pct
+        );
+        if c.feasible {
+            feasible += 1;
+            assert!(
+                flown(&r),
+                "{d}: the check calls it feasible, hil-sim does not fly it: {r:?}"
+            );
+        }
+        if least_margin(&c) < 0.0 {
+            beyond += 1;
+            assert!(
+                r.duty_saturated_pct > 0.0 || r.amplitude_error_pct.abs() >= 2.0,
+                "{d}: beyond the {} without the reserve, yet hil-sim flies it unsaturated: {r:?}",
+                c.limiting
+            );
+        }
+        if flown(&r) {
+            compared += 1;
+            worst = (worst.0.max(ci.abs()), worst.1.max(cv.abs()));
+            assert!(ci.abs() <= 0.10, "{d}: peak current {:+.1}%", 100.0 * ci);
+            assert!(cv.abs() <= 0.10, "{d}: peak voltage {:+.1}%", 100.0 * cv);
+        }
+    }
+    println!(
+        "{feasible} feasible, {beyond} beyond the limits, {compared} compared: worst current {:.1}%, voltage {:.1}%",
+        100.0 * worst.0,
+        100.0 * worst.1
+    );
+    assert!(feasible >= 5 && beyond >= 5 && compared >= 5);
+}
+
+/// The issue's demand (13 Hz, +-40 deg, mean -10 deg; the explanation in
+/// the module docs): the check needs more voltage than the bridge reaches
+/// (limited by the voltage, needed above 1.3x available); hil-sim keeps the
+/// fundamental amplitude (within 2%) only with the duty saturated for a
+/// fifth of the cycle or more, its terminal voltage at the bridge's reach
+/// (within 2% of the check's available voltage), its current below the
+/// check's by a fifth or more and never above what full duty drives
+/// through the stalled motor (`V_b / (R + R_b)`, the most a driving motor
+/// draws), and a motion distorted by harmonics (RMS tracking error above
+/// 2%, where the flown demands stay under 1%).
+#[test]
+fn the_issue_demand_is_out_of_voltage_and_hil_sim_flies_only_its_fundamental() {
+    let p = PlantParams::default();
+    let d = demand((13.0, 40.0, -10.0));
+    let c = check(&p, &ActuatorLimits::default(), &d).unwrap();
+    let r = fly(&p, &d);
+    println!("{d}: {} | hil-sim {r:?}", c.limiting);
+    assert!(!c.feasible);
+    assert_eq!(c.limiting.quantity, Quantity::Voltage);
+    assert!(c.limiting.value > 1.3 * c.limiting.limit);
+
+    assert!(r.amplitude_error_pct.abs() < 2.0);
+    assert!(r.duty_saturated_pct > 20.0);
+    assert!(r.steady_peak_voltage_v > 0.98 * c.voltage.limit);
+    let full_duty_a =
+        p.supply.battery_v / (p.motor.resistance_ohm + p.supply.internal_resistance_ohm);
+    assert!(r.steady_peak_current_a < 0.8 * c.peaks.peak_current_a);
+    assert!(r.steady_peak_current_a <= full_duty_a);
+    assert!(r.rms_tracking_error_pct > 2.0);
+}
+
+/// One set of equations: with an ideal encoder (2^24 counts per turn), no
+/// current noise and a lossless transmission (efficiency 1, no Coulomb
+/// friction: nothing the controller's model leaves to its feedback at the
+/// stroke reversal), the check's peaks equal the flown steady state within
+/// 0.5% (measured: within 0.23%) on the feasible demands.
+#[test]
+fn with_ideal_sensors_and_no_loss_the_check_is_the_flown_steady_state() {
+    let mut p = PlantParams::default();
+    p.sensors.encoder_counts_per_rev = 1 << 24;
+    p.sensors.current_noise_a = 0.0;
+    p.transmission.efficiency = 1.0;
+    p.motor.coulomb_friction_nm = 0.0;
+    let limits = ActuatorLimits::default();
+    for point in DEMANDS.iter().take(7) {
+        let d = demand(*point);
+        let c = check(&p, &limits, &d).unwrap();
+        assert!(c.feasible, "{d}");
+        let r = fly(&p, &d);
+        let (ci, cv) = (
+            relative(c.peaks.peak_current_a, r.steady_peak_current_a),
+            relative(c.peaks.peak_voltage_v, r.steady_peak_voltage_v),
+        );
+        println!(
+            "{d}: current {:+.2}%, voltage {:+.2}%",
+            100.0 * ci,
+            100.0 * cv
+        );
+        assert!(flown(&r), "{d}: {r:?}");
+        assert!(ci.abs() < 0.005 && cv.abs() < 0.005, "{d}: {ci} {cv}");
+    }
+}
