@@ -13,6 +13,9 @@
 //! - [`theory`]: Theodorsen, Garrick and Wagner, the references.
 //! - [`case`]: one analysis as `fwav aero2d` runs it: the solver chosen by
 //!   the section, the last cycle's means and periodicity.
+//!
+//! Imports: no other room of the crate (a solver room: the 2D models stand
+//! alone; pictures of their results are drawn in [`crate::output`]).
 
 pub mod camber;
 pub mod case;

@@ -20,6 +20,10 @@
 //!   deflection, drive power, coupling effort).
 //! - [`handoff`]: the section and pressure histories as the disciplines'
 //!   input files, one versioned type each.
+//!
+//! Imports: [`crate::uvlm`] and [`crate::shell`] (the two halves it couples)
+//! and the file helpers (`files`, `file_format`); never the configuration,
+//! the disciplines, the design driver or [`crate::output`].
 
 pub mod analysis;
 pub mod floating_frame;

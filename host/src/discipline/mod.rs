@@ -8,6 +8,10 @@
 //!   flapping kinematics, the mid-span section's flapping motion and its
 //!   deformation from the system analysis, an [`crate::aero2d`] run and its
 //!   cycle-mean thrust, power and efficiency.
+//!
+//! Imports: [`crate::aero2d`] (each evaluation), [`crate::optimize`] (the DOE
+//! and optimizers) and the kinematics type of [`crate::aeroelastic`]; never
+//! the configuration, the design driver or [`crate::output`].
 
 pub mod cache;
 pub mod kinematic;

@@ -21,6 +21,10 @@
 //! - [`profile`]: the final kinematics as a flight-controller profile,
 //!   within the actuator's limits.
 //! - [`error`]: why a run stopped.
+//!
+//! Imports: every room below it (the configuration, the solvers, the
+//! disciplines, [`crate::output`]'s tools for `mdois/output/`); nothing
+//! imports `mdois` but the program.
 
 pub mod driver;
 pub mod error;

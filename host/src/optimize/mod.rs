@@ -13,6 +13,8 @@
 //! Nothing here knows about wings: every part takes plain numbers or a
 //! closure and returns typed errors. References are in
 //! `shared/REFERENCES.md`, section "Design of experiments and optimization".
+//!
+//! Imports: no other room of the crate.
 
 pub mod anom;
 pub mod doe;

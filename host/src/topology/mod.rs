@@ -10,6 +10,10 @@
 //!   every load case, one factorization an iteration.
 //! - [`filter`]: SIMP's density filter.
 //! - [`eslso`]: the cycle (steps 1–5: 0/1 transformation, stop rule).
+//!
+//! Imports: [`crate::shell`] (the structure it designs) and the pressure
+//! handoff file of [`crate::aeroelastic`]; never the configuration, the
+//! design driver or [`crate::output`].
 
 pub mod esl;
 pub mod eslso;

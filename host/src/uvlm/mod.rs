@@ -35,6 +35,8 @@
 //! large-aspect-ratio plate against Garrick's thrust and Theodorsen's
 //! lift, the cost of wake truncation and partial rollup, and convergence
 //! in time step and lattice size.
+//!
+//! Imports: no other room of the crate.
 
 pub mod error;
 pub mod lattice;

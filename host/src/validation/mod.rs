@@ -22,6 +22,10 @@
 //! from one modal analysis, the NAFEMS 21T numbers from one transient run):
 //! it runs once per process, on the first case that needs it, and is
 //! remembered (the inputs are fixed, the results deterministic).
+//!
+//! Imports: the solver rooms it checks ([`crate::aero2d`], [`crate::uvlm`],
+//! [`crate::shell`], [`crate::optimize`]); nothing imports it but the
+//! program.
 
 use std::sync::{Arc, OnceLock};
 use std::time::Instant;
