@@ -33,7 +33,7 @@ use serde::Serialize;
 
 use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::aeroelastic::model::{FlightCondition, WingModel};
-use crate::aeroelastic::SystemResult;
+use crate::aeroelastic::StepRecord;
 
 pub use aero_damping::{AeroDamping, CalibrationError};
 pub use inertia::{AxisInertia, InertiaError};
@@ -168,16 +168,17 @@ impl Vehicle {
     }
 
     /// The wing of `model` with `c_a` calibrated on the system analysis
-    /// `result` of `kinematics` ([`aero_damping`]).
+    /// of `kinematics` whose time steps are `steps` (`SystemResult::steps`
+    /// or a stored record's; [`aero_damping`]).
     pub fn from_analysis(
         model: &WingModel,
         kinematics: &FlappingKinematics,
         flight: &FlightCondition,
-        result: &SystemResult,
+        steps: &[StepRecord],
         steps_per_cycle: usize,
         actuator: Actuator,
     ) -> Result<Self, VehicleError> {
-        let d = aero_damping::from_analysis(result, kinematics, steps_per_cycle)?;
+        let d = aero_damping::from_analysis(steps, kinematics, steps_per_cycle)?;
         let source = AeroSource::SystemAnalysis {
             work_per_cycle_j: d.work_per_cycle_j,
             frequency_hz: kinematics.frequency,

@@ -18,6 +18,8 @@
 //! - [`summary`]: `summary.json`, per cycle and initial against final.
 //! - [`outputs`], [`plot`], [`report`]: the result files, pictures and
 //!   `report.md`.
+//! - [`plant`]: the designed vehicle as hil-sim's plant file
+//!   (`plant.toml`).
 //! - [`profile`]: the final kinematics as a flight-controller profile
 //!   (a stand-in to be replaced).
 //! - [`error`]: why a run stopped.
@@ -25,6 +27,7 @@
 pub mod driver;
 pub mod error;
 pub mod outputs;
+pub mod plant;
 pub mod plot;
 pub mod profile;
 pub mod progress;

@@ -29,7 +29,7 @@
 //! kinematics).
 
 use crate::aeroelastic::kinematics::FlappingKinematics;
-use crate::aeroelastic::SystemResult;
+use crate::aeroelastic::StepRecord;
 
 /// One instant of a flapping cycle as the drive sees it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -108,16 +108,16 @@ pub fn calibrate(samples: &[DriveSample], period_s: f64) -> Result<AeroDamping, 
     })
 }
 
-/// The last analysed cycle of `result` (of `steps_per_cycle` steps, at
-/// `kinematics`) as drive samples: the drive torque and the prescribed
-/// flapping rate at each step's time.
+/// The last cycle of the analysis `steps` (of `steps_per_cycle` steps,
+/// at `kinematics`; `SystemResult::steps` or a stored record's) as drive
+/// samples: the drive torque and the prescribed flapping rate at each
+/// step's time.
 pub fn drive_history(
-    result: &SystemResult,
+    steps: &[StepRecord],
     kinematics: &FlappingKinematics,
     steps_per_cycle: usize,
 ) -> Vec<DriveSample> {
-    result
-        .last_cycle(steps_per_cycle)
+    steps[steps.len().saturating_sub(steps_per_cycle)..]
         .iter()
         .map(|s| DriveSample {
             rate_rad_s: kinematics.angle(s.time_s).1,
@@ -126,15 +126,15 @@ pub fn drive_history(
         .collect()
 }
 
-/// `c_a` calibrated on the last cycle of the system analysis `result` of
+/// `c_a` calibrated on the last cycle of the system analysis `steps` of
 /// `kinematics` (module docs).
 pub fn from_analysis(
-    result: &SystemResult,
+    steps: &[StepRecord],
     kinematics: &FlappingKinematics,
     steps_per_cycle: usize,
 ) -> Result<AeroDamping, CalibrationError> {
     calibrate(
-        &drive_history(result, kinematics, steps_per_cycle),
+        &drive_history(steps, kinematics, steps_per_cycle),
         kinematics.period(),
     )
 }
