@@ -294,6 +294,49 @@ mod tests {
         assert_eq!(d.limits, ActuatorLimits::firmware_default());
     }
 
+    /// The defaults fly the built-in FWAV's initial design (11 Hz, ±30°,
+    /// mean 0) with every margin above the reserve: on the quasi-steady
+    /// damping (C_D = 3) and on the damping the full-size system analysis
+    /// gives at that point (c_a = 2.2523e-5 N m s^2: 0.0412 J per cycle,
+    /// 0.453 W of mean drive power, measured with `fwav system-analysis`
+    /// on this commit's defaults). Without the spring they cannot: the
+    /// inertial torque alone, `J_wing A w^2`, needs more than the current
+    /// limit even at the gear ratio that minimizes it, `N =
+    /// sqrt(J_wing / J_rotor)`, where the motor's share is `2 sqrt(J_wing
+    /// J_rotor) A w^2 / K_t`.
+    #[test]
+    fn the_defaults_fly_the_initial_design_only_with_the_spring() {
+        use crate::vehicle::Vehicle;
+        use fwav_actuator::feasibility::FlappingDemand;
+        let config = SystemConfig::default();
+        let model = config.wing_model().unwrap();
+        let k = config.kinematics();
+        let mut v = Vehicle::quasi_steady(&model, &k, &config.flight(), config.actuator.actuator())
+            .unwrap();
+        let demand = FlappingDemand {
+            frequency_hz: 11.0,
+            amplitude_deg: 30.0,
+            mean_deg: 0.0,
+        };
+        let quasi = v.check(&demand).unwrap();
+        assert!(quasi.feasible, "{quasi:?}");
+        v.aero_damping_nms2 = 2.2523e-5;
+        let analysed = v.check(&demand).unwrap();
+        assert!(analysed.feasible, "{analysed:?}");
+        assert!(analysed.peaks.peak_current_a > quasi.peaks.peak_current_a);
+        let a = &config.actuator;
+        let w = 2.0 * std::f64::consts::PI * 11.0;
+        let best = 2.0
+            * (v.wing_inertia_kg_m2 * a.rotor_inertia_kg_m2).sqrt()
+            * 30f64.to_radians()
+            * w
+            * w
+            / a.torque_constant_nm_per_a;
+        assert!(best > a.current_limit_a, "{best} A");
+        v.actuator.spring = Spring::Fixed(0.0);
+        assert!(!v.check(&demand).unwrap().feasible);
+    }
+
     #[test]
     fn errors_name_the_key() {
         let e = SystemConfig::from_toml("[actuator]\nreserve = 1\n").unwrap_err();
