@@ -6,7 +6,9 @@
 //! unsteady aerodynamics of [`aero2d`], the ESL topology optimization of
 //! [`topology`]; the design file's tables, checks and template in
 //! [`config`]; the pictures and ParaView files of the results in
-//! [`output`], which no solver imports) and the link side: the kinematics profile file that `fwav
+//! [`output`], which no solver imports; the designed wing on the design's
+//! actuator, as the plant the feasibility check judges and hil-sim flies,
+//! in [`vehicle`]) and the link side: the kinematics profile file that `fwav
 //! design` writes and `fwav upload` sends ([`profile_file`]), serial ports
 //! ([`port`]), the framed request/response client with retries ([`link`])
 //! and the operations on a connected flight controller ([`device`]).
@@ -35,3 +37,4 @@ pub mod shell;
 pub mod topology;
 pub mod uvlm;
 pub mod validation;
+pub mod vehicle;

@@ -9,6 +9,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 mod cli {
+    pub mod actuator;
     pub mod aero;
     pub mod design;
     pub mod fly;
@@ -70,6 +71,11 @@ enum Command {
     /// optimizers) against published and analytic references: value,
     /// reference, error, tolerance and pass for each; exit 1 if any fails.
     Validate(cli::validate::ValidateArgs),
+    /// Can the actuator fly a flapping demand? The margins of motor
+    /// torque, current and terminal voltage, the limiting one and the
+    /// verdict, on a hil-sim plant file or the design file's actuator and
+    /// wing.
+    Actuator(cli::actuator::ActuatorArgs),
     /// List serial ports, marking those where an fwav device answers.
     Ports {
         /// Machine-readable output.
@@ -158,6 +164,7 @@ fn main() -> ExitCode {
         Command::Kinematics(args) => cli::kinematics::run_command(&args),
         Command::Topology(args) => cli::topology::run_command(&args),
         Command::Validate(args) => cli::validate::run_command(&args),
+        Command::Actuator(args) => cli::actuator::run_command(&args),
         Command::Ports { json } => cli::fly::ports(json),
         Command::Upload {
             port,

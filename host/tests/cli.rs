@@ -343,3 +343,116 @@ fn kinematics_runs_the_discipline_and_reuses_its_evaluations() {
     assert!(stderr.contains("design.amplitude_deg"), "{stderr}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `fwav actuator` on a design file and on a plant file: the margins are
+/// `1 - value / limit`, the limiting one is the smallest, the verdict is
+/// "every margin at least the reserve"; on the design file's wing with no
+/// spring the peak current is at least the inertial one, `(J_wing + N^2
+/// J_rotor) A w^2 / (N K_t)`, with the wing's inertia in closed form
+/// (`mu (c_r L^3/3 - (c_r - c_t) L^3/4)` for the built-in tapered wing,
+/// full carbon layer: mu = 2001.2 * 0.5e-3 + 1400.6 * 0.1e-3 kg/m^2); and a
+/// bad key is refused by name.
+#[test]
+fn actuator_prints_margins_limiting_and_verdict() {
+    let dir = std::env::temp_dir().join(format!("fwav-actuator-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let config = dir.join("fwav.toml");
+    std::fs::write(
+        &config,
+        "[actuator]\nspring = \"fixed\"\nspring_nm_per_rad = 0.0\n",
+    )
+    .unwrap();
+    let args = [
+        "actuator",
+        "--config",
+        config.to_str().unwrap(),
+        "--frequency-hz",
+        "11",
+        "--amplitude-deg",
+        "30",
+        "--mean-deg",
+        "-5",
+        "--json",
+    ];
+    let out = fwav(&args);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let r: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let v = &r["verdict"];
+    let reserve = v["reserve"].as_f64().unwrap();
+    let mut least = f64::INFINITY;
+    for q in ["torque", "current", "voltage"] {
+        let m = &v[q];
+        let (value, limit, margin) = (
+            m["value"].as_f64().unwrap(),
+            m["limit"].as_f64().unwrap(),
+            m["margin"].as_f64().unwrap(),
+        );
+        assert!((margin - (1.0 - value / limit)).abs() < 1e-12, "{m}");
+        least = least.min(margin);
+    }
+    assert_eq!(v["limiting"]["margin"].as_f64().unwrap(), least);
+    assert_eq!(v["feasible"].as_bool().unwrap(), least >= reserve);
+    let (cr, ct, l) = (0.075f64, 0.045f64, 0.15f64);
+    let mu = 2001.2 * 0.5e-3 + 1400.6 * 0.1e-3;
+    let wing = mu * (cr * l.powi(3) / 3.0 - (cr - ct) * l.powi(3) / 4.0);
+    let vehicle = &r["vehicle"];
+    let got = vehicle["wing_inertia_kg_m2"].as_f64().unwrap();
+    assert!((got / wing - 1.0).abs() < 1e-9, "{got} vs {wing}");
+    let act = &vehicle["actuator"];
+    let n = act["gear_ratio"].as_f64().unwrap();
+    let kt = act["motor"]["torque_constant_nm_per_a"].as_f64().unwrap();
+    let j = wing + n * n * act["motor"]["rotor_inertia_kg_m2"].as_f64().unwrap();
+    let w = 2.0 * std::f64::consts::PI * 11.0;
+    let inertial = j * 30f64.to_radians() * w * w / (n * kt);
+    let current = v["current"]["value"].as_f64().unwrap();
+    assert!(current >= inertial, "{current} A < inertial {inertial} A");
+    assert!(r["tuned_spring"]["peak_current_saved_a"].as_f64().unwrap() > 0.0);
+
+    let out = fwav(&[
+        "actuator",
+        "--plant",
+        "actuator/plant.toml",
+        "--frequency-hz",
+        "11",
+        "--amplitude-deg",
+        "30",
+    ]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for line in [
+        "motor torque",
+        "motor current",
+        "terminal voltage",
+        "limiting: ",
+        "verdict: ",
+    ] {
+        assert!(stdout.contains(line), "{line}: {stdout}");
+    }
+
+    std::fs::write(&config, "[actuator]\ngear_ratio = -1\n").unwrap();
+    let out = fwav(&[
+        "actuator",
+        "--config",
+        config.to_str().unwrap(),
+        "--frequency-hz",
+        "11",
+        "--amplitude-deg",
+        "30",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success());
+    assert!(
+        stderr.contains("actuator.gear_ratio = -1 is outside (0, inf)"),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

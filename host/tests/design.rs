@@ -97,6 +97,41 @@ fn assert_same(a: &[f64], b: &[f64]) {
     }
 }
 
+/// `plant.toml` parses as hil-sim's plant; its tuned spring is `k = (J_wing
+/// + N^2 J_rotor) (2 pi f)^2` at the frequency `kinematics.json` flies;
+/// its aerodynamic damping is the final analysis's drive work per cycle
+/// over `int |rate|^3 dt`, computed here from `cycle-N/system.json`'s
+/// last cycle (drive torque times the prescribed rate `-A w sin(w t)`).
+fn designed_plant_is_the_final_analysis(dir: &Path, cycle: usize, flown_hz: f64) {
+    let text = std::fs::read_to_string(dir.join("plant.toml")).unwrap();
+    let plant = fwav_actuator::params::PlantParams::from_toml(&text).unwrap();
+    let n = plant.transmission.gear_ratio;
+    let j = plant.wing.inertia_kg_m2 + n * n * plant.motor.rotor_inertia_kg_m2;
+    let w = 2.0 * std::f64::consts::PI * flown_hz;
+    let k = plant.transmission.spring_nm_per_rad;
+    assert!((k / (j * w * w) - 1.0).abs() < 1e-9, "{k} vs {}", j * w * w);
+    let record = json(&dir.join(format!("cycle-{cycle}/system.json")));
+    let kin = &record["kinematics"];
+    let f = kin["frequency_hz"].as_f64().unwrap();
+    let a = kin["amplitude_deg"].as_f64().unwrap().to_radians();
+    let per_cycle = record["steps_per_cycle"].as_u64().unwrap() as usize;
+    let steps = record["steps"].as_array().unwrap();
+    let (mut work, mut cube) = (0.0, 0.0);
+    for s in &steps[steps.len() - per_cycle..] {
+        let t = s["time_s"].as_f64().unwrap();
+        let wf = 2.0 * std::f64::consts::PI * f;
+        let rate = -a * wf * (wf * t).sin();
+        work += s["drive_torque_nm"].as_f64().unwrap() * rate;
+        cube += rate.abs().powi(3);
+    }
+    let c_a = plant.wing.aero_damping();
+    assert!(
+        (c_a / (work / cube) - 1.0).abs() < 1e-9,
+        "{c_a} vs {}",
+        work / cube
+    );
+}
+
 fn run_of(state: &RunState, cycle: usize, stage: Stage) -> Option<usize> {
     state.stage(cycle, stage).map(|r| r.run)
 }
@@ -181,6 +216,7 @@ fn coarse_design_converges_writes_everything_and_resumes() {
         .as_f64()
         .unwrap();
     assert!((profile.document.segments[0].frequency_hz - f).abs() < 1e-4 * f);
+    designed_plant_is_the_final_analysis(&dir, 3, profile.document.segments[0].frequency_hz);
     let reference = answer(&dir);
 
     // A finished run is not started over, and resuming it computes nothing.

@@ -23,15 +23,17 @@
 //! ```
 //!
 //! - [`wing`], [`kinematics`], [`flight`], [`analysis`], [`design`],
-//!   [`topology`], [`mdois`]: one table each, its type and declarations.
+//!   [`topology`], [`mdois`], [`actuator`]: one table each, its type and
+//!   declarations.
 //! - [`template`]: the commented file (`fwav init`, a run's
 //!   `config.toml`).
 //!
 //! This room sits above the solvers: it may import [`crate::aeroelastic`],
-//! [`crate::shell`], [`crate::discipline`] and [`crate::topology`] (their
-//! settings types), and only [`crate::mdois`] and the program import it;
+//! [`crate::shell`], [`crate::discipline`], [`crate::topology`] and
+//! [`crate::vehicle`] (their settings types), and only [`crate::mdois`] and the program import it;
 //! no solver module imports from here.
 
+pub mod actuator;
 pub mod analysis;
 pub mod design;
 pub mod flight;
@@ -51,6 +53,7 @@ use crate::discipline::kinematic::DesignSpace;
 use crate::shell::material::Layer;
 use crate::shell::wing::Planform;
 
+pub use actuator::ActuatorConfig;
 pub use design::DesignConfig;
 pub use flight::FlightConfig;
 pub use mdois::MdoisConfig;
@@ -101,6 +104,8 @@ pub struct SystemConfig {
     pub topology: TopologyConfig,
     /// The MDOIS cycle loop (cycle cap, "unchanged" tolerances).
     pub mdois: MdoisConfig,
+    /// The flapping drive (motor, gearbox, battery, spring, limits).
+    pub actuator: ActuatorConfig,
 }
 
 impl SystemConfig {
@@ -122,6 +127,7 @@ impl SystemConfig {
         design::DESIGN.check(&self.design)?;
         topology::TOPOLOGY.check(&self.topology)?;
         mdois::MDOIS.check(&self.mdois)?;
+        actuator::ACTUATOR.check(&self.actuator)?;
         Ok(())
     }
 

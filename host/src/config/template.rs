@@ -8,7 +8,7 @@
 
 use fwav_settings::{Template, TemplateError};
 
-use super::{analysis, design, flight, kinematics, mdois, topology, wing, SystemConfig};
+use super::{actuator, analysis, design, flight, kinematics, mdois, topology, wing, SystemConfig};
 
 /// The file's opening comment.
 const HEADER: &str = "fwav design configuration: the built-in FWAV's values (`fwav init`).
@@ -37,6 +37,7 @@ fn template() -> Template {
         .table(&design::DESIGN)
         .table(&topology::TOPOLOGY)
         .table(&mdois::MDOIS)
+        .table(&actuator::ACTUATOR)
 }
 
 /// The commented TOML of `config` (normally [`SystemConfig::default`]).
@@ -66,6 +67,7 @@ mod tests {
             "design",
             "topology",
             "mdois",
+            "actuator",
         ] {
             assert!(text.contains(&format!("\n[{table}]\n")), "[{table}]");
         }

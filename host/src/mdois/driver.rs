@@ -29,6 +29,7 @@ use crate::topology::eslso::DesignProblem;
 
 use super::error::DesignError;
 use super::output::files::{write_final, write_summary};
+use super::plant::write_plant;
 use super::progress::Progress;
 use super::records::{load_kinematics, load_topology};
 use super::stage::{Context, CACHE_FILE};
@@ -252,6 +253,14 @@ fn drive(
         // The result files before the state says the run is over: a run
         // killed while writing them is resumed and writes them again.
         write_final(&ctx, &done, outcome, &summary)?;
+        // The designed vehicle for hil-sim, beside the kinematics.json
+        // just written: the final cycle's wing and analysis.
+        let final_cycle = match outcome {
+            Outcome::Converged { cycle } => cycle,
+            Outcome::CycleCap { max_cycles } => max_cycles + 1,
+        };
+        let design = ctx.design(final_cycle)?;
+        write_plant(dir, &ctx.config, final_cycle, &design.densities)?;
         done.save(dir)?;
         *s = done;
     }

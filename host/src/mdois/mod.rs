@@ -18,6 +18,8 @@
 //! - [`summary`]: `summary.json`, per cycle and initial against final.
 //! - [`output`]: the result files, pictures and `report.md` (drawn with
 //!   [`crate::output`]'s tools).
+//! - [`plant`]: the designed vehicle as hil-sim's plant file
+//!   (`plant.toml`).
 //! - [`profile`]: the final kinematics as a flight-controller profile,
 //!   within the actuator's limits.
 //! - [`error`]: why a run stopped.
@@ -29,6 +31,7 @@
 pub mod driver;
 pub mod error;
 pub mod output;
+pub mod plant;
 pub mod profile;
 pub mod progress;
 pub mod records;

@@ -1,0 +1,101 @@
+//! The designed vehicle as hil-sim's plant file: `plant.toml` beside
+//! `kinematics.json` ([`fwav_actuator::params::PlantParams`], read by
+//! `hil-sim run --plant` and `hil-sim serve --plant`). The wing is the
+//! final design's: its inertia about the flapping axis from the shell
+//! model at the final cycle's layout, its aerodynamic damping calibrated
+//! on the final cycle's system analysis (the drive's work per cycle at
+//! the analysed kinematics, [`crate::vehicle::aero_damping`]); the
+//! actuator is the design file's `[actuator]`, its spring (when tuned)
+//! tuned to the frequency `kinematics.json` flies. The file is checked to
+//! parse back ([`PlantParams::from_toml`]) before it is written.
+
+use std::path::{Path, PathBuf};
+
+use fwav_actuator::params::PlantParams;
+
+use crate::config::SystemConfig;
+use crate::files::write_atomic;
+use crate::profile_file::ProfileFile;
+use crate::vehicle::Vehicle;
+
+use super::error::DesignError;
+use super::profile::KINEMATICS_FILE;
+use super::records::system::load_system;
+
+/// The plant file's name in the run's directory.
+pub const PLANT_FILE: &str = "plant.toml";
+
+/// The vehicle of `cycle` (the final one): the wing at the carbon
+/// `densities` the cycle's system analysis had, damped as that analysis
+/// says.
+pub fn designed_vehicle(
+    dir: &Path,
+    config: &SystemConfig,
+    cycle: usize,
+    densities: &[f64],
+) -> Result<Vehicle, DesignError> {
+    let record = load_system(dir, cycle)?;
+    let model = config.wing_model_with(Some(densities))?;
+    Vehicle::from_analysis(
+        &model,
+        &record.kinematics,
+        &config.flight(),
+        &record.steps,
+        record.steps_per_cycle,
+        config.actuator.actuator(),
+    )
+    .map_err(|e| DesignError::output(PLANT_FILE, e))
+}
+
+/// The plant text of `vehicle` flying at `frequency_hz`, with a header
+/// saying where it came from; checked to parse back.
+pub fn plant_toml(
+    vehicle: &Vehicle,
+    frequency_hz: f64,
+    header: &str,
+) -> Result<String, DesignError> {
+    let plant = vehicle.plant(frequency_hz);
+    let body = toml::to_string(&plant).map_err(|e| DesignError::output(PLANT_FILE, e))?;
+    let mut text = String::new();
+    for line in header.lines() {
+        text.push_str("# ");
+        text.push_str(line);
+        text.push('\n');
+    }
+    text.push('\n');
+    text.push_str(&body);
+    PlantParams::from_toml(&text).map_err(|e| DesignError::output(PLANT_FILE, e))?;
+    Ok(text)
+}
+
+/// Writes `plant.toml` of the final `cycle` into `dir`, for the frequency
+/// of the `kinematics.json` already written there.
+pub fn write_plant(
+    dir: &Path,
+    config: &SystemConfig,
+    cycle: usize,
+    densities: &[f64],
+) -> Result<PathBuf, DesignError> {
+    let vehicle = designed_vehicle(dir, config, cycle, densities)?;
+    let profile = ProfileFile::load(dir.join(KINEMATICS_FILE))
+        .map_err(|e| DesignError::output(PLANT_FILE, e))?;
+    let frequency_hz = profile
+        .document
+        .segments
+        .first()
+        .map(|s| s.frequency_hz)
+        .ok_or_else(|| DesignError::output(PLANT_FILE, "kinematics.json has no segment"))?;
+    let header = format!(
+        "fwav design: the designed vehicle (cycle {cycle}) for hil-sim --plant.\n\
+         Wing: {:.2} g, inertia {:.4e} kg m^2 about the flapping axis (shell model, final layout);\n\
+         aerodynamic damping c_a = {:.4e} N m s^2 (written as the drag coefficient that gives it on\n\
+         the planform), calibrated on the final system analysis's drive work per cycle.\n\
+         Actuator: the design file's [actuator]; spring {:.5} N m/rad at {frequency_hz} Hz (kinematics.json).",
+        1e3 * vehicle.wing_mass_kg,
+        vehicle.wing_inertia_kg_m2,
+        vehicle.aero_damping_nms2,
+        vehicle.spring_nm_per_rad(frequency_hz),
+    );
+    let text = plant_toml(&vehicle, frequency_hz, &header)?;
+    Ok(write_atomic(dir, PLANT_FILE, text)?)
+}
