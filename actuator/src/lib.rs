@@ -21,6 +21,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod controller_model;
 pub mod feasibility;
 pub mod params;
 pub mod plant;

@@ -1,28 +1,39 @@
 //! The shipped plant file and the checks of a parameter file.
 
+use fwav_actuator::controller_model::controller_model;
 use fwav_actuator::params::{
     PlantParams, DEFAULT_PLANT_TOML, MOTOR, SENSORS, SIMULATION, SUPPLY, TRANSMISSION, WING,
 };
 use fwav_actuator::plant::Plant;
+use fwav_protocol::ParamId;
 use fwav_settings::Template;
 
+/// The shipped plant is the built-in FWAV's initial design, and the
+/// controller's model of it (what hil-sim sets over the link) refers it to
+/// the flapping axis: `J = J_wing + N^2 J_rotor = 6.737023e-5 + 20^2 *
+/// 7.1e-8 = 9.577023e-5 kg m^2` (by hand from the file's values), the
+/// aerodynamic damping the file's provenance states, 2.2523e-5 N m s^2.
 #[test]
 fn the_shipped_plant_parses_and_is_the_controllers_model() {
-    let plant = PlantParams::from_toml(DEFAULT_PLANT_TOML).unwrap();
-    // The controller's default model is this plant (fwav-protocol ParamId).
-    let plant = Plant::new(&plant);
+    let params = PlantParams::from_toml(DEFAULT_PLANT_TOML).unwrap();
+    let plant = Plant::new(&params);
     let inertia = plant.inertia();
-    assert!((inertia - 7.5e-6).abs() < 1e-9, "{inertia}");
+    assert!((inertia / 9.577023e-5 - 1.0).abs() < 1e-9, "{inertia}");
     assert!(
-        (plant.aero_damping() - 1.0465e-5).abs() < 1e-8,
+        (plant.aero_damping() / 2.2523e-5 - 1.0).abs() < 1e-6,
         "{}",
         plant.aero_damping()
     );
+    let model = controller_model(&params);
+    assert_eq!(model[0].id, ParamId::WingInertia);
+    assert!((f64::from(model[0].value) / inertia - 1.0).abs() < 1e-6);
+    assert_eq!(model[3].id, ParamId::AeroDamping);
+    assert!((f64::from(model[3].value) / 2.2523e-5 - 1.0).abs() < 1e-6);
 }
 
 #[test]
 fn bad_parameters_name_the_field() {
-    let text = DEFAULT_PLANT_TOML.replace("resistance_ohm = 5.0", "resistance_ohm = -5.0");
+    let text = DEFAULT_PLANT_TOML.replace("resistance_ohm = 2.83", "resistance_ohm = -5.0");
     let e = PlantParams::from_toml(&text).unwrap_err().to_string();
     assert!(
         e.contains("motor.resistance_ohm") && e.contains("-5"),

@@ -16,6 +16,7 @@
 //! kind = "link_silence"     # or encoder_loss, stall, supply_drop (with battery_v)
 //! ```
 
+use fwav_actuator::controller_model::controller_model;
 use fwav_actuator::params::PlantParams;
 use fwav_fc_core::reference::ReferenceGenerator;
 use fwav_link::{Link, LinkError};
@@ -143,6 +144,11 @@ pub fn run_with_trace(
     let profile = scenario.profile()?;
     let mut host = Link::new(Simulator::new(plant));
     host.handshake()?;
+    // The controller feeds forward the plant it flies, set as a user sets
+    // a board's (`fwav fc params --set`), not the protocol's defaults.
+    for value in controller_model(plant) {
+        host.command(Command::SetParam(value))?;
+    }
     host.command(Command::UploadProfile(profile.clone()))?;
     host.command(Command::Arm)?;
     host.command(Command::Start)?;

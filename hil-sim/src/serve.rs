@@ -37,6 +37,8 @@ impl Server {
         master.set_timeout(Duration::from_millis(0))?;
         let path = slave.name().unwrap_or_default();
         let mut sim = Simulator::new(plant);
+        // The board flies this plant: its controller's model is the plant's.
+        sim.configure_for_plant();
         // Nobody reads the energy ledger here; without it a step is ~20% cheaper.
         sim.plant.keep_ledger = false;
         Ok(Self {

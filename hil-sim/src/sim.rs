@@ -12,11 +12,12 @@ use fwav_fc_core::controller::Measurement;
 use fwav_fc_core::flight::{FlightController, Handled, LinkId};
 use fwav_fc_core::storage::MAX_RECORD_LEN;
 use fwav_protocol::frame::encode_frame_vec;
-use fwav_protocol::{DeviceMessage, FrameDecoder, Limits, Request};
+use fwav_protocol::{Command, DeviceMessage, FrameDecoder, Limits, Request};
 use rand::rngs::StdRng;
 use rand::SeedableRng;
 use rand_distr::{Distribution, Normal};
 
+use fwav_actuator::controller_model::controller_model;
 use fwav_actuator::params::PlantParams;
 use fwav_actuator::plant::{Drive, Plant};
 
@@ -97,6 +98,20 @@ impl Simulator {
             time_us: 0,
             outgoing: Vec::new(),
             flash: Vec::new(),
+        }
+    }
+
+    /// Sets the controller's model parameters to the plant's
+    /// ([`controller_model`]) through the link's `SetParam` command, as a
+    /// board configured for this vehicle before the host connects; the
+    /// acknowledgements are not sent.
+    pub fn configure_for_plant(&mut self) {
+        for (seq, value) in controller_model(&self.params).into_iter().enumerate() {
+            let request = Request {
+                seq: seq as u16,
+                command: Command::SetParam(value),
+            };
+            let _ack = self.handle(request);
         }
     }
 

@@ -45,6 +45,14 @@ pub use spring::Spring;
 /// crate's default plant, `actuator/plant.toml`).
 pub const QUASI_STEADY_DRAG_COEFFICIENT: f64 = 3.0;
 
+/// The aerodynamic damping of the built-in FWAV's initial design: `c_a`
+/// calibrated on the full-size system analysis of the default design file
+/// at 11 Hz, ±30°, mean 0 (drive work 0.0412 J per cycle, 0.453 W),
+/// measured with `fwav system-analysis` at commit 720cb81; stored because
+/// that analysis is too slow for a test. hil-sim's default plant
+/// (`actuator/plant.toml`) carries it, N m s^2.
+pub const INITIAL_DESIGN_AERO_DAMPING: f64 = 2.2523e-5;
+
 /// The actuator of the design file, in the actuator crate's types.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Actuator {
@@ -392,5 +400,52 @@ mod tests {
         p.validate().unwrap();
         let back = PlantParams::from_toml(&toml::to_string(&p).unwrap()).unwrap();
         assert_eq!(back, p);
+    }
+
+    /// hil-sim's default plant (`actuator/plant.toml`) is the built-in
+    /// FWAV's initial design on the default actuator: rebuilt here from
+    /// the vehicle model (the default wing's inertia and planform) and the
+    /// `[actuator]` defaults, with the stored analysis damping
+    /// [`INITIAL_DESIGN_AERO_DAMPING`] and the spring tuned at 11 Hz. The
+    /// file holds 8 significant digits of the computed values (1e-6).
+    #[test]
+    fn shipped_default_plant_is_the_initial_design() {
+        use crate::config::SystemConfig;
+        let config = SystemConfig::default();
+        let model = config.wing_model().unwrap();
+        let k = config.kinematics();
+        assert_eq!(
+            (k.frequency, k.amplitude_deg(), k.mean_angle_deg()),
+            (11.0, 30.0, 0.0)
+        );
+        let mut v = Vehicle::quasi_steady(&model, &k, &config.flight(), config.actuator.actuator())
+            .unwrap();
+        v.aero_damping_nms2 = INITIAL_DESIGN_AERO_DAMPING;
+        let rebuilt = v.plant(11.0);
+        let shipped = PlantParams::default();
+        assert_eq!(shipped.motor, rebuilt.motor);
+        assert_eq!(shipped.supply, rebuilt.supply);
+        assert_eq!(shipped.sensors, rebuilt.sensors);
+        assert_eq!(shipped.simulation, rebuilt.simulation);
+        let close = |a: f64, b: f64, what: &str| {
+            assert!(
+                (a / b - 1.0).abs() < 1e-6,
+                "{what}: shipped {a}, rebuilt {b}"
+            );
+        };
+        let (s, r) = (&shipped.transmission, &rebuilt.transmission);
+        assert_eq!([s.gear_ratio, s.efficiency], [r.gear_ratio, r.efficiency]);
+        close(s.spring_nm_per_rad, r.spring_nm_per_rad, "spring");
+        let (s, r) = (&shipped.wing, &rebuilt.wing);
+        assert_eq!(
+            [s.span_m, s.root_chord_m, s.tip_chord_m, s.air_density_kg_m3],
+            [r.span_m, r.root_chord_m, r.tip_chord_m, r.air_density_kg_m3]
+        );
+        close(s.inertia_kg_m2, r.inertia_kg_m2, "wing inertia");
+        close(
+            s.aero_damping(),
+            INITIAL_DESIGN_AERO_DAMPING,
+            "aero damping",
+        );
     }
 }

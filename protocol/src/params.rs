@@ -9,7 +9,12 @@
 //! k = J (2 pi 11)^2 = 3.6e-2 N m/rad, blade-element quadratic damping
 //! 0.5 rho C_D int c(r) r^3 dr = 1.05e-5 N m s^2 (rho 1.225 kg/m^3,
 //! C_D 3.0, 0.15 m span, chord 0.075 m tapering to half at the tip): the
-//! values of the default plant (`actuator/plant.toml`), which hil-sim flies.
+//! values of the plant hil-sim flew until issue 21. hil-sim's default plant
+//! is now the designed vehicle (`actuator/plant.toml`, 9.58e-5 kg m^2 at
+//! the flapping axis), and hil-sim sets these parameters from the plant it
+//! flies (`fwav_actuator::controller_model`) as a user sets a board's with
+//! `fwav fc params --set`; the defaults stay those of a board nobody has
+//! configured (changing them would change no behaviour hil-sim tests).
 
 use postcard_schema::Schema;
 use serde::{Deserialize, Serialize};

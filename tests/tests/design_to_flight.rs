@@ -4,7 +4,12 @@
 //! framed serial link to the simulated flight controller (`hil-sim serve`
 //! on a pseudo-terminal, the firmware's core driving the simulated motor
 //! and wing in real time) and flown: the wing reaches the commanded
-//! amplitude within 2% and the commanded frequency.
+//! amplitude within 2% and the commanded frequency. Then hil-sim flies the
+//! designed vehicle: the run's `plant.toml` (the designed wing on the
+//! design file's actuator) flies `kinematics.json` in hil-sim's in-process
+//! scenario (its controller's model set to that plant) within 2% amplitude
+//! in the steady state, under the controller's current limit, with the
+//! duty never saturated.
 
 use std::time::{Duration, Instant};
 
@@ -13,8 +18,10 @@ use fwav::device::Device;
 use fwav::mdois::{start, Outcome, RunOptions};
 use fwav::port;
 use fwav::profile_file::ProfileFile;
+use fwav_actuator::params::PlantParams;
 use fwav_e2e::Served;
-use fwav_protocol::{Command, Limits};
+use fwav_hil_sim::scenario::{run as fly_scenario, Scenario};
+use fwav_protocol::{Command, EndAction, Limits};
 
 #[test]
 fn the_coarse_design_converges_and_its_kinematics_fly_in_hil_sim() {
@@ -85,5 +92,38 @@ fn the_coarse_design_converges_and_its_kinematics_fly_in_hil_sim() {
     );
     device.command(Command::Stop).unwrap();
     device.command(Command::Disarm).unwrap();
+
+    // The designed vehicle flies the designed kinematics.
+    let plant_text = std::fs::read_to_string(dir.join("plant.toml")).expect("plant.toml written");
+    let plant = PlantParams::from_toml(&plant_text).expect("plant.toml parses");
+    assert!(
+        plant_text.contains("fwav fc params --set wing_inertia="),
+        "plant.toml names the controller's parameters"
+    );
+    let scenario = Scenario {
+        // The ramp, then 2.5 s held; the steady state is the last 10 cycles.
+        duration_s: segment.ramp_s + 2.5,
+        heartbeat_s: 0.1,
+        measure_cycles: 10,
+        on_end: EndAction::Hold,
+        segments: file.document.segments.clone(),
+        faults: vec![],
+    };
+    let report = fly_scenario(&scenario, &plant).expect("the scenario runs");
+    println!(
+        "designed vehicle (wing {:.4e} kg m^2, spring {:.4} N m/rad): amplitude error {:+.3}%, steady peak current {:.3} A of {:.3} A, duty saturated {:.1}%",
+        plant.wing.inertia_kg_m2,
+        plant.transmission.spring_nm_per_rad,
+        report.amplitude_error_pct,
+        report.steady_peak_current_a,
+        report.current_limit_a,
+        report.duty_saturated_pct
+    );
+    assert!(report.amplitude_error_pct.abs() < 2.0, "{report:?}");
+    assert!(
+        report.steady_peak_current_a < report.current_limit_a,
+        "{report:?}"
+    );
+    assert_eq!(report.duty_saturated_pct, 0.0, "{report:?}");
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -320,7 +320,7 @@ mod tests {
         };
         let quasi = v.check(&demand).unwrap();
         assert!(quasi.feasible, "{quasi:?}");
-        v.aero_damping_nms2 = 2.2523e-5;
+        v.aero_damping_nms2 = crate::vehicle::INITIAL_DESIGN_AERO_DAMPING;
         let analysed = v.check(&demand).unwrap();
         assert!(analysed.feasible, "{analysed:?}");
         assert!(analysed.peaks.peak_current_a > quasi.peaks.peak_current_a);

@@ -11,6 +11,7 @@
 
 use std::path::{Path, PathBuf};
 
+use fwav_actuator::controller_model::controller_model;
 use fwav_actuator::params::PlantParams;
 
 use crate::config::SystemConfig;
@@ -47,8 +48,22 @@ pub fn designed_vehicle(
     .map_err(|e| DesignError::output(PLANT_FILE, e))
 }
 
+/// The flight controller's model of `plant` as the command that sets it
+/// on a board ([`controller_model`]; hil-sim sets the same values itself).
+pub fn controller_params_note(plant: &PlantParams) -> String {
+    let sets: Vec<String> = controller_model(plant)
+        .iter()
+        .map(|v| format!("--set {}={:e}", v.id.info().name, v.value))
+        .collect();
+    format!(
+        "Flight controller's model of this plant (its feedforward; hil-sim sets it itself):\n  fwav fc params {}",
+        sets.join(" ")
+    )
+}
+
 /// The plant text of `vehicle` flying at `frequency_hz`, with a header
-/// saying where it came from; checked to parse back.
+/// saying where it came from and the controller's parameters of the
+/// plant ([`controller_params_note`]); checked to parse back.
 pub fn plant_toml(
     vehicle: &Vehicle,
     frequency_hz: f64,
@@ -57,7 +72,8 @@ pub fn plant_toml(
     let plant = vehicle.plant(frequency_hz);
     let body = toml::to_string(&plant).map_err(|e| DesignError::output(PLANT_FILE, e))?;
     let mut text = String::new();
-    for line in header.lines() {
+    let note = controller_params_note(&plant);
+    for line in header.lines().chain(note.lines()) {
         text.push_str("# ");
         text.push_str(line);
         text.push('\n');
@@ -98,4 +114,30 @@ pub fn write_plant(
     );
     let text = plant_toml(&vehicle, frequency_hz, &header)?;
     Ok(write_atomic(dir, PLANT_FILE, text)?)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use fwav_protocol::ParamId;
+
+    /// The note is a command a user can paste: eight `--set name=value`
+    /// with names the firmware knows and values that read back as the
+    /// controller's model of the plant.
+    #[test]
+    fn the_note_sets_the_controllers_model() {
+        let plant = PlantParams::default();
+        let note = controller_params_note(&plant);
+        let sets: Vec<&str> = note
+            .split_whitespace()
+            .filter(|w| w.contains('='))
+            .collect();
+        let model = controller_model(&plant);
+        assert_eq!(sets.len(), model.len(), "{note}");
+        for (set, v) in sets.iter().zip(&model) {
+            let (name, value) = set.split_once('=').unwrap();
+            assert_eq!(ParamId::from_name(name), Some(v.id), "{set}");
+            assert_eq!(value.parse::<f32>().unwrap(), v.value, "{set}");
+        }
+    }
 }
