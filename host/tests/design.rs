@@ -510,3 +510,36 @@ fn configuration_errors_name_the_field() {
     assert!(matches!(nothing, DesignError::NoRun { .. }), "{nothing}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A design whose initial kinematics the actuator cannot fly stops after
+/// the first system analysis (whose damping the discipline would judge
+/// on) and before the disciplines, naming the limiting quantity and its
+/// margin and the levers: the coarse design on a 1 V battery, where the
+/// bridge cannot reach the terminal voltage the stroke needs.
+#[test]
+fn an_initial_design_the_actuator_cannot_fly_stops_before_the_disciplines() {
+    let mut config = coarse();
+    config.actuator.battery_v = 1.0;
+    let dir = temp("tiny-battery");
+    let error = start(&config, &dir, &RunOptions::default(), &|_| {}).unwrap_err();
+    let text = error.to_string();
+    println!("{text}");
+    match &error {
+        DesignError::InitialInfeasible {
+            limiting,
+            margin_percent,
+            ..
+        } => {
+            assert!(limiting.starts_with("terminal voltage"), "{limiting}");
+            assert!(*margin_percent < 10.0, "{margin_percent}");
+        }
+        other => panic!("{other}"),
+    }
+    for lever in ["gear_ratio", "spring", "battery_v"] {
+        assert!(text.contains(lever), "{lever}: {text}");
+    }
+    assert!(dir.join("cycle-1/system.json").exists());
+    assert!(!dir.join("cycle-1/kinematics.json").exists());
+    assert!(!dir.join("cycle-1/topology.json").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
