@@ -217,6 +217,39 @@ fn coarse_design_converges_writes_everything_and_resumes() {
         .unwrap();
     assert!((profile.document.segments[0].frequency_hz - f).abs() < 1e-4 * f);
     designed_plant_is_the_final_analysis(&dir, 3, profile.document.segments[0].frequency_hz);
+    // The flown kinematics are the final analysed ones (no derating) and
+    // the actuator flies them with the reserve: judged here on plant.toml
+    // by the actuator crate's check, under the design file's limits.
+    let segment = profile.document.segments[0];
+    for (file, key) in [
+        (segment.amplitude_deg, "amplitude_deg"),
+        (segment.mean_deg, "mean_angle_deg"),
+    ] {
+        let analysed = summary["final"]["kinematics"][key].as_f64().unwrap();
+        assert!(
+            (file - analysed).abs() < 1e-4 * analysed.abs().max(1.0),
+            "{key}"
+        );
+    }
+    let plant = fwav_actuator::params::PlantParams::from_toml(
+        &std::fs::read_to_string(dir.join("plant.toml")).unwrap(),
+    )
+    .unwrap();
+    let limits = coarse().actuator.actuator().limits;
+    let verdict = fwav_actuator::feasibility::check(
+        &plant,
+        &limits,
+        &fwav_actuator::feasibility::FlappingDemand {
+            frequency_hz: segment.frequency_hz,
+            amplitude_deg: segment.amplitude_deg,
+            mean_deg: segment.mean_deg,
+        },
+    )
+    .unwrap();
+    println!("final design on its vehicle: limiting {}", verdict.limiting);
+    assert!(verdict.feasible, "{verdict:?}");
+    assert!(verdict.limiting.margin >= limits.reserve);
+    assert_eq!(summary["actuator"]["feasible"], true);
     let reference = answer(&dir);
 
     // A finished run is not started over, and resuming it computes nothing.
