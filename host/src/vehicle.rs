@@ -275,6 +275,35 @@ impl Vehicle {
         Ok(check(&plant, &self.actuator.limits, demand)?)
     }
 
+    /// The demand of flying `kinematics` harmonically: its frequency,
+    /// amplitude and mean angle (the stroke plane is a mounting angle, not
+    /// a motor command).
+    pub fn demand(kinematics: &FlappingKinematics) -> FlappingDemand {
+        FlappingDemand {
+            frequency_hz: kinematics.frequency,
+            amplitude_deg: kinematics.amplitude_deg(),
+            mean_deg: kinematics.mean_angle_deg(),
+        }
+    }
+
+    /// The total constraint violation of flying `kinematics` on this
+    /// vehicle, the measure of constrained domination (Deb, Pratap,
+    /// Agarwal & Meyarivan 2002, section VI): `sum_q max(0, r - m_q)` over
+    /// the torque, current and voltage margins `m_q` with the reserve `r`
+    /// ([`Feasibility`]); 0 exactly when the check calls the demand
+    /// feasible. A demand the check refuses as out of range (e.g. a zero
+    /// frequency) violates by [`f64::MAX`], worse than any flyable one.
+    pub fn violation(&self, kinematics: &FlappingKinematics) -> f64 {
+        match self.check(&Self::demand(kinematics)) {
+            Ok(f) => f
+                .margins()
+                .iter()
+                .map(|m| (f.reserve - m.margin).max(0.0))
+                .sum(),
+            Err(_) => f64::MAX,
+        }
+    }
+
     /// The spring tuned to `demand`'s frequency against no spring: the
     /// stiffness and the current it saves.
     pub fn tuned_spring(&self, demand: &FlappingDemand) -> Result<TunedSpring, VehicleError> {

@@ -217,6 +217,39 @@ fn coarse_design_converges_writes_everything_and_resumes() {
         .unwrap();
     assert!((profile.document.segments[0].frequency_hz - f).abs() < 1e-4 * f);
     designed_plant_is_the_final_analysis(&dir, 3, profile.document.segments[0].frequency_hz);
+    // The flown kinematics are the final analysed ones (no derating) and
+    // the actuator flies them with the reserve: judged here on plant.toml
+    // by the actuator crate's check, under the design file's limits.
+    let segment = profile.document.segments[0];
+    for (file, key) in [
+        (segment.amplitude_deg, "amplitude_deg"),
+        (segment.mean_deg, "mean_angle_deg"),
+    ] {
+        let analysed = summary["final"]["kinematics"][key].as_f64().unwrap();
+        assert!(
+            (file - analysed).abs() < 1e-4 * analysed.abs().max(1.0),
+            "{key}"
+        );
+    }
+    let plant = fwav_actuator::params::PlantParams::from_toml(
+        &std::fs::read_to_string(dir.join("plant.toml")).unwrap(),
+    )
+    .unwrap();
+    let limits = coarse().actuator.actuator().limits;
+    let verdict = fwav_actuator::feasibility::check(
+        &plant,
+        &limits,
+        &fwav_actuator::feasibility::FlappingDemand {
+            frequency_hz: segment.frequency_hz,
+            amplitude_deg: segment.amplitude_deg,
+            mean_deg: segment.mean_deg,
+        },
+    )
+    .unwrap();
+    println!("final design on its vehicle: limiting {}", verdict.limiting);
+    assert!(verdict.feasible, "{verdict:?}");
+    assert!(verdict.limiting.margin >= limits.reserve);
+    assert_eq!(summary["actuator"]["feasible"], true);
     let reference = answer(&dir);
 
     // A finished run is not started over, and resuming it computes nothing.
@@ -508,5 +541,38 @@ fn configuration_errors_name_the_field() {
     );
     let nothing = resume(&dir.join("nothing"), None, &RunOptions::default(), &|_| {}).unwrap_err();
     assert!(matches!(nothing, DesignError::NoRun { .. }), "{nothing}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A design whose initial kinematics the actuator cannot fly stops after
+/// the first system analysis (whose damping the discipline would judge
+/// on) and before the disciplines, naming the limiting quantity and its
+/// margin and the levers: the coarse design on a 1 V battery, where the
+/// bridge cannot reach the terminal voltage the stroke needs.
+#[test]
+fn an_initial_design_the_actuator_cannot_fly_stops_before_the_disciplines() {
+    let mut config = coarse();
+    config.actuator.battery_v = 1.0;
+    let dir = temp("tiny-battery");
+    let error = start(&config, &dir, &RunOptions::default(), &|_| {}).unwrap_err();
+    let text = error.to_string();
+    println!("{text}");
+    match &error {
+        DesignError::InitialInfeasible {
+            limiting,
+            margin_percent,
+            ..
+        } => {
+            assert!(limiting.starts_with("terminal voltage"), "{limiting}");
+            assert!(*margin_percent < 10.0, "{margin_percent}");
+        }
+        other => panic!("{other}"),
+    }
+    for lever in ["gear_ratio", "spring", "battery_v"] {
+        assert!(text.contains(lever), "{lever}: {text}");
+    }
+    assert!(dir.join("cycle-1/system.json").exists());
+    assert!(!dir.join("cycle-1/kinematics.json").exists());
+    assert!(!dir.join("cycle-1/topology.json").exists());
     std::fs::remove_dir_all(&dir).ok();
 }

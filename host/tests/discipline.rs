@@ -205,3 +205,80 @@ fn failed_evaluations_are_recorded_and_the_discipline_goes_on() {
     assert_eq!(result.candidates.len(), 3);
     assert!(result.candidates[0].combined.is_some());
 }
+
+/// The discipline never proposes a design the actuator cannot fly: the
+/// default wing (shell model's mass, quasi-steady damping) on the default
+/// `[actuator]` with its current limit lowered to 1.6 times the initial
+/// design's peak current over (1 - reserve), so that the initial design
+/// (11 Hz, ±30°) is feasible with its reserve while the high corner of
+/// the space (13 Hz, ±40°, whose damping current is about (13·40 /
+/// 11·30)² ≈ 2.5 times the initial's) is not. Every candidate carries its
+/// violation, the chosen one is feasible on the same vehicle's check, the
+/// Pareto front holds only feasible designs, and the constraint binds
+/// (some L18 rows are infeasible).
+#[test]
+fn kinematic_discipline_never_proposes_an_infeasible_design() {
+    use fwav::config::SystemConfig;
+    use fwav::discipline::cache::EvaluationCache;
+    use fwav::discipline::kinematic::{optimize_feasible, DesignSpace, Weights};
+    use fwav::optimize::nsga2::Nsga2Config;
+    use fwav::vehicle::Vehicle;
+    let config = SystemConfig::default();
+    let model = config.wing_model().unwrap();
+    let initial = config.kinematics();
+    let mut vehicle = Vehicle::quasi_steady(
+        &model,
+        &initial,
+        &config.flight(),
+        config.actuator.actuator(),
+    )
+    .unwrap();
+    let limits = vehicle.actuator.limits;
+    let at_initial = vehicle.check(&Vehicle::demand(&initial)).unwrap();
+    vehicle.actuator.limits.current_a =
+        1.6 * at_initial.peaks.peak_current_a / (1.0 - limits.reserve);
+    let tight = vehicle.check(&Vehicle::demand(&initial)).unwrap();
+    assert!(tight.feasible, "{tight:?}");
+    let corner = FlappingKinematics::from_degrees([13.0, 40.0, 0.0, 90.0]);
+    assert!(vehicle.violation(&corner) > 0.0);
+    println!(
+        "initial peak current {:.4} A; limit lowered to {:.4} A",
+        at_initial.peaks.peak_current_a, vehicle.actuator.limits.current_a
+    );
+
+    let result = optimize_feasible(
+        &SectionCase::fwav_mid_span(),
+        &DesignSpace::fwav(),
+        initial,
+        Weights {
+            thrust: 1.0,
+            efficiency: 1.0,
+        },
+        &Nsga2Config {
+            generations: 60,
+            ..Nsga2Config::default()
+        },
+        &EvaluationCache::new(),
+        &|k: &FlappingKinematics| vehicle.violation(k),
+    )
+    .unwrap();
+    let infeasible_rows = result.run_violations.iter().filter(|&&v| v > 0.0).count();
+    println!("{infeasible_rows} of 18 L18 rows infeasible");
+    assert!(infeasible_rows > 0, "the constraint does not bind");
+    for c in &result.candidates {
+        println!(
+            "{}: {:?} combined {:?}, violation {:.4}",
+            c.method, c.confirmation.design, c.combined, c.violation
+        );
+        assert_eq!(c.violation, vehicle.violation(&c.confirmation.design));
+    }
+    for (design, _, _) in &result.pareto {
+        assert_eq!(vehicle.violation(design), 0.0, "{design:?}");
+    }
+    if let Some(i) = result.chosen {
+        let design = result.candidates[i].confirmation.design;
+        let verdict = vehicle.check(&Vehicle::demand(&design)).unwrap();
+        assert!(verdict.feasible, "{verdict:?}");
+        assert!(verdict.limiting.margin >= limits.reserve);
+    }
+}

@@ -14,9 +14,20 @@
 //! The combined objective (the stated rule for choosing): `w_ct CT / CT_0 +
 //! w_eta eta / eta_0`, each objective relative to the initial design's, so
 //! the weights say how much a relative gain in each is worth. The answer is
-//! the confirmed candidate (direct runs only: the L18 row, the ANOM and RSM
-//! confirmations) with the best combined objective, or the initial design
-//! if none beats it. Every evaluation runs in parallel (rayon); a failed
+//! the feasible confirmed candidate (direct runs only: the L18 row, the
+//! ANOM and RSM confirmations) with the best combined objective, or the
+//! initial design if none beats it.
+//!
+//! Feasibility: every candidate is judged by a [`Violation`] closure (the
+//! design's actuator model, analytic: the caller builds it, this room
+//! does not know the vehicle), its total constraint violation, 0 when
+//! every actuator margin keeps the reserve. The best L18 row is the best
+//! feasible row; ANOM's pick is its best levels if they are feasible,
+//! else the feasible level combination with the best additive prediction;
+//! NSGA-II searches the surfaces under constrained domination (Deb et al.
+//! 2002, section VI) and its knee is taken from the feasible front; a
+//! candidate that is still infeasible (no feasible row, no feasible level
+//! combination) is recorded with its violation and never chosen. Every evaluation runs in parallel (rayon); a failed
 //! one is recorded with its reason and counts as the worst response seen.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -27,7 +38,7 @@ use serde::{Deserialize, Serialize};
 use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::optimize::anom::{Anom, Goal};
 use crate::optimize::doe::{l18_quadratic_columns, OrthogonalArray};
-use crate::optimize::nsga2::{minimize, Bounds, Nsga2Config};
+use crate::optimize::nsga2::{minimize, Bounds, Evaluation, Nsga2Config};
 use crate::optimize::rsm::{fit_reduced, ReduceOptions, ReducedFit, RsmError};
 
 use super::cache::EvaluationCache;
@@ -118,6 +129,21 @@ pub struct Candidate {
     pub confirmation: Evaluated,
     /// Its combined objective (None if it failed).
     pub combined: Option<f64>,
+    /// Its total constraint violation on the actuator (0: feasible; see
+    /// [`Violation`]).
+    #[serde(default)]
+    pub violation: f64,
+}
+
+/// The actuator's judgement of some kinematics: the total constraint
+/// violation of its margins against the reserve, 0 when feasible (larger:
+/// further from feasible). Analytic and cheap: it is called for every
+/// NSGA-II individual.
+pub type Violation<'a> = &'a (dyn Fn(&FlappingKinematics) -> f64 + Sync);
+
+/// No constraint: every design is feasible.
+pub fn unconstrained(_: &FlappingKinematics) -> f64 {
+    0.0
 }
 
 /// What the discipline hands on.
@@ -127,6 +153,9 @@ pub struct KinematicResult {
     pub initial: Evaluated,
     /// The 18 runs of the array.
     pub runs: Vec<Evaluated>,
+    /// The actuator's constraint violation of each run (0: feasible).
+    #[serde(default)]
+    pub run_violations: Vec<f64>,
     /// Level means of the combined objective per factor (ANOM).
     pub level_means: Vec<Vec<f64>>,
     /// R², adjusted R² and PRESS of the CT and efficiency surfaces.
@@ -164,8 +193,9 @@ pub struct Weights {
 /// the 18 array rows and the ANOM and RSM confirmations.
 pub const EVALUATIONS: usize = 21;
 
-/// Runs the discipline on `case` over `space` from the `initial` design; `cache` supplies evaluations already done and receives the new
-/// ones.
+/// Runs the discipline on `case` over `space` from the `initial` design,
+/// unconstrained; `cache` supplies evaluations already done and receives
+/// the new ones.
 pub fn optimize(
     case: &SectionCase,
     space: &DesignSpace,
@@ -174,12 +204,36 @@ pub fn optimize(
     nsga: &Nsga2Config,
     cache: &EvaluationCache,
 ) -> Result<KinematicResult, KinematicError> {
-    optimize_reporting(case, space, initial, weights, nsga, cache, &|_, _| {})
+    optimize_feasible(case, space, initial, weights, nsga, cache, &unconstrained)
 }
 
-/// [`optimize`], calling `progress(done, total)` after each direct
-/// evaluation (cached ones included; `total` is [`EVALUATIONS`]) from
-/// whichever thread made it.
+/// [`optimize`] with every candidate judged by `violation` (the actuator):
+/// the answer is feasible or the initial design.
+pub fn optimize_feasible(
+    case: &SectionCase,
+    space: &DesignSpace,
+    initial: FlappingKinematics,
+    weights: Weights,
+    nsga: &Nsga2Config,
+    cache: &EvaluationCache,
+    violation: Violation,
+) -> Result<KinematicResult, KinematicError> {
+    optimize_reporting(
+        case,
+        space,
+        initial,
+        weights,
+        nsga,
+        cache,
+        violation,
+        &|_, _| {},
+    )
+}
+
+/// [`optimize_feasible`], calling `progress(done, total)` after each
+/// direct evaluation (cached ones included; `total` is [`EVALUATIONS`])
+/// from whichever thread made it.
+#[allow(clippy::too_many_arguments)]
 pub fn optimize_reporting(
     case: &SectionCase,
     space: &DesignSpace,
@@ -187,6 +241,7 @@ pub fn optimize_reporting(
     weights: Weights,
     nsga: &Nsga2Config,
     cache: &EvaluationCache,
+    violation: Violation,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<KinematicResult, KinematicError> {
     let evaluations = Evaluations {
@@ -195,23 +250,32 @@ pub fn optimize_reporting(
         progress,
         done: AtomicUsize::new(0),
     };
+    let initial_violation = violation(&initial);
     let initial = evaluations.run(initial);
     let reference = initial.result.clone().map_err(KinematicError::Initial)?;
-    let objective = Objective { weights, reference };
+    let objective = Objective {
+        weights,
+        reference,
+        violation,
+    };
 
-    // 1. The array.
+    // 1. The array; its best feasible row (the least violating one if
+    // none is feasible: recorded, never chosen).
     let array = ArrayRuns::evaluate(space, &evaluations)?;
     let scores = worst(array.runs.iter().map(|e| objective.score(e)).collect());
+    let run_violations: Vec<f64> = array.runs.iter().map(|e| violation(&e.design)).collect();
     let best_row = (0..array.runs.len())
-        .max_by(|&a, &b| scores[a].total_cmp(&scores[b]))
+        .max_by(|&a, &b| {
+            run_violations[b]
+                .total_cmp(&run_violations[a])
+                .then(scores[a].total_cmp(&scores[b]))
+        })
         .ok_or_else(|| KinematicError::Method("no runs".into()))?;
 
-    // 2. ANOM on the combined objective.
+    // 2. ANOM on the combined objective: its best levels if feasible,
+    // else the feasible level combination it predicts best.
     let anom = Anom::new(&array.array, &array.columns, &scores).map_err(|e| method(&e))?;
-    let (best_levels, anom_prediction) = anom.optimum(Goal::LargerIsBetter);
-    let anom_design = FlappingKinematics::from_degrees(
-        [0, 1, 2, 3].map(|f| space.levels()[f][usize::from(best_levels[f])]),
-    );
+    let (anom_design, anom_prediction) = feasible_levels(&anom, space, violation)?;
 
     // 3. Response surfaces in coded levels, NSGA-II on them.
     let surfaces = Surfaces::search(&array, space, nsga, &objective)?;
@@ -224,8 +288,15 @@ pub fn optimize_reporting(
         (anom_design, anom_prediction),
         (surfaces.knee_design, surfaces.knee_prediction),
     );
-    let initial_score = weights.thrust + weights.efficiency;
+    // An infeasible initial design is no bar to beat (the design driver
+    // stops before the disciplines if it cannot be flown).
+    let initial_score = if initial_violation == 0.0 {
+        weights.thrust + weights.efficiency
+    } else {
+        f64::NEG_INFINITY
+    };
     let chosen = (0..candidates.len())
+        .filter(|&i| candidates[i].violation == 0.0)
         .filter(|&i| candidates[i].combined.is_some_and(|s| s > initial_score))
         .max_by(|&a, &b| {
             let s = |i: usize| candidates[i].combined.unwrap_or(f64::NEG_INFINITY);
@@ -234,12 +305,48 @@ pub fn optimize_reporting(
     Ok(KinematicResult {
         initial,
         runs: array.runs,
+        run_violations,
         level_means: anom.level_means.clone(),
         surface_quality: [quality(&surfaces.ct_fit), quality(&surfaces.eta_fit)],
         pareto: surfaces.pareto,
         candidates,
         chosen,
     })
+}
+
+/// ANOM's pick: the best levels and their additive prediction if they
+/// are feasible; otherwise, of the 3^4 level combinations, the feasible
+/// one with the best additive prediction (ANOM's model, REFERENCES.md);
+/// if none is feasible, the best levels (recorded with their violation,
+/// never chosen).
+fn feasible_levels(
+    anom: &Anom,
+    space: &DesignSpace,
+    violation: Violation,
+) -> Result<(FlappingKinematics, f64), KinematicError> {
+    let design = |levels: &[u8]| {
+        FlappingKinematics::from_degrees(
+            [0, 1, 2, 3].map(|f| space.levels()[f][usize::from(levels[f])]),
+        )
+    };
+    let (best_levels, best_prediction) = anom.optimum(Goal::LargerIsBetter);
+    let best = design(&best_levels);
+    if violation(&best) == 0.0 {
+        return Ok((best, best_prediction));
+    }
+    let mut pick: Option<(FlappingKinematics, f64)> = None;
+    for code in 0..81u32 {
+        let levels: Vec<u8> = (0..4).map(|f| ((code / 3u32.pow(f)) % 3) as u8).collect();
+        let d = design(&levels);
+        if violation(&d) != 0.0 {
+            continue;
+        }
+        let y = anom.predict(&levels).map_err(|e| method(&e))?;
+        if pick.is_none_or(|(_, p)| y > p) {
+            pick = Some((d, y));
+        }
+    }
+    Ok(pick.unwrap_or((best, best_prediction)))
 }
 
 /// A method's refusal as the discipline's error.
@@ -295,13 +402,15 @@ impl Evaluations<'_> {
     }
 }
 
-/// The combined objective, relative to the initial design's results.
-struct Objective {
+/// The combined objective, relative to the initial design's results, and
+/// the actuator's constraint.
+struct Objective<'a> {
     weights: Weights,
     reference: SectionResult,
+    violation: Violation<'a>,
 }
 
-impl Objective {
+impl Objective<'_> {
     /// The combined objective of a result.
     fn combined(&self, r: &SectionResult) -> f64 {
         self.weights.thrust * r.ct / self.reference.ct
@@ -398,7 +507,10 @@ impl Surfaces {
         let front = minimize(&bounds, 2, nsga, |x: &[f64]| {
             let c = ct_fit.surface.predict(x)?;
             let e = eta_fit.surface.predict(x)?;
-            Ok::<_, RsmError>(vec![-c, -e])
+            Ok::<_, RsmError>(Evaluation {
+                objectives: vec![-c, -e],
+                violation: (objective.violation)(&space.decode(x)),
+            })
         })
         .map_err(|e| method(&e))?
         .front;
@@ -409,7 +521,14 @@ impl Surfaces {
                     .predicted(&a.objectives)
                     .total_cmp(&objective.predicted(&b.objectives))
             })
-            .ok_or_else(|| KinematicError::Method("NSGA-II returned an empty front".into()))?;
+            .ok_or_else(|| {
+                KinematicError::Method(
+                    "NSGA-II found no design on the response surfaces that the actuator can fly \
+                     with its reserve: widen the design space toward lower frequencies and \
+                     amplitudes, or give the actuator more reach (gear ratio, spring, battery)"
+                        .into(),
+                )
+            })?;
         let knee_design = space.decode(&knee.x);
         let knee_prediction = objective.predicted(&knee.objectives);
         let pareto = front
@@ -444,6 +563,7 @@ fn confirm(
         method: method.to_string(),
         predicted,
         combined: objective.score(&confirmation),
+        violation: (objective.violation)(&confirmation.design),
         confirmation,
     };
     let mut confirmations = confirmations.into_iter();

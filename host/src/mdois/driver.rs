@@ -219,6 +219,12 @@ fn drive(
                 if cycle > max_cycles {
                     break 'cycles Some(Outcome::CycleCap { max_cycles });
                 }
+                if cycle == 1 {
+                    // Stop before the disciplines if the actuator cannot
+                    // fly the initial design (after the first analysis:
+                    // its damping is what the discipline judges on).
+                    ctx.check_flyable(cycle)?;
+                }
                 let mut needed = Vec::new();
                 for stage in [Stage::Kinematics, Stage::Topology] {
                     if lock(&state).stage(cycle, stage).is_some() {

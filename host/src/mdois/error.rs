@@ -14,6 +14,7 @@ use crate::output::vtu::VtuError;
 use crate::output::DrawingError;
 use crate::topology::eslso::EslsoError;
 use crate::topology::pressure::PressureError;
+use crate::vehicle::VehicleError;
 
 use super::state::Stage;
 
@@ -135,6 +136,40 @@ pub enum DesignError {
         file: String,
         /// What went wrong.
         message: String,
+    },
+    /// The designed vehicle (wing on the design's actuator) could not be
+    /// built or judged.
+    #[error("cycle {cycle}, the vehicle (wing on the [actuator]): {source}")]
+    Vehicle {
+        /// The design cycle whose wing and analysis it is.
+        cycle: usize,
+        /// The cause.
+        source: VehicleError,
+    },
+    /// The initial design cannot be flown by the design's actuator: the
+    /// disciplines would have no feasible design to start from.
+    #[error(
+        "the initial design ({frequency_hz} Hz, ±{amplitude_deg} deg, mean {mean_deg} deg) cannot be flown \
+         by the [actuator]: {limiting} is short of the {reserve_percent:.0}% reserve (its margin {margin_percent:.1}%), \
+         judged with the aerodynamic damping of the first system analysis. Levers: the gear ratio \
+         ([actuator] gear_ratio), the spring (spring = \"tuned\" cancels the inertial torque at the \
+         flapping frequency), the battery (battery_v, battery_resistance_ohm), the current limit \
+         (current_limit_a), or gentler initial kinematics ([kinematics])"
+    )]
+    InitialInfeasible {
+        /// Initial frequency, Hz.
+        frequency_hz: f64,
+        /// Initial amplitude, deg.
+        amplitude_deg: f64,
+        /// Initial mean angle, deg.
+        mean_deg: f64,
+        /// The limiting quantity against its limit, e.g. `terminal
+        /// voltage 9.58 V of 7.35 V (margin -30.3%)`.
+        limiting: String,
+        /// Its margin, percent of the limit.
+        margin_percent: f64,
+        /// The reserve asked of every margin, percent.
+        reserve_percent: f64,
     },
     /// A discipline's thread panicked (a bug).
     #[error("cycle {cycle}, {stage}: the stage panicked")]

@@ -21,14 +21,33 @@ use crate::vehicle::Vehicle;
 
 use super::error::DesignError;
 use super::profile::KINEMATICS_FILE;
+use super::records::load_topology;
 use super::records::system::load_system;
+use super::stage::layout_densities;
 
 /// The plant file's name in the run's directory.
 pub const PLANT_FILE: &str = "plant.toml";
 
-/// The vehicle of `cycle` (the final one): the wing at the carbon
-/// `densities` the cycle's system analysis had, damped as that analysis
-/// says.
+/// The vehicle of `cycle`, the one its aerodynamic discipline and (for
+/// the final cycle) `kinematics.json` are judged on: the wing with the
+/// layout the cycle analysed (the uniform starting design in cycle 1, the
+/// previous cycle's structural proposal after), damped as the cycle's
+/// system analysis says.
+pub fn cycle_vehicle(
+    dir: &Path,
+    config: &SystemConfig,
+    cycle: usize,
+) -> Result<Vehicle, DesignError> {
+    let densities = if cycle <= 1 {
+        config.wing_model()?.densities
+    } else {
+        layout_densities(&load_topology(dir, cycle - 1)?.result.layout)
+    };
+    designed_vehicle(dir, config, cycle, &densities)
+}
+
+/// The vehicle of `cycle`: the wing at the carbon `densities` the cycle's
+/// system analysis had, damped as that analysis says.
 pub fn designed_vehicle(
     dir: &Path,
     config: &SystemConfig,
@@ -45,7 +64,7 @@ pub fn designed_vehicle(
         record.steps_per_cycle,
         config.actuator.actuator(),
     )
-    .map_err(|e| DesignError::output(PLANT_FILE, e))
+    .map_err(|source| DesignError::Vehicle { cycle, source })
 }
 
 /// The flight controller's model of `plant` as the command that sets it

@@ -1,31 +1,33 @@
 //! The final kinematics as the flight controller's profile file
 //! (`kinematics.json`, the `fwav-profile` format of
 //! [`fwav_protocol::document`], read by `fwav profile check` and sent by
-//! `fwav upload`), after the actuator feasibility check.
+//! `fwav upload`), with the actuator's verdict on them.
 //!
-//! Before the file is written, the kinematics are judged against the
-//! actuator model ([`fwav_actuator::feasibility`], the one hil-sim flies: the
-//! steady-state motor torque, current and terminal voltage that harmonic
-//! flapping at that frequency, amplitude and mean angle needs from the
-//! default motor, gearbox, spring and battery, against the stall torque,
-//! the firmware's current limit and the bridge's reach, with a 10%
-//! reserve). A feasible optimum is written as it is; an infeasible one is
-//! reported with its limiting quantity, and the file holds the nearest
-//! feasible kinematics instead (the smaller of the amplitude or frequency
-//! reductions that make it feasible), so that the file can always be
-//! flown.
+//! The file holds the final design's kinematics as they are: the ones the
+//! last system analysis evaluated and `summary.json` and `report.md` call
+//! the final design. There is no derating after the fact: feasibility is
+//! a constraint of the aerodynamic discipline (every candidate judged on
+//! the cycle's vehicle) and the driver stops before the disciplines if the
+//! initial design cannot be flown. The verdict here judges the final
+//! kinematics on the design's vehicle ([`crate::vehicle::Vehicle`]: the
+//! final cycle's wing, its aerodynamic damping calibrated on the final
+//! system analysis, the design file's `[actuator]`; the plant
+//! `plant.toml` holds), the steady-state motor torque, current and
+//! terminal voltage against the stall torque, the controller's current
+//! limit and the bridge's reach, with the `[actuator]` reserve. Should the
+//! final analysis's damping make the design infeasible where the
+//! discipline's (the previous cycle's) did not, the file still holds the
+//! analysed kinematics and the verdict says so.
 
 use std::path::{Path, PathBuf};
 
-use fwav_actuator::feasibility::{
-    check, nearest_feasible, ActuatorLimits, Change, FlappingDemand, Margin,
-};
-use fwav_actuator::params::PlantParams;
+use fwav_actuator::feasibility::Margin;
 use fwav_protocol::Limits;
 use serde::{Deserialize, Serialize};
 
 use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::profile_file::ProfileFile;
+use crate::vehicle::Vehicle;
 
 use super::error::DesignError;
 
@@ -59,34 +61,33 @@ impl From<&Margin> for ActuatorMargin {
     }
 }
 
-/// The actuator verdict on the final kinematics and what
-/// `kinematics.json` flies.
+/// The actuator verdict on the final design's kinematics (which
+/// `kinematics.json` flies), on the design's vehicle.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ActuatorCheck {
-    /// The optimum can be flown with every margin at least `reserve`.
-    pub optimum_feasible: bool,
+    /// Every margin is at least `reserve`.
+    pub feasible: bool,
     /// The reserve asked of every margin, fraction of the limit.
     pub reserve: f64,
-    /// The optimum's torque, current and voltage margins.
+    /// The torque, current and voltage margins.
     pub margins: Vec<ActuatorMargin>,
-    /// The optimum's quantity with the smallest margin (the one that
-    /// limits, or would limit first).
+    /// The quantity with the smallest margin (the one that limits, or
+    /// would limit first).
     pub limiting: ActuatorMargin,
-    /// What `kinematics.json` flies: frequency Hz, amplitude deg, mean
-    /// angle deg (the optimum's, or the nearest feasible).
-    pub flown_frequency_hz: f64,
-    /// See [`Self::flown_frequency_hz`].
-    pub flown_amplitude_deg: f64,
-    /// See [`Self::flown_frequency_hz`].
-    pub flown_mean_angle_deg: f64,
-    /// What was reduced to reach the flown kinematics: `none`,
-    /// `amplitude` or `frequency`.
-    pub change: String,
-    /// `1 - flown / optimum` of the reduced variable (0 if none).
-    pub relative_change: f64,
-    /// The optimum lay outside the flight controller's envelope and was
-    /// clamped into it first.
-    pub clamped_to_envelope: bool,
+    /// Frequency judged and flown, Hz (6 significant digits).
+    pub frequency_hz: f64,
+    /// Amplitude judged and flown, deg.
+    pub amplitude_deg: f64,
+    /// Mean angle judged and flown, deg.
+    pub mean_angle_deg: f64,
+    /// The vehicle's half-wing mass, kg.
+    pub wing_mass_kg: f64,
+    /// The wing's inertia about the flapping axis, kg m^2.
+    pub wing_inertia_kg_m2: f64,
+    /// The aerodynamic damping `c_a` (final system analysis), N m s^2.
+    pub aero_damping_nms2: f64,
+    /// The spring's stiffness at the flown frequency, N m/rad.
+    pub spring_nm_per_rad: f64,
 }
 
 /// `x` to 6 significant digits (the optimizer's last digits are noise,
@@ -99,88 +100,65 @@ fn round(x: f64) -> f64 {
     (x * scale).round() / scale
 }
 
-/// The verdict on some kinematics and what to fly.
-struct Judged {
-    check: ActuatorCheck,
-    demand: FlappingDemand,
-    flown: FlappingDemand,
-    limiting: Margin,
-}
-
-/// Judges `kinematics` (to 6 significant digits) on the default actuator
-/// (`fwav-actuator`'s shipped plant; see the module docs): the verdict
-/// `summary.json` keeps. Analytic, a few milliseconds.
-pub fn actuator_check(kinematics: &FlappingKinematics) -> Result<ActuatorCheck, DesignError> {
-    Ok(judge(kinematics)?.check)
-}
-
-fn judge(kinematics: &FlappingKinematics) -> Result<Judged, DesignError> {
-    let fail = |e: &dyn std::fmt::Display| DesignError::output(KINEMATICS_FILE, e);
-    let plant = PlantParams::default();
-    let limits = ActuatorLimits::firmware_default();
-    let demand = FlappingDemand {
-        frequency_hz: round(kinematics.frequency),
-        amplitude_deg: round(kinematics.amplitude_deg()),
-        mean_deg: round(kinematics.mean_angle_deg()),
-    };
-    let verdict = check(&plant, &limits, &demand).map_err(|e| fail(&e))?;
-    let nearest = nearest_feasible(&plant, &limits, &ENVELOPE, &demand).map_err(|e| fail(&e))?;
-    let flown = if verdict.feasible && !nearest.clamped() {
-        demand
-    } else {
-        nearest.demand()
-    };
-    let check = ActuatorCheck {
-        optimum_feasible: verdict.feasible,
+/// Judges `kinematics` (to 6 significant digits) on `vehicle` (see the
+/// module docs): the verdict `summary.json` keeps. Analytic, a few
+/// milliseconds.
+pub fn actuator_check(
+    vehicle: &Vehicle,
+    kinematics: &FlappingKinematics,
+) -> Result<ActuatorCheck, DesignError> {
+    let mut demand = Vehicle::demand(kinematics);
+    demand.frequency_hz = round(demand.frequency_hz);
+    demand.amplitude_deg = round(demand.amplitude_deg);
+    demand.mean_deg = round(demand.mean_deg);
+    let verdict = vehicle
+        .check(&demand)
+        .map_err(|e| DesignError::output(KINEMATICS_FILE, e))?;
+    Ok(ActuatorCheck {
+        feasible: verdict.feasible,
         reserve: verdict.reserve,
         margins: verdict.margins().iter().map(ActuatorMargin::from).collect(),
         limiting: ActuatorMargin::from(&verdict.limiting),
-        flown_frequency_hz: flown.frequency_hz,
-        flown_amplitude_deg: flown.amplitude_deg,
-        flown_mean_angle_deg: flown.mean_deg,
-        change: match nearest.change {
-            Change::None => "none",
-            Change::Amplitude => "amplitude",
-            Change::Frequency => "frequency",
-        }
-        .to_string(),
-        relative_change: nearest.chosen.relative_change,
-        clamped_to_envelope: nearest.clamped(),
-    };
-    Ok(Judged {
-        check,
-        demand,
-        flown,
-        limiting: verdict.limiting,
+        frequency_hz: demand.frequency_hz,
+        amplitude_deg: demand.amplitude_deg,
+        mean_angle_deg: demand.mean_deg,
+        wing_mass_kg: vehicle.wing_mass_kg,
+        wing_inertia_kg_m2: vehicle.wing_inertia_kg_m2,
+        aero_damping_nms2: vehicle.aero_damping_nms2,
+        spring_nm_per_rad: vehicle.spring_nm_per_rad(demand.frequency_hz),
     })
 }
 
 /// The flight controller's envelope the profile must respect.
 const ENVELOPE: Limits = Limits::REFERENCE_FWAV;
 
-/// Writes `dir/kinematics.json` for `kinematics` after
-/// [`actuator_check`]: the kinematics themselves if feasible, otherwise
-/// the nearest feasible ones. The stroke plane is a mounting angle, not a
-/// motor command: it goes into the description only. Returns the verdict
-/// and the file's path.
+/// Writes `dir/kinematics.json` for `kinematics` (as they are) with the
+/// verdict of [`actuator_check`] on `vehicle` in its description. The
+/// stroke plane is a mounting angle, not a motor command: it goes into
+/// the description only. Returns the verdict and the file's path.
 pub fn write_kinematics(
     dir: &Path,
+    vehicle: &Vehicle,
     kinematics: &FlappingKinematics,
     description: &str,
 ) -> Result<(ActuatorCheck, PathBuf), DesignError> {
-    let Judged {
-        check,
-        demand,
-        flown,
-        limiting,
-    } = judge(kinematics)?;
-    let verdict_text = if flown == demand {
-        format!("feasible on the default actuator (limiting: {limiting})")
+    let check = actuator_check(vehicle, kinematics)?;
+    let limiting = &check.limiting;
+    let limiting = format!(
+        "{} {:.4} {} of {:.4} {} (margin {:.1}%)",
+        limiting.quantity,
+        limiting.value,
+        limiting.unit,
+        limiting.limit,
+        limiting.unit,
+        100.0 * limiting.margin
+    );
+    let verdict_text = if check.feasible {
+        format!("feasible on the designed vehicle (limiting: {limiting})")
     } else {
         format!(
-            "the optimum {demand} is NOT feasible on the default actuator ({limiting}); this is the nearest feasible profile ({} reduced by {:.1}%)",
-            check.change,
-            100.0 * check.relative_change
+            "NOT feasible with the {:.0}% reserve on the designed vehicle with the final analysis's damping (limiting: {limiting})",
+            100.0 * check.reserve
         )
     };
     let source = format!(
@@ -190,9 +168,9 @@ pub fn write_kinematics(
     let path = dir.join(KINEMATICS_FILE);
     let profile = ProfileFile::from_kinematics(
         &path,
-        flown.frequency_hz,
-        flown.amplitude_deg,
-        flown.mean_deg,
+        check.frequency_hz,
+        check.amplitude_deg,
+        check.mean_angle_deg,
         &source,
         &ENVELOPE,
     )

@@ -37,6 +37,7 @@ use crate::topology::pressure::PressureHistory;
 
 use super::error::DesignError;
 use super::output::files::write_cycle_wing;
+use super::plant::designed_vehicle;
 use super::progress::{Event, Progress};
 use super::records::{
     self, cycle_dir, cycle_file, cycle_path, load_kinematics, load_topology, KinematicRecord,
@@ -233,8 +234,36 @@ impl Context<'_> {
         }
     }
 
+    /// Refuses to go on if the design of `cycle` (the initial design in
+    /// cycle 1) cannot be flown by the design's actuator with its
+    /// reserve, judged on the vehicle of the cycle's system analysis (its
+    /// wing's inertia and the damping calibrated on its drive work: the
+    /// model the aerodynamic discipline judges its candidates on; the
+    /// quasi-steady damping before any analysis is about half the
+    /// analysed one on the default wing, too optimistic to stop on).
+    pub fn check_flyable(&self, cycle: usize) -> Result<(), DesignError> {
+        let design = self.design(cycle)?;
+        let vehicle = designed_vehicle(&self.dir, &self.config, cycle, &design.densities)?;
+        let demand = crate::vehicle::Vehicle::demand(&design.kinematics);
+        let verdict = vehicle
+            .check(&demand)
+            .map_err(|source| DesignError::Vehicle { cycle, source })?;
+        if verdict.feasible {
+            return Ok(());
+        }
+        Err(DesignError::InitialInfeasible {
+            frequency_hz: demand.frequency_hz,
+            amplitude_deg: demand.amplitude_deg,
+            mean_deg: demand.mean_deg,
+            limiting: verdict.limiting.to_string(),
+            margin_percent: 100.0 * verdict.limiting.margin,
+            reserve_percent: 100.0 * verdict.reserve,
+        })
+    }
+
     /// The kinematic optimization from `design`'s kinematics on `case`
-    /// (new evaluations go into the cache).
+    /// (new evaluations go into the cache), every candidate judged on the
+    /// vehicle of the cycle's system analysis.
     fn optimize_kinematics(
         &self,
         running: &Running,
@@ -250,6 +279,7 @@ impl Context<'_> {
             seed: design_config.seed,
             ..Nsga2Config::default()
         };
+        let vehicle = designed_vehicle(&self.dir, &self.config, running.cycle, &design.densities)?;
         optimize_reporting(
             &case,
             &self.config.design_space(),
@@ -257,6 +287,7 @@ impl Context<'_> {
             weights,
             &nsga,
             &self.cache,
+            &|k: &FlappingKinematics| vehicle.violation(k),
             &|done, total| self.advanced(running, done, total, None),
         )
         .map_err(|source| DesignError::Kinematics {

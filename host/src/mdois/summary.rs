@@ -17,6 +17,7 @@ use crate::config::SystemConfig;
 use crate::discipline::section::SectionResult;
 
 use super::error::DesignError;
+use super::plant::cycle_vehicle;
 use super::profile::{actuator_check, ActuatorCheck};
 use super::records::{
     load_kinematics, load_system, load_topology, KinematicRecord, SystemRecord, TopologyRecord,
@@ -391,7 +392,10 @@ pub fn build(config: &SystemConfig, dir: &Path, state: &RunState) -> Result<Summ
     let initial = point(1);
     let final_design = final_cycle.and_then(point);
     let actuator = match &final_design {
-        Some(f) => Some(actuator_check(&f.kinematics)?),
+        Some(f) => Some(actuator_check(
+            &cycle_vehicle(dir, config, f.cycle)?,
+            &f.kinematics,
+        )?),
         None => None,
     };
     let relative = |a: f64, b: f64| if a != 0.0 { b / a - 1.0 } else { f64::NAN };

@@ -10,6 +10,7 @@ use std::path::Path;
 
 use crate::files::write_atomic;
 use crate::mdois::error::DesignError;
+use crate::mdois::plant::designed_vehicle;
 use crate::mdois::profile::write_kinematics;
 use crate::mdois::records::{load_kinematics, load_system, load_topology};
 use crate::mdois::stage::{layout_densities, Context};
@@ -165,8 +166,10 @@ pub(crate) fn write_final(
         pictures.push(("pareto.png", "Aerodynamic discipline of the last cycle: CT and efficiency of the L18 runs, the response surfaces' Pareto front, the initial design and the three candidates."));
         pictures.push(("main-effects.png", "Aerodynamic discipline of the last cycle: main effects (ANOM level means of the combined objective)."));
     }
+    let vehicle = designed_vehicle(dir, &ctx.config, final_cycle, &design.densities)?;
     write_kinematics(
         dir,
+        &vehicle,
         &design.kinematics,
         &format!(
             "fwav design: final kinematics of cycle {final_cycle} ({}).",

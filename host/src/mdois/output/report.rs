@@ -190,35 +190,39 @@ fn actuator(s: &mut String, a: &ActuatorCheck) {
             )
         })
         .collect();
-    let verdict = if a.optimum_feasible && !a.clamped_to_envelope {
+    let vehicle = format!(
+        "the designed vehicle ([plant.toml](plant.toml): wing {:.2} g, inertia {:.4e} kg m^2, aerodynamic damping {:.4e} N m s^2 from the final system analysis, spring {:.4} N m/rad, on the design file's [actuator])",
+        1e3 * a.wing_mass_kg,
+        a.wing_inertia_kg_m2,
+        a.aero_damping_nms2,
+        a.spring_nm_per_rad
+    );
+    let verdict = if a.feasible {
         format!(
-            "The final kinematics are **feasible** on the simulator's default actuator (every margin at least {:.0}%; limiting: {}). [kinematics.json](kinematics.json) flies them: {} Hz, {} deg amplitude, {} deg mean.",
+            "The final design's kinematics, which [kinematics.json](kinematics.json) flies ({} Hz, {} deg amplitude, {} deg mean), are **feasible** on {vehicle}: every margin at least {:.0}%, limiting: {}.",
+            a.frequency_hz,
+            a.amplitude_deg,
+            a.mean_angle_deg,
             100.0 * a.reserve,
             a.limiting.quantity,
-            a.flown_frequency_hz,
-            a.flown_amplitude_deg,
-            a.flown_mean_angle_deg
         )
     } else {
         format!(
-            "The final kinematics are **not feasible** on the simulator's default actuator (limiting: {}, {:.4} {} against {:.4} {}; reserve {:.0}%). [kinematics.json](kinematics.json) flies the nearest feasible kinematics instead: {} Hz, {} deg amplitude, {} deg mean ({} reduced by {:.1}%{}).",
+            "The final design's kinematics, which [kinematics.json](kinematics.json) flies ({} Hz, {} deg amplitude, {} deg mean), are **not feasible** with the {:.0}% reserve on {vehicle} (limiting: {}, {:.4} {} against {:.4} {}); the discipline judged them on the previous cycle's damping.",
+            a.frequency_hz,
+            a.amplitude_deg,
+            a.mean_angle_deg,
+            100.0 * a.reserve,
             a.limiting.quantity,
             a.limiting.value,
             a.limiting.unit,
             a.limiting.limit,
             a.limiting.unit,
-            100.0 * a.reserve,
-            a.flown_frequency_hz,
-            a.flown_amplitude_deg,
-            a.flown_mean_angle_deg,
-            a.change,
-            100.0 * a.relative_change,
-            if a.clamped_to_envelope { ", after clamping into the flight controller's envelope" } else { "" }
         )
     };
     let _ = writeln!(
         s,
-        "{verdict}\n\nMargins of the optimum: {}.",
+        "{verdict}\n\nMargins of the final design: {}.",
         margins.join("; ")
     );
 }
