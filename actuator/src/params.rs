@@ -192,64 +192,47 @@ impl PlantParams {
     }
 }
 
-/// A real setting of a plant table, declared once (key, unit, range, doc).
-const fn real<T>(
-    key: &'static str,
-    unit: &'static str,
-    allowed: Interval,
-    doc: &'static str,
-    value: fn(&T) -> Value,
-) -> Setting<T> {
-    Setting {
-        key,
-        unit,
-        allowed: Allowed::Real(allowed),
-        doc,
-        value,
-    }
-}
-
 /// The `[motor]` table's settings.
 pub const MOTOR: Table<Motor> = Table {
     name: "motor",
     doc: "DC motor.",
     settings: &[
-        real(
+        Setting::real(
             "resistance_ohm",
             "ohm",
             Interval::positive(),
             "Winding resistance",
             |m| Value::Real(m.resistance_ohm),
         ),
-        real(
+        Setting::real(
             "inductance_h",
             "H",
             Interval::positive(),
             "Winding inductance",
             |m| Value::Real(m.inductance_h),
         ),
-        real(
+        Setting::real(
             "torque_constant_nm_per_a",
             "N m/A",
             Interval::positive(),
             "Torque constant (= back-EMF constant)",
             |m| Value::Real(m.torque_constant_nm_per_a),
         ),
-        real(
+        Setting::real(
             "rotor_inertia_kg_m2",
             "kg m^2",
             Interval::at_least(0.0),
             "Rotor inertia",
             |m| Value::Real(m.rotor_inertia_kg_m2),
         ),
-        real(
+        Setting::real(
             "coulomb_friction_nm",
             "N m",
             Interval::at_least(0.0),
             "Coulomb friction at the motor shaft",
             |m| Value::Real(m.coulomb_friction_nm),
         ),
-        real(
+        Setting::real(
             "viscous_friction_nms_per_rad",
             "N m s/rad",
             Interval::at_least(0.0),
@@ -276,21 +259,21 @@ pub const SUPPLY: Table<Supply> = Table {
                 })
             },
         },
-        real(
+        Setting::real(
             "battery_v",
             "V",
             Interval::positive(),
             "Open-circuit battery voltage",
             |s| Value::Real(s.battery_v),
         ),
-        real(
+        Setting::real(
             "internal_resistance_ohm",
             "ohm",
             Interval::at_least(0.0),
             "Battery internal resistance",
             |s| Value::Real(s.internal_resistance_ohm),
         ),
-        real(
+        Setting::real(
             "pwm_hz",
             "Hz",
             Interval::positive(),
@@ -305,21 +288,21 @@ pub const TRANSMISSION: Table<Transmission> = Table {
     name: "transmission",
     doc: "Gearbox and spring.",
     settings: &[
-        real(
+        Setting::real(
             "gear_ratio",
             "",
             Interval::positive(),
             "Motor turns per flapping-axis turn",
             |t| Value::Real(t.gear_ratio),
         ),
-        real(
+        Setting::real(
             "efficiency",
             "",
             Interval::above_up_to(0.0, 1.0),
             "Gearbox efficiency",
             |t| Value::Real(t.efficiency),
         ),
-        real(
+        Setting::real(
             "spring_nm_per_rad",
             "N m/rad",
             Interval::at_least(0.0),
@@ -334,42 +317,42 @@ pub const WING: Table<Wing> = Table {
     name: "wing",
     doc: "The wing as the actuator sees it.",
     settings: &[
-        real(
+        Setting::real(
             "inertia_kg_m2",
             "kg m^2",
             Interval::positive(),
             "Inertia of the wing (and linkage) about the flapping axis",
             |w| Value::Real(w.inertia_kg_m2),
         ),
-        real(
+        Setting::real(
             "span_m",
             "m",
             Interval::positive(),
             "Span from the flapping axis to the tip",
             |w| Value::Real(w.span_m),
         ),
-        real(
+        Setting::real(
             "root_chord_m",
             "m",
             Interval::positive(),
             "Chord at the root",
             |w| Value::Real(w.root_chord_m),
         ),
-        real(
+        Setting::real(
             "tip_chord_m",
             "m",
             Interval::at_least(0.0),
             "Chord at the tip (linear taper)",
             |w| Value::Real(w.tip_chord_m),
         ),
-        real(
+        Setting::real(
             "air_density_kg_m3",
             "kg/m^3",
             Interval::at_least(0.0),
             "Air density",
             |w| Value::Real(w.air_density_kg_m3),
         ),
-        real(
+        Setting::real(
             "drag_coefficient",
             "",
             Interval::at_least(0.0),
@@ -391,14 +374,14 @@ pub const SENSORS: Table<Sensors> = Table {
             doc: "Encoder counts per revolution of the flapping axis",
             value: |s| Value::unsigned(s.encoder_counts_per_rev),
         },
-        real(
+        Setting::real(
             "current_noise_a",
             "A",
             Interval::at_least(0.0),
             "Standard deviation of the current sensor's noise",
             |s| Value::Real(s.current_noise_a),
         ),
-        real(
+        Setting::real(
             "current_offset_a",
             "A",
             Interval::finite(),
@@ -420,7 +403,7 @@ pub const SIMULATION: Table<Simulation> = Table {
     name: "simulation",
     doc: "Time stepping.",
     settings: &[
-        real(
+        Setting::real(
             "control_hz",
             "Hz",
             Interval::closed(100.0, 100_000.0),

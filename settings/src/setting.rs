@@ -81,6 +81,24 @@ pub struct Setting<T> {
 }
 
 impl<T> Setting<T> {
+    /// A real setting: `key` in `unit`, allowed in `allowed`, read by
+    /// `value` (the common case of a table of measured quantities).
+    pub const fn real(
+        key: &'static str,
+        unit: &'static str,
+        allowed: crate::range::Interval,
+        doc: &'static str,
+        value: fn(&T) -> Value,
+    ) -> Self {
+        Self {
+            key,
+            unit,
+            allowed: Allowed::Real(allowed),
+            doc,
+            value,
+        }
+    }
+
     /// The range with its unit.
     pub fn limits(&self) -> Limits {
         Limits {

@@ -144,76 +144,59 @@ impl ActuatorConfig {
     }
 }
 
-/// A real setting of the `[actuator]` table.
-const fn real(
-    key: &'static str,
-    unit: &'static str,
-    allowed: Interval,
-    doc: &'static str,
-    value: fn(&ActuatorConfig) -> Value,
-) -> Setting<ActuatorConfig> {
-    Setting {
-        key,
-        unit,
-        allowed: Allowed::Real(allowed),
-        doc,
-        value,
-    }
-}
-
 /// The `[actuator]` table's settings.
 pub const ACTUATOR: Table<ActuatorConfig> = Table {
     name: "actuator",
     doc: "The flapping drive: DC motor (default: FAULHABER 1331 T 006 SR datasheet), gearbox, 2S battery, spring, the controller's current limit.",
     settings: &[
-        real("resistance_ohm", "ohm", Interval::positive(), "Motor winding resistance", |a| {
+        Setting::real("resistance_ohm", "ohm", Interval::positive(), "Motor winding resistance", |a| {
             Value::Real(a.resistance_ohm)
         }),
-        real("inductance_h", "H", Interval::positive(), "Motor winding inductance", |a| {
+        Setting::real("inductance_h", "H", Interval::positive(), "Motor winding inductance", |a| {
             Value::Real(a.inductance_h)
         }),
-        real(
+        Setting::real(
             "torque_constant_nm_per_a",
             "N m/A",
             Interval::positive(),
             "Motor torque constant (= back-EMF constant, V s/rad)",
             |a| Value::Real(a.torque_constant_nm_per_a),
         ),
-        real(
+        Setting::real(
             "rotor_inertia_kg_m2",
             "kg m^2",
             Interval::at_least(0.0),
             "Motor rotor inertia",
             |a| Value::Real(a.rotor_inertia_kg_m2),
         ),
-        real(
+        Setting::real(
             "coulomb_friction_nm",
             "N m",
             Interval::at_least(0.0),
             "Coulomb friction at the motor shaft",
             |a| Value::Real(a.coulomb_friction_nm),
         ),
-        real(
+        Setting::real(
             "viscous_friction_nms_per_rad",
             "N m s/rad",
             Interval::at_least(0.0),
             "Viscous friction at the motor shaft",
             |a| Value::Real(a.viscous_friction_nms_per_rad),
         ),
-        real("gear_ratio", "", Interval::positive(), "Motor turns per flapping-axis turn", |a| {
+        Setting::real("gear_ratio", "", Interval::positive(), "Motor turns per flapping-axis turn", |a| {
             Value::Real(a.gear_ratio)
         }),
-        real(
+        Setting::real(
             "gear_efficiency",
             "",
             Interval::above_up_to(0.0, 1.0),
             "Gearbox efficiency",
             |a| Value::Real(a.gear_efficiency),
         ),
-        real("battery_v", "V", Interval::positive(), "Open-circuit battery voltage", |a| {
+        Setting::real("battery_v", "V", Interval::positive(), "Open-circuit battery voltage", |a| {
             Value::Real(a.battery_v)
         }),
-        real(
+        Setting::real(
             "battery_resistance_ohm",
             "ohm",
             Interval::at_least(0.0),
@@ -232,21 +215,21 @@ pub const ACTUATOR: Table<ActuatorConfig> = Table {
                 })
             },
         },
-        real(
+        Setting::real(
             "spring_nm_per_rad",
             "N m/rad",
             Interval::at_least(0.0),
             "Stiffness of the fixed spring (spring = \"fixed\"; 0: no spring)",
             |a| Value::Real(a.spring_nm_per_rad),
         ),
-        real(
+        Setting::real(
             "current_limit_a",
             "A",
             Interval::positive(),
             "The flight controller's current limit",
             |a| Value::Real(a.current_limit_a),
         ),
-        real(
+        Setting::real(
             "reserve",
             "",
             Interval {
