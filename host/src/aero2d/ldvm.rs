@@ -113,6 +113,19 @@ struct LoadIntegrals {
     q_moment: f64,
     /// Quasi-steady work rate against the camber motion, sum V_t Gamma_j eta_t,j.
     deform_quasi: f64,
+    /// Quasi-steady chordwise force of the pressure on the sloped camber
+    /// line, -sum V_t Gamma_j eta_x,j (positive towards the trailing edge).
+    axial_quasi: f64,
+}
+
+/// The unsteady parts of the deforming camber line's loads at one step
+/// (those of the pressure jump's rate term, station by station).
+#[derive(Clone, Copy, Debug, Default)]
+struct CamberUnsteady {
+    /// Work rate against the camber motion, int dPhi/dt eta_t dx.
+    work: f64,
+    /// Chordwise force, -int dPhi/dt eta_x dx.
+    axial: f64,
 }
 
 /// The solver state.
@@ -428,10 +441,10 @@ impl Ldvm {
         // term would read that as a large, spurious loss of normal force.
         let edge_jump = -self.leading.iter().map(|v| v.gamma).sum::<f64>();
         let now = self.load_integrals(&a, &tangential, &chord, edge_jump);
-        let unsteady_deform = self.unsteady_deformation(&chord, edge_jump);
+        let unsteady_camber = self.unsteady_camber(&chord, edge_jump);
         let impulse_now = self.impulse();
         if let Some(prev) = self.loads.replace(now) {
-            self.record(history, &now, &prev, &a, unsteady_deform, impulse_now);
+            self.record(history, &now, &prev, &a, unsteady_camber, impulse_now);
         }
         self.impulse_prev = impulse_now;
         self.convect(&sources);
@@ -657,6 +670,7 @@ impl Ldvm {
             q_normal: edge_jump,
             q_moment: 0.5 * edge_jump,
             deform_quasi: 0.0,
+            axial_quasi: 0.0,
         };
         for (j, (v, &(xb, _, _))) in self.bound.iter().zip(&chord.stations).enumerate() {
             let g = -v.gamma; // clockwise
@@ -666,15 +680,17 @@ impl Ldvm {
             now.q_normal += g * (1.0 - xb);
             now.q_moment += g * 0.5 * (1.0 - xb * xb);
             now.deform_quasi += vt * g * chord.slopes[j].1;
+            now.axial_quasi -= vt * g * chord.slopes[j].0;
         }
         now
     }
 
-    /// Deformation work: -int dp eta_t dx, with the unsteady part of the
-    /// pressure jump per station, dx_j dPhi_j/dt (Phi: running bound
-    /// circulation to the station's centre, from `edge_jump` at the
-    /// leading edge). Keeps this step's running circulation for the next.
-    fn unsteady_deformation(&mut self, chord: &Chord, edge_jump: f64) -> f64 {
+    /// The unsteady pressure jump's share of the camber line's loads: per
+    /// station the jump's rate times its width, dx_j dPhi_j/dt (Phi: running
+    /// bound circulation to the station's centre, from `edge_jump` at the
+    /// leading edge), against the camber rate (work) and slope (chordwise
+    /// force). Keeps this step's running circulation for the next.
+    fn unsteady_camber(&mut self, chord: &Chord, edge_jump: f64) -> CamberUnsteady {
         let dt = self.settings.dt;
         let mut running = Vec::with_capacity(self.bound.len());
         let mut sum = edge_jump;
@@ -683,19 +699,21 @@ impl Ldvm {
             running.push(sum + 0.5 * g);
             sum += g;
         }
-        let unsteady_deform: f64 = if self.running_previous.len() == running.len() {
+        let mut loads = CamberUnsteady::default();
+        if self.running_previous.len() == running.len() {
             let dtheta = PI / self.theta.len() as f64;
-            running
+            for ((p, q), (th, &(slope, rate))) in running
                 .iter()
                 .zip(&self.running_previous)
                 .zip(self.theta.iter().zip(&chord.slopes))
-                .map(|((p, q), (th, &(_, rate)))| 0.5 * th.sin() * dtheta * (p - q) / dt * rate)
-                .sum()
-        } else {
-            0.0
-        };
+            {
+                let jump = 0.5 * th.sin() * dtheta * (p - q) / dt;
+                loads.work += jump * rate;
+                loads.axial -= jump * slope;
+            }
+        }
         self.running_previous = running;
-        unsteady_deform
+        loads
     }
 
     /// The vertical impulse of all the vorticity, bound and free (ccw
@@ -718,7 +736,7 @@ impl Ldvm {
         now: &LoadIntegrals,
         prev: &LoadIntegrals,
         a: &[f64],
-        unsteady_deform: f64,
+        unsteady_camber: CamberUnsteady,
         impulse_now: f64,
     ) {
         let dt = self.settings.dt;
@@ -738,11 +756,17 @@ impl Ldvm {
         let normal = 0.5 * (now.normal + prev.normal) + (now.q_normal - prev.q_normal) / dt;
         let moment_le = -(0.5 * (now.moment + prev.moment) + (now.q_moment - prev.q_moment) / dt);
         let suction = 0.5 * (now.suction + prev.suction);
+        // The pressure on a sloped camber line pushes along the chord too
+        // (Wu 1961, J. Fluid Mech. 10, the thrust of a flexible plate:
+        // suction plus int dp eta_x dx): a twisted section's normal force
+        // tilts forward. Without it a pitch written as camber would feel the
+        // suction but not the normal force's drag (d'Alembert broken).
+        let axial = 0.5 * (now.axial_quasi + prev.axial_quasi) + unsteady_camber.axial;
         let (sm, cm) = alpha_m.sin_cos();
-        let fx = normal * sm - suction * cm;
-        let fy = normal * cm + suction * sm;
+        let fx = normal * sm - suction * cm + axial * cm;
+        let fy = normal * cm + suction * sm - axial * sm;
         let m_pivot_nose_up = moment_le + pivot * normal;
-        let deformation = 0.5 * (now.deform_quasi + prev.deform_quasi) + unsteady_deform;
+        let deformation = 0.5 * (now.deform_quasi + prev.deform_quasi) + unsteady_camber.work;
         let power = -fx * x_dot_m - fy * h_dot_m - m_pivot_nose_up * alpha_dot_m - deformation;
         history.time.push(tm);
         history.cl.push(2.0 * fy);
