@@ -45,6 +45,7 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
         chord: planform.chord(radius),
         radius,
         flight: config.flight(),
+        lesp_critical: config.design.lesp(),
         ..SectionCase::fwav_mid_span()
     };
     if let Some(path) = &a.section {
@@ -117,20 +118,22 @@ fn print_result(result: &KinematicResult) {
     };
     if let Ok(r) = &result.initial.result {
         println!(
-            "initial   {}: CT {:.4}, efficiency {:.3}",
+            "initial   {}: net CT {:.4} (inviscid {:.4}), net efficiency {:.4} (inviscid {:.3})",
             show(&result.initial.design),
+            r.ct_net,
             r.ct,
+            r.efficiency_net,
             r.efficiency
         );
     }
     for c in &result.candidates {
         match &c.confirmation.result {
             Ok(r) => println!(
-                "{:<13} {}: CT {:.4}, efficiency {:.3}, combined {:.3}{}",
+                "{:<13} {}: net CT {:.4}, net efficiency {:.4}, combined {:.3}{}",
                 c.method,
                 show(&c.confirmation.design),
-                r.ct,
-                r.efficiency,
+                r.ct_net,
+                r.efficiency_net,
                 c.combined.unwrap_or(f64::NAN),
                 c.predicted
                     .map(|p| format!(" (predicted {p:.3})"))
@@ -145,7 +148,7 @@ fn print_result(result: &KinematicResult) {
     }
     let failed = result.runs.iter().filter(|r| r.result.is_err()).count();
     println!(
-        "surfaces: R² CT {:.3}, efficiency {:.3}; {} Pareto points; {} of 18 array runs failed",
+        "surfaces: R² net CT {:.3}, net efficiency {:.3}; {} Pareto points; {} of 18 array runs failed",
         result.surface_quality[0].0,
         result.surface_quality[1].0,
         result.pareto.len(),

@@ -11,6 +11,7 @@ use fwav_settings::{Allowed, Integers, Interval, Setting, Table, Value};
 use serde::{Deserialize, Serialize};
 
 use crate::discipline::kinematic::DesignSpace;
+use crate::discipline::section::FWAV_LESP_CRITICAL;
 
 use super::ConfigError;
 
@@ -27,6 +28,9 @@ pub struct DesignConfig {
     pub efficiency_weight: f64,
     /// Seed of the genetic algorithm.
     pub seed: u64,
+    /// Critical leading-edge suction parameter of the section analyses
+    /// (leading-edge vortex shedding beyond it); 0: attached flow.
+    pub lesp_critical: f64,
 }
 
 impl Default for DesignConfig {
@@ -37,7 +41,15 @@ impl Default for DesignConfig {
             thrust_weight: 1.0,
             efficiency_weight: 1.0,
             seed: 1,
+            lesp_critical: FWAV_LESP_CRITICAL,
         }
+    }
+}
+
+impl DesignConfig {
+    /// The section analyses' critical LESP, None (attached flow) for 0.
+    pub fn lesp(&self) -> Option<f64> {
+        (self.lesp_critical > 0.0).then_some(self.lesp_critical)
     }
 }
 
@@ -46,7 +58,9 @@ pub const DESIGN: Table<DesignConfig> = Table {
     name: "design",
     doc: "The aerodynamic discipline: three levels (low, initial, high) of each kinematic \
           variable for the L18 array, and the weights of the combined objective \
-          w_ct CT/CT_0 + w_eta eta/eta_0.",
+          w_ct CT/CT_0 + w_eta eta/eta_0, where CT is the net thrust coefficient (the \
+          LDVM's thrust less the laminar friction estimate) and eta = CT/CP the net \
+          efficiency.",
     settings: &[
         Setting {
             key: "frequency_hz",
@@ -96,6 +110,16 @@ pub const DESIGN: Table<DesignConfig> = Table {
             allowed: Allowed::Integer(Integers::at_least(0)),
             doc: "Seed of the genetic algorithm (NSGA-II)",
             value: |d| Value::unsigned(d.seed),
+        },
+        Setting {
+            key: "lesp_critical",
+            unit: "",
+            allowed: Allowed::Real(Interval::closed(0.0, 2.0)),
+            doc: "Critical leading-edge suction parameter of the section's LDVM: leading-edge \
+                  vortices are shed beyond it (separation). 0.11 for the thin, sharp-edged \
+                  membrane (flat-plate value of Ramesh et al. 2014, J. Fluid Mech. 751; 0.18 \
+                  is their SD7003); 0 means attached flow",
+            value: |d| Value::Real(d.lesp_critical),
         },
     ],
 };

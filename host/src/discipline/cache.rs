@@ -47,7 +47,7 @@ struct CacheFile {
     entries: HashMap<String, SectionResult>,
 }
 
-const FORMAT: &str = "fwav-evaluations-1";
+const FORMAT: &str = "fwav-evaluations-2";
 
 impl EvaluationCache {
     /// An empty cache.
@@ -74,7 +74,10 @@ impl EvaluationCache {
         if file.format != FORMAT {
             return Err(CacheError::Format {
                 path: path.display().to_string(),
-                message: format!("format {:?}, expected {FORMAT:?}", file.format),
+                message: format!(
+                    "format {:?}, expected {FORMAT:?} (results of an older version: delete the file to recompute)",
+                    file.format
+                ),
             });
         }
         Ok(Self {

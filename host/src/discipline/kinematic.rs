@@ -13,10 +13,14 @@
 //!
 //! The combined objective (the stated rule for choosing): `w_ct CT / CT_0 +
 //! w_eta eta / eta_0`, each objective relative to the initial design's, so
-//! the weights say how much a relative gain in each is worth. The answer is
-//! the feasible confirmed candidate (direct runs only: the L18 row, the
-//! ANOM and RSM confirmations) with the best combined objective, or the
-//! initial design if none beats it.
+//! the weights say how much a relative gain in each is worth. CT is the net
+//! thrust ([`SectionResult::ct_net`]: the LDVM's thrust, with leading-edge
+//! shedding, less the laminar friction estimate) and eta the net efficiency
+//! `CT_net / CP` ([`SectionResult::efficiency_net`]); the response surfaces
+//! fit the same two quantities. The inviscid CT stays in the records. The
+//! answer is the feasible confirmed candidate (direct runs only: the L18
+//! row, the ANOM and RSM confirmations) with the best combined objective,
+//! or the initial design if none beats it.
 //!
 //! Feasibility: every candidate is judged by a [`Violation`] closure (the
 //! design's actuator model, analytic: the caller builds it, this room
@@ -27,7 +31,8 @@
 //! NSGA-II searches the surfaces under constrained domination (Deb et al.
 //! 2002, section VI) and its knee is taken from the feasible front; a
 //! candidate that is still infeasible (no feasible row, no feasible level
-//! combination) is recorded with its violation and never chosen. Every evaluation runs in parallel (rayon); a failed
+//! combination) is recorded with its violation and never chosen. Every
+//! evaluation runs in parallel (rayon); a failed
 //! one is recorded with its reason and counts as the worst response seen.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -175,6 +180,21 @@ pub enum KinematicError {
     /// The initial design could not be evaluated.
     #[error("the initial design's 2D run failed: {0}")]
     Initial(String),
+    /// The initial design gives no net thrust, so it cannot be the
+    /// objective's reference (its ratios would flip sign).
+    #[error(
+        "the initial design's net thrust coefficient {ct_net:.4} (inviscid {ct:.4}) and net \
+         efficiency {efficiency_net:.4} must be positive to serve as the objective's reference: \
+         start from kinematics that produce thrust (a higher frequency or amplitude)"
+    )]
+    NoNetThrust {
+        /// Net thrust coefficient (CT less friction).
+        ct_net: f64,
+        /// Inviscid thrust coefficient.
+        ct: f64,
+        /// Net efficiency.
+        efficiency_net: f64,
+    },
     /// Design of experiments, ANOM, RSM or NSGA-II refused their input.
     #[error("{0}")]
     Method(String),
@@ -253,6 +273,13 @@ pub fn optimize_reporting(
     let initial_violation = violation(&initial);
     let initial = evaluations.run(initial);
     let reference = initial.result.clone().map_err(KinematicError::Initial)?;
+    if !(reference.ct_net > 0.0 && reference.efficiency_net > 0.0) {
+        return Err(KinematicError::NoNetThrust {
+            ct_net: reference.ct_net,
+            ct: reference.ct,
+            efficiency_net: reference.efficiency_net,
+        });
+    }
     let objective = Objective {
         weights,
         reference,
@@ -411,10 +438,11 @@ struct Objective<'a> {
 }
 
 impl Objective<'_> {
-    /// The combined objective of a result.
+    /// The combined objective of a result, on the net thrust and net
+    /// efficiency.
     fn combined(&self, r: &SectionResult) -> f64 {
-        self.weights.thrust * r.ct / self.reference.ct
-            + self.weights.efficiency * r.efficiency / self.reference.efficiency
+        self.weights.thrust * r.ct_net / self.reference.ct_net
+            + self.weights.efficiency * r.efficiency_net / self.reference.efficiency_net
     }
 
     /// The combined objective of a run, None if it failed.
@@ -422,10 +450,11 @@ impl Objective<'_> {
         e.result.as_ref().ok().map(|r| self.combined(r))
     }
 
-    /// The combined objective of the surfaces' objectives `[-CT, -eta]`.
+    /// The combined objective of the surfaces' objectives `[-CT_net,
+    /// -eta_net]`.
     fn predicted(&self, o: &[f64]) -> f64 {
-        self.weights.thrust * -o[0] / self.reference.ct
-            + self.weights.efficiency * -o[1] / self.reference.efficiency
+        self.weights.thrust * -o[0] / self.reference.ct_net
+            + self.weights.efficiency * -o[1] / self.reference.efficiency_net
     }
 }
 
@@ -490,14 +519,14 @@ impl Surfaces {
             array
                 .runs
                 .iter()
-                .map(|e| e.result.as_ref().ok().map(|r| r.ct))
+                .map(|e| e.result.as_ref().ok().map(|r| r.ct_net))
                 .collect(),
         );
         let eta = worst(
             array
                 .runs
                 .iter()
-                .map(|e| e.result.as_ref().ok().map(|r| r.efficiency))
+                .map(|e| e.result.as_ref().ok().map(|r| r.efficiency_net))
                 .collect(),
         );
         let ct_fit = fit_reduced(&coded, &ct, ReduceOptions::default()).map_err(|e| method(&e))?;

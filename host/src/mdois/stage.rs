@@ -230,6 +230,7 @@ impl Context<'_> {
             radius,
             flight: self.config.flight(),
             deformation: section.samples,
+            lesp_critical: self.config.design.lesp(),
             ..SectionCase::fwav_mid_span()
         }
     }

@@ -1,6 +1,6 @@
 //! Pictures of the aerodynamic discipline, as PNGs: the main effects (the
 //! ANOM level means of the combined objective, one panel per design
-//! variable) and the CT–efficiency plane with the response surfaces'
+//! variable) and the net CT – net efficiency plane with the response surfaces'
 //! Pareto front, the 18 array runs, the initial design and the three
 //! confirmed candidates.
 
@@ -51,14 +51,15 @@ pub fn main_effects(
     Ok(())
 }
 
-/// Draws the CT–efficiency plane of `result` to `png`.
+/// Draws the net CT – net efficiency plane of `result` to `png` (the
+/// quantities the objective and the surfaces use).
 pub fn pareto(result: &KinematicResult, png: &Path) -> Result<(), DrawingError> {
     let root = BitMapBackend::new(png, (900, 700)).into_drawing_area();
     root.fill(&WHITE)?;
     let runs: Vec<(f64, f64)> = result
         .runs
         .iter()
-        .filter_map(|e| e.result.as_ref().ok().map(|r| (r.ct, r.efficiency)))
+        .filter_map(|e| e.result.as_ref().ok().map(|r| (r.ct_net, r.efficiency_net)))
         .collect();
     let front: Vec<(f64, f64)> = result.pareto.iter().map(|p| (p.1, p.2)).collect();
     let candidates: Vec<(String, (f64, f64))> = result
@@ -69,7 +70,7 @@ pub fn pareto(result: &KinematicResult, png: &Path) -> Result<(), DrawingError> 
                 .result
                 .as_ref()
                 .ok()
-                .map(|r| (c.method.clone(), (r.ct, r.efficiency)))
+                .map(|r| (c.method.clone(), (r.ct_net, r.efficiency_net)))
         })
         .collect();
     let initial = result
@@ -77,7 +78,7 @@ pub fn pareto(result: &KinematicResult, png: &Path) -> Result<(), DrawingError> 
         .result
         .as_ref()
         .ok()
-        .map(|r| (r.ct, r.efficiency));
+        .map(|r| (r.ct_net, r.efficiency_net));
     let xs: Vec<f64> = runs
         .iter()
         .chain(&front)
@@ -100,8 +101,8 @@ pub fn pareto(result: &KinematicResult, png: &Path) -> Result<(), DrawingError> 
         .build_cartesian_2d(span(&xs), span(&ys))?;
     chart
         .configure_mesh()
-        .x_desc("mean CT")
-        .y_desc("propulsive efficiency")
+        .x_desc("mean net CT (less friction)")
+        .y_desc("net propulsive efficiency")
         .draw()?;
     chart
         .draw_series(
