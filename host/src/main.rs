@@ -61,7 +61,9 @@ enum Command {
     SystemAnalysis(cli::system::SystemArgs),
     /// The aerodynamic discipline: choose the flapping kinematics (L18,
     /// ANOM, response surfaces + NSGA-II, confirmation runs) on 2D analyses
-    /// of the deforming mid-span section.
+    /// of the deforming mid-span section. Alone it is unconstrained: no
+    /// analysed vehicle, so no actuator check (`fwav design` judges every
+    /// candidate on the designed vehicle; ask `fwav actuator` of a result).
     Kinematics(cli::kinematics::KinematicsArgs),
     /// The structural discipline: the carbon reinforcement layout by
     /// nonlinear dynamic topology optimization with equivalent static
