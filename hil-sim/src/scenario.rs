@@ -150,7 +150,7 @@ pub fn run_with_trace(
         host.command(Command::SetParam(value))?;
     }
     host.command(Command::UploadProfile(profile.clone()))?;
-    host.command(Command::Arm)?;
+    let session = host.arm()?;
     host.command(Command::Start)?;
     let mut reference = ReferenceGenerator::new();
     reference.start(&profile, &Limits::REFERENCE_FWAV);
@@ -179,7 +179,9 @@ pub fn run_with_trace(
             host.get_mut().set_faults(faults);
         }
         if !silent && k % heartbeat_every == 0 && k > 0 {
-            host.request(Command::Ping { nonce: k as u32 })?;
+            // Refused once the device disarmed (a fault): the host keeps
+            // sending, as a real one does until it notices.
+            host.request(Command::Heartbeat { session })?;
         }
         let target = reference.waveform();
         let segment = reference.active_segment();
