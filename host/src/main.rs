@@ -98,7 +98,7 @@ enum Command {
         #[arg(long)]
         save: bool,
         /// With --start: fly this many seconds, then stop.
-        #[arg(long, value_parser = cli::fly::duration_seconds)]
+        #[arg(long, value_parser = cli::fly::duration_seconds, allow_negative_numbers = true)]
         duration: Option<f64>,
         /// Machine-readable output.
         #[arg(long)]
@@ -132,7 +132,7 @@ enum Command {
         #[arg(long, default_value_t = 100)]
         decimation: u16,
         /// Stop after this many seconds.
-        #[arg(long, value_parser = cli::fly::duration_seconds)]
+        #[arg(long, value_parser = cli::fly::duration_seconds, allow_negative_numbers = true)]
         duration: Option<f64>,
     },
 }

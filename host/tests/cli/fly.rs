@@ -230,21 +230,21 @@ fn monitor_ends_cleanly_on_sigterm_and_sighup() {
     }
 }
 
-/// `--duration nan`, `-1`, `0` or `inf` is refused before the link is
+/// `--duration nan`, `-1`, `0`, `inf` or `-0.5` is refused before the link is
 /// touched: a usage error naming the option and the value, and the device
 /// was never armed (nor even given the profile).
 #[test]
 fn upload_refuses_a_duration_that_is_not_a_positive_number_of_seconds() {
     let board = VirtualBoard::start();
-    for value in ["nan", "-1", "0", "inf"] {
-        let duration = format!("--duration={value}");
+    for value in ["nan", "-1", "0", "inf", "-0.5"] {
         let out = super::fwav(&[
             "upload",
             "--port",
             &board.path,
             PROFILE,
             "--start",
-            &duration,
+            "--duration",
+            value,
         ]);
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{value}: {stderr}");
