@@ -2,6 +2,9 @@
 
 use std::process::Command;
 
+#[path = "cli/fly.rs"]
+mod fly;
+
 fn fwav(args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_fwav"))
         .args(args)
