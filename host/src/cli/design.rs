@@ -11,8 +11,9 @@ use std::time::{Duration, Instant};
 use anyhow::{bail, Context, Result};
 use fwav::config::template::commented_toml;
 use fwav::config::SystemConfig;
+use fwav::mdois::lock::LOCK_FILE;
 use fwav::mdois::summary::Summary;
-use fwav::mdois::{resume, start, Event, Outcome, Progress, RunOptions, Stage};
+use fwav::mdois::{Event, Outcome, Progress, Replace, RunDir, RunOptions, Stage};
 
 /// `fwav design`'s options.
 #[derive(clap::Args)]
@@ -24,9 +25,15 @@ pub struct DesignArgs {
     pub config: Option<PathBuf>,
     /// Write the run here: `summary.json`, `report.md`, the plots,
     /// `topology.vtu`/`.png`, `wing-cycle-N.vtu`, `kinematics.json`, and
-    /// every stage's files under `cycle-N/` with `state.json`.
+    /// every stage's files under `cycle-N/` with `state.json`. A new or
+    /// empty directory, or a run of the same configuration (continued);
+    /// anything else is refused (see --force).
     #[arg(long, default_value = "design", conflicts_with = "resume")]
     pub out: PathBuf,
+    /// Delete what the --out directory holds and start the run there
+    /// (never the --config file itself: that is refused).
+    #[arg(long, conflicts_with = "resume")]
+    pub force: bool,
     /// Continue the interrupted run in this directory without redoing its
     /// finished stages.
     #[arg(long, value_name = "DIR")]
@@ -165,21 +172,43 @@ pub fn run_command(a: &DesignArgs) -> Result<()> {
         }
     };
     let options = RunOptions::default();
-    let run = match &a.resume {
+    let (claimed, what) = match &a.resume {
         Some(dir) => {
             let config = match &a.config {
                 Some(path) => Some(super::system::read_config(Some(path))?),
                 None => None,
             };
-            resume(dir, config.as_ref(), &options, &progress)
-                .with_context(|| format!("resuming the design run in {}", dir.display()))?
+            let what = format!("resuming the design run in {}", dir.display());
+            (
+                RunDir::for_resume(dir, config.as_ref()).context(what.clone())?,
+                what,
+            )
         }
         None => {
             let config = super::system::read_config(a.config.as_deref())?;
-            start(&config, &a.out, &options, &progress)
-                .with_context(|| format!("design run in {}", a.out.display()))?
+            let replace = Replace {
+                force: a.force,
+                inputs: a.config.iter().cloned().collect(),
+            };
+            let what = format!("design run in {}", a.out.display());
+            (
+                RunDir::for_start(&config, &a.out, &replace).context(what.clone())?,
+                what,
+            )
         }
     };
+    let dir = claimed.path().display().to_string();
+    if let Some(holder) = claimed.stale_lock() {
+        eprintln!(
+            "warning: {dir}/{LOCK_FILE} is a stale lock: {holder} ended without letting go of it; taking the run over"
+        );
+    }
+    if claimed.replaced() {
+        eprintln!("--force: deleted what {dir} held; starting the run there");
+    } else if a.resume.is_none() && claimed.continues() {
+        eprintln!("{dir} holds a run of this configuration: continuing it");
+    }
+    let run = claimed.run(&options, &progress).context(what)?;
     if show {
         eprint!("\r\x1b[2K");
     }
@@ -187,10 +216,14 @@ pub fn run_command(a: &DesignArgs) -> Result<()> {
         println!("{}", serde_json::to_string_pretty(&run.summary)?);
     } else {
         print_summary(&run.summary, &run.dir);
-        println!(
-            "{} stage(s) computed, {} reused",
-            run.stages_computed, run.stages_reused
-        );
+        if run.finished_before {
+            println!("the run had already finished: nothing computed");
+        } else {
+            println!(
+                "{} stage(s) computed, {} reused",
+                run.stages_computed, run.stages_reused
+            );
+        }
     }
     match run.outcome {
         Some(Outcome::Converged { .. }) | Some(Outcome::CycleCap { .. }) => Ok(()),
