@@ -4,7 +4,8 @@
 //! while a process computes in it, and a lock left by a killed process is
 //! taken over; a resume refuses a `config.toml` edited since the start;
 //! every configuration check (cross-field ones too) runs before anything
-//! is written; a corrupt `state.json` is named with the way out. Each test runs the real `fwav` binary
+//! is written; a corrupt `state.json` is named with the way out; the
+//! progress line fits the terminal. Each test runs the real `fwav` binary
 //! on real files; a command that should be refused at once but is still
 //! running after its time limit is killed and reported as a failure.
 
@@ -440,5 +441,90 @@ fn a_corrupt_state_file_is_named_with_the_way_out() {
     for part in ["state.json", "--force", "--out"] {
         assert!(stderr.contains(part), "{part}: {stderr}");
     }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A pseudo-terminal `columns` wide: its master side, and the slave side
+/// as a file to hand to a child.
+fn terminal(columns: u16) -> (std::fs::File, std::fs::File) {
+    use rustix::pty::{grantpt, openpt, ptsname, unlockpt, OpenptFlags};
+    let master = openpt(OpenptFlags::RDWR | OpenptFlags::NOCTTY).unwrap();
+    grantpt(&master).unwrap();
+    unlockpt(&master).unwrap();
+    let name = ptsname(&master, Vec::new()).unwrap();
+    let slave = std::fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .open(name.to_str().unwrap())
+        .unwrap();
+    let size = rustix::termios::Winsize {
+        ws_row: 24,
+        ws_col: columns,
+        ws_xpixel: 0,
+        ws_ypixel: 0,
+    };
+    rustix::termios::tcsetwinsize(&slave, size).unwrap();
+    (std::fs::File::from(master), slave)
+}
+
+/// Item 10: on a terminal the live progress line is redrawn in place
+/// (`\r`, clear line); a line wider than the terminal wraps, and each
+/// redraw then leaves a new line. On a 40-column terminal every redraw
+/// fits in 40 columns.
+#[test]
+fn the_progress_line_fits_the_terminal() {
+    const COLUMNS: usize = 40;
+    let dir = temp("width");
+    let config = dir.join("coarse.toml");
+    std::fs::write(&config, COARSE).unwrap();
+    let (mut master, slave) = terminal(COLUMNS as u16);
+    let child = fwav_command(&[
+        "design",
+        "--config",
+        config.to_str().unwrap(),
+        "--out",
+        dir.join("run").to_str().unwrap(),
+    ])
+    .stdout(Stdio::null())
+    .stderr(Stdio::from(slave))
+    .spawn()
+    .unwrap();
+    let (send, chunks) = mpsc::channel();
+    std::thread::spawn(move || {
+        let mut buffer = [0u8; 4096];
+        while let Ok(n) = master.read(&mut buffer) {
+            if n == 0 || send.send(buffer[..n].to_vec()).is_err() {
+                break;
+            }
+        }
+    });
+    const REDRAW: &str = "\r\x1b[2K";
+    let mut seen = Vec::new();
+    let clock = Instant::now();
+    let live = |seen: &[u8]| {
+        let text = String::from_utf8_lossy(seen);
+        text.split(REDRAW)
+            .filter(|s| s.starts_with("cycle") && !s.contains('\n'))
+            .count()
+    };
+    while live(&seen) < 4 && clock.elapsed() < Duration::from_secs(60) {
+        if let Ok(chunk) = chunks.recv_timeout(Duration::from_millis(100)) {
+            seen.extend(chunk);
+        }
+    }
+    kill(child);
+    let text = String::from_utf8_lossy(&seen).into_owned();
+    // A live redraw ends without a newline (a stage's end is a line of
+    // its own, printed once).
+    let redraws: Vec<&str> = text
+        .split(REDRAW)
+        .filter(|s| s.starts_with("cycle") && !s.contains('\n'))
+        .collect();
+    assert!(redraws.len() >= 3, "too few redraws: {text:?}");
+    for line in &redraws {
+        let width = line.chars().count();
+        assert!(width <= COLUMNS, "{width} columns: {line:?}");
+    }
+    println!("{redraws:?}");
     std::fs::remove_dir_all(&dir).ok();
 }

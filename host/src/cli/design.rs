@@ -82,10 +82,16 @@ pub fn init(a: &InitArgs) -> Result<()> {
     Ok(())
 }
 
+/// The stages running, by their order on the line: each one's latest
+/// report.
+type Running = BTreeMap<u8, (Stage, String)>;
+
 /// The live progress line on a terminal: the latest report of each stage
-/// running, redrawn at most every 0.2 s; stage ends on their own lines.
+/// running, redrawn in place at most every 0.2 s and fitted to the
+/// terminal's width (short stage names, then cut); stage ends on their own
+/// lines.
 struct Display {
-    live: Mutex<(BTreeMap<u8, String>, Option<Instant>)>,
+    live: Mutex<(Running, Option<Instant>)>,
 }
 
 fn stage_key(stage: Stage) -> u8 {
@@ -101,6 +107,39 @@ fn clock(d: Duration) -> String {
     format!("{}:{:02}:{:02}", s / 3600, (s / 60) % 60, s % 60)
 }
 
+/// A stage's name in a narrow progress line.
+fn short_name(stage: Stage) -> &'static str {
+    match stage {
+        Stage::System => "system",
+        Stage::Kinematics => "aero",
+        Stage::Topology => "structure",
+    }
+}
+
+/// Columns the live line may take: the terminal's width less one (a line
+/// that reaches the last column wraps on some terminals, and a wrapped
+/// line is not redrawn in place); 80 if the terminal does not say.
+fn columns() -> usize {
+    terminal_size::terminal_size_of(std::io::stderr())
+        .map_or(80, |(width, _)| usize::from(width.0))
+        .saturating_sub(1)
+        .max(1)
+}
+
+/// `head` then `tail` in at most `width` characters: `head` is cut (and
+/// ends in "…") to keep `tail`, the clock.
+fn fitted(head: &str, tail: &str, width: usize) -> String {
+    let (h, t) = (head.chars().count(), tail.chars().count());
+    if h + t <= width {
+        format!("{head}{tail}")
+    } else if t + 1 >= width {
+        head.chars().chain(tail.chars()).take(width).collect()
+    } else {
+        let kept: String = head.chars().take(width - t - 1).collect();
+        format!("{kept}…{tail}")
+    }
+}
+
 impl Display {
     fn update(&self, p: &Progress) {
         let mut guard = self.live.lock().unwrap_or_else(|e| e.into_inner());
@@ -112,7 +151,7 @@ impl Display {
                 p.cycle, p.stage
             )),
             Event::Started => {
-                live.insert(key, format!("{}: starting", p.stage));
+                live.insert(key, (p.stage, "starting".to_string()));
                 None
             }
             Event::Advanced { done, total, inner } => {
@@ -124,7 +163,7 @@ impl Display {
                     }
                     (Stage::Topology, None) => format!("{done}/{total}"),
                 };
-                live.insert(key, format!("{}: {what}", p.stage));
+                live.insert(key, (p.stage, what));
                 None
             }
             Event::InnerCycle {
@@ -148,13 +187,23 @@ impl Display {
         }
         let due = drawn.is_none_or(|t| t.elapsed() >= Duration::from_millis(200));
         if due && !live.is_empty() {
-            let text: Vec<&str> = live.values().map(String::as_str).collect();
-            eprint!(
-                "\r\x1b[2Kcycle {}: {} [{}]",
-                p.cycle,
-                text.join(" | "),
-                clock(p.elapsed)
-            );
+            let width = columns();
+            let tail = format!(" [{}]", clock(p.elapsed));
+            let head = |name: fn(Stage) -> &'static str| {
+                let text: Vec<String> = live
+                    .values()
+                    .map(|(stage, what)| format!("{}: {what}", name(*stage)))
+                    .collect();
+                format!("cycle {}: {}", p.cycle, text.join(" | "))
+            };
+            let full = head(Stage::name);
+            let head = if full.chars().count() + tail.chars().count() <= width {
+                full
+            } else {
+                head(short_name)
+            };
+            let line = fitted(&head, &tail, width);
+            eprint!("\r\x1b[2K{line}");
             *drawn = Some(Instant::now());
         }
     }
