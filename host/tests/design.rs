@@ -255,11 +255,22 @@ fn coarse_design_converges_writes_everything_and_resumes() {
     assert_eq!(summary["actuator"]["feasible"], true);
     let reference = answer(&dir);
 
-    // A finished run is not started over, and resuming it computes nothing.
-    let again = start(&coarse(), &dir, &RunOptions::default(), &|_| {}).unwrap_err();
-    assert!(matches!(again, DesignError::Exists { .. }), "{again}");
+    // A finished run is not started over: started again with the same
+    // configuration or resumed, it computes nothing and says it had
+    // finished; started with another configuration, it is refused naming
+    // the first differing key.
+    let again = start(&coarse(), &dir, &RunOptions::default(), &|_| {}).unwrap();
+    assert!(again.finished_before && again.stages_computed == 0);
+    let mut other = coarse();
+    other.design.seed = 2;
+    let e = start(&other, &dir, &RunOptions::default(), &|_| {}).unwrap_err();
+    assert!(
+        matches!(e, DesignError::Exists { ref field, .. } if field == "design.seed"),
+        "{e}"
+    );
     let done = resume(&dir, None, &RunOptions::default(), &|_| {}).unwrap();
     assert_eq!(done.stages_computed, 0);
+    assert!(done.finished_before);
     assert_eq!(done.outcome, run.outcome);
 
     // The same design in pieces.
@@ -383,6 +394,22 @@ fn killed_design_resumes_with_the_same_answer() {
     );
     let summary: serde_json::Value = serde_json::from_slice(&resumed.stdout).unwrap();
     assert_eq!(summary["outcome"], "converged");
+    // Resumed again, the finished run says so instead of "0 stage(s)
+    // computed, 0 reused", and its lock is gone.
+    let finished = fwav(&["design", "--resume", out.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&finished.stdout);
+    assert!(
+        finished.status.success(),
+        "{}",
+        String::from_utf8_lossy(&finished.stderr)
+    );
+    assert!(
+        stdout.contains("converged in cycle")
+            && stdout.contains("the run had already finished: nothing computed")
+            && !stdout.contains("0 stage(s) computed"),
+        "{stdout}"
+    );
+    assert!(!out.join("fwav.lock").exists());
     let after = RunState::load(&out).unwrap();
     assert_eq!(run_of(&after, 1, Stage::System), Some(1));
     for c in &before.cycles {
