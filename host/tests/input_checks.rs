@@ -1,0 +1,124 @@
+//! Values that used to fail late, hang or report nonsense as success, as a
+//! user meets them: `fwav aero2d` run as a process on real files, and what
+//! it prints checked.
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+use std::time::{Duration, Instant};
+
+fn fwav(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_fwav"))
+        .args(args)
+        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+        .output()
+        .expect("the fwav binary runs")
+}
+
+/// A fresh scratch directory for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("fwav-input-{name}-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// `--section naca9999` and a three-point section file used to exit 0
+/// with CL 5.4e7, CT -3.3e8 and efficiency -35: both are refused before a
+/// step, saying why and what to do.
+#[test]
+fn aero2d_refuses_sections_the_panel_method_cannot_take() {
+    let out = fwav(&["aero2d", "--section", "naca9999"]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}{}", text(&out.stdout));
+    assert!(
+        stderr.contains("naca9999") && stderr.contains("99% thick") && stderr.contains("50%"),
+        "{stderr}"
+    );
+    assert!(out.stdout.is_empty(), "{}", text(&out.stdout));
+
+    let dir = scratch("three-points");
+    let file = dir.join("triangle.dat");
+    std::fs::write(&file, "0 0\n0.5 0.1\n1 0\n").unwrap();
+    let out = fwav(&["aero2d", "--section", file.to_str().unwrap()]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}{}", text(&out.stdout));
+    assert!(
+        stderr.contains("triangle.dat")
+            && stderr.contains("3 points")
+            && stderr.contains("at least 20"),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `--plunge-amplitude 0` used to print "efficiency NaN": a section that
+/// does not move has no input power, and its efficiency is undefined.
+#[test]
+fn aero2d_without_input_power_says_efficiency_is_undefined() {
+    let out = fwav(&["aero2d", "--plunge-amplitude", "0", "--cycles", "2"]);
+    let stdout = text(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(stdout.contains("undefined (no input power)"), "{stdout}");
+    assert!(
+        !stdout.contains("NaN") && !stdout.contains("inf"),
+        "{stdout}"
+    );
+
+    let out = fwav(&[
+        "aero2d",
+        "--plunge-amplitude",
+        "0",
+        "--cycles",
+        "2",
+        "--json",
+    ]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(
+        v["efficiency"].is_null() && v["net_efficiency"].is_null(),
+        "{v}"
+    );
+    assert!(v["garrick"]["efficiency"].is_null(), "{v}");
+}
+
+/// `--reduced-frequency 1e-3` (a period of 3,142 chords, a million
+/// steps) used to run for hours: it is refused at once with the smallest
+/// reduced frequency that fits.
+#[test]
+fn aero2d_refuses_an_endless_case_at_once() {
+    let started = Instant::now();
+    let out = fwav(&["aero2d", "--reduced-frequency", "1e-3"]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("1047198 time steps") && stderr.contains("at least 0.052"),
+        "{stderr}"
+    );
+    // Refused before any step (the run itself would take hours).
+    assert!(started.elapsed() < Duration::from_secs(30));
+}
+
+/// A result whose last two cycles disagree is printed, marked as a
+/// warning, and the exit status is 2, not 0.
+#[test]
+fn aero2d_marks_a_result_that_is_not_periodic() {
+    let out = fwav(&["aero2d", "--section", "naca9912", "--cycles", "2"]);
+    let (stdout, stderr) = (text(&out.stdout), text(&out.stderr));
+    assert_eq!(out.status.code(), Some(2), "{stdout}{stderr}");
+    assert!(stdout.contains("last cycle: CL"), "{stdout}");
+    assert!(
+        stderr.starts_with("warning: the result is not periodic") && stderr.contains("--cycles"),
+        "{stderr}"
+    );
+    let out = fwav(&["aero2d", "--section", "naca9912", "--cycles", "2", "--json"]);
+    assert_eq!(out.status.code(), Some(2));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["periodic"], false);
+    assert_eq!(v["warnings"].as_array().map(Vec::len), Some(1), "{v}");
+    // Enough cycles make it periodic: no warning, exit 0.
+    let out = fwav(&["aero2d", "--section", "naca9912", "--cycles", "8"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+}
