@@ -1,6 +1,6 @@
 //! Values that used to fail late, hang or report nonsense as success, as a
-//! user meets them: `fwav aero2d` run as a process on real files, and what
-//! it prints checked.
+//! user meets them: `fwav aero2d` and `fwav design` run as processes on
+//! real files, and what they print and leave behind checked.
 
 use std::path::PathBuf;
 use std::process::{Command, Output};
@@ -25,6 +25,9 @@ fn scratch(name: &str) -> PathBuf {
 fn text(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()
 }
+
+/// The coarse test configuration.
+const COARSE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../configs/coarse.toml");
 
 /// `--section naca9999` and a three-point section file used to exit 0
 /// with CL 5.4e7, CT -3.3e8 and efficiency -35: both are refused before a
@@ -121,4 +124,68 @@ fn aero2d_marks_a_result_that_is_not_periodic() {
     // Enough cycles make it periodic: no warning, exit 0.
     let out = fwav(&["aero2d", "--section", "naca9912", "--cycles", "8"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+}
+
+/// Values inside the old ranges that could not run — `amplitude_deg =
+/// 0`, `mass_fraction = 0.01` (Newton failed after 76 s), `sample_every`
+/// beyond the steps of a period (failed after 78 s), a frequency whose 2D
+/// analyses take tens of thousands of steps, a fluid as dense as water —
+/// are refused by the configuration check, naming the keys, before the
+/// run directory exists.
+#[test]
+fn design_refuses_values_that_cannot_run_before_writing_anything() {
+    // (text of configs/coarse.toml, replaced by, the error expected)
+    let cases = [
+        (
+            "[wing]\n",
+            "[kinematics]\namplitude_deg = 0\n[wing]\n",
+            "kinematics.amplitude_deg = 0 is outside (0, 80] deg",
+        ),
+        (
+            "mass_fraction = 0.7",
+            "mass_fraction = 0.01",
+            "topology.mass_fraction = 0.01 is outside [0.2, 1]",
+        ),
+        (
+            "simp_iterations = 30",
+            "simp_iterations = 30\nsample_every = 30",
+            "topology.sample_every = 30 is more than analysis.steps_per_cycle = 20",
+        ),
+        // Each 2D analysis of 26,667 steps: failed after 156 s.
+        (
+            "[wing]\n",
+            "[kinematics]\nfrequency_hz = 0.5\n[wing]\n",
+            "kinematics.frequency_hz = 0.5 Hz at flight.speed_m_s = 3",
+        ),
+        // Water, not air: the wing's tip swung further than its span.
+        (
+            "[wing]\n",
+            "[flight]\ndensity_kg_m3 = 1000\n[wing]\n",
+            "flight.density_kg_m3 = 1000 is outside [0.01, 5] kg/m^3",
+        ),
+    ];
+    for (i, (from, to, expected)) in cases.iter().enumerate() {
+        let dir = scratch(&format!("design-{i}"));
+        let config = dir.join("fwav.toml");
+        let coarse = std::fs::read_to_string(COARSE).unwrap();
+        assert!(coarse.contains(from), "{from}");
+        std::fs::write(&config, coarse.replacen(from, to, 1)).unwrap();
+        let out_dir = dir.join("run");
+        let out = fwav(&[
+            "design",
+            "--quiet",
+            "--config",
+            config.to_str().unwrap(),
+            "--out",
+            out_dir.to_str().unwrap(),
+        ]);
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{expected}: {stderr}");
+        assert!(stderr.contains(expected), "{expected}: {stderr}");
+        assert!(
+            !out_dir.exists(),
+            "{expected}: the run directory was created"
+        );
+        std::fs::remove_dir_all(&dir).ok();
+    }
 }
