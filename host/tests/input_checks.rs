@@ -3,7 +3,7 @@
 //! real files, and what they print and leave behind checked.
 
 use std::path::PathBuf;
-use std::process::{Command, Output};
+use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
 fn fwav(args: &[&str]) -> Output {
@@ -188,4 +188,80 @@ fn design_refuses_values_that_cannot_run_before_writing_anything() {
         );
         std::fs::remove_dir_all(&dir).ok();
     }
+}
+
+/// A 400 x 200 mesh used to start without a word about its 4+ GB and
+/// hours: the estimate is printed and, without `--yes` and a terminal, the
+/// run is refused before anything is written.
+#[test]
+fn design_of_a_huge_mesh_prints_its_cost_and_needs_yes() {
+    let dir = scratch("huge");
+    let config = dir.join("huge.toml");
+    std::fs::write(
+        &config,
+        "[wing]\nspan_elements = 400\nchord_elements = 200\n",
+    )
+    .unwrap();
+    let out_dir = dir.join("run");
+    let out = fwav(&[
+        "design",
+        "--quiet",
+        "--config",
+        config.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("80000 shell elements")
+            && stderr.contains("GB")
+            && stderr.contains("hours")
+            && stderr.contains("--yes"),
+        "{stderr}"
+    );
+    assert!(!out_dir.exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// With `--yes` a run far beyond the default prints its estimate and
+/// starts (stopped here as soon as its directory is written).
+#[test]
+fn design_with_yes_starts_a_costly_run() {
+    let dir = scratch("yes");
+    let config = dir.join("long.toml");
+    // 27,040 elements and 20 cycles of analysis: 32 times the default's
+    // time, under its memory.
+    std::fs::write(
+        &config,
+        "[wing]\nspan_elements = 260\nchord_elements = 104\n[analysis]\ncycles = 20\n",
+    )
+    .unwrap();
+    let out_dir = dir.join("run");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_fwav"))
+        .args(["design", "--quiet", "--yes", "--config"])
+        .arg(&config)
+        .arg("--out")
+        .arg(&out_dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let started = Instant::now();
+    while !out_dir.join("state.json").exists() && started.elapsed() < Duration::from_secs(60) {
+        if child.try_wait().unwrap().is_some() {
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    child.kill().ok();
+    let out = child.wait_with_output().unwrap();
+    let stderr = text(&out.stderr);
+    assert!(out_dir.join("state.json").exists(), "{stderr}");
+    assert!(
+        stderr.contains("27040 shell elements") && stderr.contains("times the built-in"),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
 }

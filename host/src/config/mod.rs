@@ -27,6 +27,7 @@
 //!   declarations.
 //! - [`template`]: the commented file (`fwav init`, a run's
 //!   `config.toml`).
+//! - [`cost`]: a design run's memory and time, estimated before it starts.
 //!
 //! This room sits above the solvers: it may import [`crate::aeroelastic`],
 //! [`crate::shell`], [`crate::discipline`], [`crate::topology`] and
@@ -35,6 +36,7 @@
 
 pub mod actuator;
 pub mod analysis;
+pub mod cost;
 pub mod design;
 pub mod flight;
 pub mod kinematics;
