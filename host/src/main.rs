@@ -1,5 +1,6 @@
 //! `fwav`: the command-line program. Parses arguments, calls the library,
-//! prints. Exit status: 0 success, 1 the input is refused, 2 usage error.
+//! prints. Exit status: 0 success, 1 the input is refused, 2 usage error
+//! or results printed with a warning (`warning: ...` on standard error).
 
 #![warn(clippy::too_many_lines)]
 
@@ -193,6 +194,10 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        Err(e) if e.is::<cli::aero::Doubtful>() => {
+            eprintln!("warning: {e}");
+            ExitCode::from(2)
+        }
         Err(e) => {
             eprintln!("error: {e:#}");
             ExitCode::from(1)

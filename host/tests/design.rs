@@ -516,7 +516,7 @@ fn configuration_errors_name_the_field() {
         (
             "[kinematics]\namplitude_deg = 100.0\n",
             "kinematics.amplitude_deg",
-            "[0, 80]",
+            "(0, 80]",
         ),
         ("[mdois]\ntolerance = 1\n", "tolerance", "unknown field"),
     ] {

@@ -30,6 +30,48 @@ const MIN_CAMBER_STATIONS: usize = 21;
 /// high reduced frequencies.
 const MIN_STEPS_PER_CYCLE: f64 = 100.0;
 
+/// Most time steps a case may take. The cost of a step grows with the
+/// wake, so a run's time grows faster than its steps: 1,047 steps (the
+/// default 5 cycles at k = 1) took 0.7 s and 10,472 (k = 0.1) 32 s in
+/// the dev profile on two busy cores; k = 0.001 (a period of 3,142
+/// chords) would take a million steps and hours.
+pub const MAX_STEPS: usize = 20_000;
+
+/// Thickest NACA section the panel method takes, chords. Measured on
+/// NACA 00TT plunging at h = 0.05, k = 1 (5 cycles, 160 panels): up to
+/// 0052 the mean CT falls smoothly with thickness (0.0092 at 0012, 0.0047
+/// at 0050, 0.0043 at 0052) and the pressure lift agrees with the
+/// vortex-impulse lift to 0.005; at 0055 they differ by 7 (CT swings to
+/// -2.3 within the cycle) and from 0058 on the solution blows up (CL
+/// 1e6 to 1e9, the wake scattered hundreds of chords).
+pub const MAX_NACA_THICKNESS: f64 = 0.5;
+
+/// Fewest points a section file must give the panel method. NACA 0012
+/// plunging at h = 0.05, k = 1: mean CT -0.027 with 4 panels (the wrong
+/// sign), 39% below the 160-panel value with 10, 9% with 20, 4% with 40;
+/// three points (a triangle) blew up (CL -9e6).
+pub const MIN_SECTION_POINTS: usize = 20;
+
+/// How far a free vortex may be from the region the section sweeps, in
+/// chords per chord of (1 + plunge amplitude), before the solution is
+/// taken as blown up. In the converged cases of the validation and of
+/// `fwav aero2d`'s range the wake stays within 11 chords of the path (h
+/// = 2, k = 2 with leading-edge shedding: 26 chords upstream, within 60);
+/// in the blown-up ones it scattered 150 to 2,200 chords.
+pub const WAKE_REACH_CHORDS: f64 = 20.0;
+
+/// Largest change of the mean CT between the last two cycles, relative
+/// to the larger of the mean and the CT's swing over the last cycle, for
+/// which a result is reported as periodic. The cases above change by at
+/// most 5% (h = 2, k = 2 with leading-edge shedding; a NACA 9912 with its
+/// large steady lift 3.8%).
+pub const PERIODIC_CHANGE: f64 = 0.1;
+
+/// Input power coefficient below which a section is taken as doing no
+/// work (its efficiency is undefined): a section that does not move has
+/// exactly zero; a plunge of 1e-4 chords at k = 1 still has about 1e-8.
+const NO_INPUT_POWER: f64 = 1e-12;
+
 /// The section and, with it, the solver.
 #[derive(Clone, Debug, PartialEq)]
 pub enum SectionModel {
@@ -69,6 +111,88 @@ pub enum CaseError {
     /// Leading-edge vortex shedding asked of the panel method.
     #[error("leading-edge vortex shedding (a critical LESP) applies to the thin-line model only")]
     LespOnThick,
+    /// A NACA section thicker than the panel method can take (the
+    /// message leaves the name to the caller, who gave it).
+    #[error(
+        "{thickness_percent}% thick; the panel method takes NACA sections up to \
+         {max_percent}% (thicker ones blow up); choose a thinner section"
+    )]
+    TooThick {
+        /// The name given.
+        name: String,
+        /// Its thickness, per cent of the chord.
+        thickness_percent: f64,
+        /// The thickest allowed, per cent of the chord.
+        max_percent: f64,
+    },
+    /// A section file with too few points to resolve the section (the
+    /// message leaves the file to the caller, who gave it).
+    #[error(
+        "{got} points; the panel method needs at least {min} to resolve a section \
+         (with fewer its thrust is wrong, with 3 it blows up): give more points"
+    )]
+    TooFewPoints {
+        /// The file.
+        path: String,
+        /// Points in it.
+        got: usize,
+        /// The fewest allowed.
+        min: usize,
+    },
+    /// A case whose periods are so long that it would take too many steps.
+    #[error(
+        "reduced frequency {reduced_frequency}: a period is {period:.0} chords travelled, so \
+         {cycles} cycles take {steps} time steps of {dt} chords (at most {max} are allowed, \
+         a run's time growing faster than its steps); use a reduced frequency of at least \
+         {min_reduced_frequency:.3} or fewer cycles"
+    )]
+    TooManySteps {
+        /// The reduced frequency.
+        reduced_frequency: f64,
+        /// The period, chords travelled.
+        period: f64,
+        /// Cycles asked.
+        cycles: u32,
+        /// The time step, chords travelled.
+        dt: f64,
+        /// Steps the case would take.
+        steps: usize,
+        /// The most allowed ([`MAX_STEPS`]).
+        max: usize,
+        /// The smallest reduced frequency that fits for these cycles.
+        min_reduced_frequency: f64,
+    },
+    /// The solution stopped being finite.
+    #[error(
+        "the solution diverged: {quantity} is not finite at t = {time:.3} chords travelled; \
+         the section or its motion is beyond what the model can take (try a smaller \
+         amplitude, a thinner or smoother section, or more section points)"
+    )]
+    NonFinite {
+        /// The load that went non-finite.
+        quantity: &'static str,
+        /// When, chords travelled.
+        time: f64,
+    },
+    /// A wake vortex far outside the region the flow can reach: the
+    /// solution blew up.
+    #[error(
+        "the solution blew up: a wake vortex reached ({x:.0}, {y:.0}) chords, {distance:.0} \
+         chords from the region the section sweeps (the domain of validity reaches \
+         {reach:.0}); its loads are not reported. The section or its motion is beyond what \
+         the model can take: try a smaller amplitude, a thinner or smoother section, or more \
+         section points"
+    )]
+    WakeLeftDomain {
+        /// The vortex's position, chords.
+        x: f64,
+        /// The vortex's position, chords.
+        y: f64,
+        /// Its distance from the swept region, chords.
+        distance: f64,
+        /// How far a vortex may be, chords.
+        reach: f64,
+    },
 }
 
 impl SectionModel {
@@ -80,6 +204,13 @@ impl SectionModel {
             return Ok(Self::Flat);
         }
         let points = match name.parse::<Naca4>() {
+            Ok(naca) if naca.thickness > MAX_NACA_THICKNESS => {
+                return Err(CaseError::TooThick {
+                    name: name.to_string(),
+                    thickness_percent: 100.0 * naca.thickness,
+                    max_percent: 100.0 * MAX_NACA_THICKNESS,
+                })
+            }
             Ok(naca) => naca.points(DEFAULT_PANELS, TrailingEdge::Closed)?,
             Err(naca) => {
                 let path = Path::new(name);
@@ -89,7 +220,15 @@ impl SectionModel {
                         naca,
                     });
                 }
-                read_points(path)?.points
+                let points = read_points(path)?.points;
+                if points.len() < MIN_SECTION_POINTS {
+                    return Err(CaseError::TooFewPoints {
+                        path: name.to_string(),
+                        got: points.len(),
+                        min: MIN_SECTION_POINTS,
+                    });
+                }
+                points
             }
         };
         Ok(Self::Thick(SectionShape::new(&points)?))
@@ -129,8 +268,6 @@ pub struct CaseMeans {
     pub ct: f64,
     /// Mean input power coefficient.
     pub cp: f64,
-    /// Propulsive efficiency `CT / CP`.
-    pub efficiency: f64,
     /// Mean skin-friction drag coefficient.
     pub cd_friction: f64,
     /// Mean lift coefficient.
@@ -138,17 +275,32 @@ pub struct CaseMeans {
     /// Change of the mean CT from the period before, relative to the last
     /// period's (how periodic the answer is).
     pub periodicity: f64,
+    /// The same change relative to the larger of the mean CT's size and
+    /// the CT's swing over the last period (a near-zero mean CT does not
+    /// magnify it); above [`PERIODIC_CHANGE`] the result is not periodic.
+    pub change_of_swing: f64,
 }
 
 impl CaseMeans {
+    /// Propulsive efficiency `CT / CP`; `None` (undefined) when the
+    /// section does no work (no input power).
+    pub fn efficiency(&self) -> Option<f64> {
+        (self.cp.abs() > NO_INPUT_POWER).then(|| self.ct / self.cp)
+    }
+
     /// Thrust net of the skin-friction estimate.
     pub fn net_ct(&self) -> f64 {
         self.ct - self.cd_friction
     }
 
-    /// Net thrust over input power.
-    pub fn net_efficiency(&self) -> f64 {
-        self.net_ct() / self.cp
+    /// Net thrust over input power; `None` without input power.
+    pub fn net_efficiency(&self) -> Option<f64> {
+        (self.cp.abs() > NO_INPUT_POWER).then(|| self.net_ct() / self.cp)
+    }
+
+    /// Whether the last two periods agree ([`PERIODIC_CHANGE`]).
+    pub fn is_periodic(&self) -> bool {
+        self.change_of_swing <= PERIODIC_CHANGE
     }
 }
 
@@ -204,11 +356,97 @@ impl Case {
         rigid_plunge.then(|| garrick_plunge(m.reduced_frequency, m.plunge_amplitude))
     }
 
-    /// Runs the case with the solver its section chooses.
+    /// The time steps the case takes.
+    pub fn steps(&self) -> usize {
+        let s = self.settings();
+        // Saturates: an endless case (k = 0) counts usize::MAX steps.
+        (s.duration / s.dt).round() as usize
+    }
+
+    /// Runs the case with the solver its section chooses, after checking
+    /// its work is bounded ([`MAX_STEPS`]); a run whose loads are not
+    /// finite or whose wake left the domain of validity
+    /// ([`WAKE_REACH_CHORDS`]) is an error, never a result.
     pub fn run(&self) -> Result<CaseRun, CaseError> {
-        match &self.section {
+        self.check_work()?;
+        let run = match &self.section {
             SectionModel::Flat => self.run_thin(),
             SectionModel::Thick(shape) => self.run_thick(shape),
+        }?;
+        self.check_result(&run)?;
+        Ok(run)
+    }
+
+    /// Refuses a case of more than [`MAX_STEPS`] steps (a reduced
+    /// frequency so small that a period is thousands of chords), with the
+    /// smallest reduced frequency that fits.
+    pub fn check_work(&self) -> Result<(), CaseError> {
+        let steps = self.steps();
+        if steps <= MAX_STEPS {
+            return Ok(());
+        }
+        let default_dt = Settings::default().dt;
+        Err(CaseError::TooManySteps {
+            reduced_frequency: self.motion.reduced_frequency,
+            period: self.period(),
+            cycles: self.cycles,
+            dt: self.settings().dt,
+            steps,
+            max: MAX_STEPS,
+            min_reduced_frequency: f64::from(self.cycles) * PI / (MAX_STEPS as f64 * default_dt),
+        })
+    }
+
+    /// Refuses a run whose loads are not finite, or one with a free vortex
+    /// farther than the reach from the region the section sweeps (the
+    /// wake travels from the section, `x` in [0, 1], to one chord past the
+    /// distance flown; plunge within `+-h0`).
+    fn check_result(&self, run: &CaseRun) -> Result<(), CaseError> {
+        let h = &run.history;
+        for (quantity, values) in [("CL", &h.cl), ("CT", &h.ct), ("CP", &h.cp)] {
+            if let Some(i) = values.iter().position(|v| !v.is_finite()) {
+                let time = h.time.get(i).copied().unwrap_or(f64::NAN);
+                return Err(CaseError::NonFinite { quantity, time });
+            }
+        }
+        let m = run.means();
+        for (quantity, value) in [
+            ("the mean CL", m.cl),
+            ("the mean CT", m.ct),
+            ("the mean CP", m.cp),
+        ] {
+            if !value.is_finite() {
+                let time = h.time.last().copied().unwrap_or(0.0);
+                return Err(CaseError::NonFinite { quantity, time });
+            }
+        }
+        let h0 = self.motion.plunge_amplitude.abs();
+        let reach = WAKE_REACH_CHORDS * (1.0 + h0);
+        let downstream = self.settings().duration + 1.0;
+        let distance = |v: &FreeVortex| {
+            let dx = (-v.x).max(v.x - downstream).max(0.0);
+            let dy = (v.y.abs() - h0).max(0.0);
+            // A vortex at NaN is infinitely far.
+            let d = dx.hypot(dy);
+            if d.is_nan() {
+                f64::INFINITY
+            } else {
+                d
+            }
+        };
+        let farthest = run
+            .vortices
+            .iter()
+            .map(|v| (distance(v), v))
+            .max_by(|a, b| a.0.total_cmp(&b.0));
+        match farthest {
+            Some((d, v)) if d > reach => Err(CaseError::WakeLeftDomain {
+                x: v.x,
+                y: v.y,
+                distance: d,
+                reach,
+            }),
+            _ => Ok(()),
         }
     }
 
@@ -289,7 +527,7 @@ impl CaseRun {
     /// the last sample).
     pub fn means(&self) -> CaseMeans {
         let (history, period) = (&self.history, self.period);
-        let (ct, cp, efficiency) = cycle_means(history, period, 1);
+        let (ct, cp, _) = cycle_means(history, period, 1);
         let steps_per_period = (period / self.dt).round() as usize;
         let end_previous = history
             .time
@@ -297,13 +535,154 @@ impl CaseRun {
             .checked_sub(steps_per_period + 1)
             .map_or(0.0, |i| history.time[i]);
         let (ct_prev, _, _) = cycle_means_until(history, period, 1, end_previous);
+        let last = &history.ct[history.ct.len().saturating_sub(steps_per_period)..];
+        let swing = last.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+            - last.iter().copied().fold(f64::INFINITY, f64::min);
+        let change = (ct - ct_prev).abs();
         CaseMeans {
             ct,
             cp,
-            efficiency,
             cd_friction: cycle_mean_of(history, &history.cd_friction, period, 1),
             cl: cycle_mean_of(history, &history.cl, period, 1),
             periodicity: (ct - ct_prev) / ct.abs().max(1e-12),
+            change_of_swing: if change == 0.0 {
+                0.0
+            } else {
+                change / ct.abs().max(swing)
+            },
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn plunge(section: SectionModel, h0: f64, k: f64) -> Case {
+        Case {
+            section,
+            motion: Motion {
+                reduced_frequency: k,
+                plunge_amplitude: h0,
+                mean_pitch: 0.0,
+                pitch_amplitude: 0.0,
+                pitch_phase: 0.0,
+                pivot: 0.25,
+            },
+            cycles: 5,
+            lesp_critical: None,
+            reynolds: 15_000.0,
+            deformation: None,
+        }
+    }
+
+    /// Sections the panel method cannot take are refused before any
+    /// step, saying why; the thickest allowed NACA section is taken.
+    #[test]
+    fn impossible_sections_are_refused_up_front() {
+        assert!(matches!(
+            SectionModel::named("naca9999"),
+            Err(CaseError::TooThick { thickness_percent, .. }) if thickness_percent == 99.0
+        ));
+        assert!(matches!(
+            SectionModel::named("naca0051"),
+            Err(CaseError::TooThick { .. })
+        ));
+        assert!(SectionModel::named("naca0050").is_ok());
+        let path = std::env::temp_dir().join(format!("fwav-case-{}.dat", std::process::id()));
+        let contour = |n: usize| -> String {
+            (0..n)
+                .map(|i| {
+                    let t = 2.0 * PI * i as f64 / n as f64;
+                    format!("{} {}\n", 0.5 + 0.5 * t.cos(), 0.06 * t.sin())
+                })
+                .collect()
+        };
+        std::fs::write(&path, contour(MIN_SECTION_POINTS - 1)).unwrap();
+        let e = SectionModel::named(path.to_str().unwrap()).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                CaseError::TooFewPoints {
+                    got: 19,
+                    min: 20,
+                    ..
+                }
+            ),
+            "{e}"
+        );
+        std::fs::write(&path, contour(MIN_SECTION_POINTS)).unwrap();
+        assert!(SectionModel::named(path.to_str().unwrap()).is_ok());
+        std::fs::remove_file(&path).ok();
+    }
+
+    /// A reduced frequency so low that a period is thousands of chords is
+    /// refused with the smallest one that fits, before any step.
+    #[test]
+    fn endless_cases_are_refused_with_the_reduced_frequency_that_fits() {
+        let e = plunge(SectionModel::Flat, 0.05, 1e-3).run().unwrap_err();
+        let CaseError::TooManySteps {
+            steps,
+            min_reduced_frequency,
+            ..
+        } = e
+        else {
+            panic!("{e}")
+        };
+        assert!(steps > 1_000_000, "{steps}");
+        let fits = plunge(SectionModel::Flat, 0.05, min_reduced_frequency * 1.001);
+        assert!(fits.steps() <= MAX_STEPS && fits.check_work().is_ok());
+        let zero = plunge(SectionModel::Flat, 0.05, 0.0);
+        assert!(matches!(
+            zero.check_work(),
+            Err(CaseError::TooManySteps { .. })
+        ));
+    }
+
+    /// A thick section beyond the panel method's reach (NACA 0060, built
+    /// without the name's check) blows up; the run is an error naming the
+    /// wake's escape, not a result.
+    #[test]
+    fn a_blown_up_solution_is_an_error() {
+        let shape = SectionShape::new(
+            &"0060"
+                .parse::<Naca4>()
+                .unwrap()
+                .points(DEFAULT_PANELS, TrailingEdge::Closed)
+                .unwrap(),
+        )
+        .unwrap();
+        let e = plunge(SectionModel::Thick(shape), 0.05, 1.0)
+            .run()
+            .unwrap_err();
+        assert!(
+            matches!(e, CaseError::WakeLeftDomain { distance, reach, .. } if distance > reach),
+            "{e}"
+        );
+        assert!(e.to_string().contains("blew up"), "{e}");
+    }
+
+    /// Non-finite loads are an error naming the load and the time.
+    #[test]
+    fn non_finite_loads_are_an_error() {
+        let case = plunge(SectionModel::Flat, 0.05, 1.0);
+        let mut run = case.run().unwrap();
+        run.history.cl[7] = f64::NAN;
+        let e = case.check_result(&run).unwrap_err();
+        assert!(
+            matches!(e, CaseError::NonFinite { quantity: "CL", time } if time == run.history.time[7]),
+            "{e}"
+        );
+    }
+
+    /// A section that does not move has no input power: its efficiency
+    /// is undefined, not NaN; a plunging one has one, and is periodic.
+    #[test]
+    fn efficiency_without_input_power_is_undefined() {
+        let still = plunge(SectionModel::Flat, 0.0, 1.0).run().unwrap().means();
+        assert_eq!((still.efficiency(), still.net_efficiency()), (None, None));
+        let moving = plunge(SectionModel::Flat, 0.05, 1.0).run().unwrap().means();
+        assert!(moving.efficiency().is_some_and(|e| e > 0.0 && e < 1.0));
+        assert!(moving.is_periodic(), "{moving:?}");
     }
 }

@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
-use fwav::aero2d::case::{Case, SectionModel};
+use fwav::aero2d::case::{Case, SectionModel, PERIODIC_CHANGE};
 use fwav::aero2d::friction::FWAV_REYNOLDS;
 use fwav::aero2d::motion::Motion;
 use fwav::aeroelastic::handoff::SectionFile;
@@ -64,6 +64,15 @@ pub struct Aero2dArgs {
     #[arg(long)]
     pub json: bool,
 }
+
+/// The efficiency of a section that does no work.
+const UNDEFINED_EFFICIENCY: &str = "undefined (no input power)";
+
+/// The results were printed, but they are doubtful (not periodic): the
+/// program says why on standard error and exits with status 2.
+#[derive(Debug, thiserror::Error)]
+#[error("{0}")]
+pub struct Doubtful(pub String);
 
 fn check(a: &Aero2dArgs) -> Result<()> {
     if a.section != "flat" && a.lesp_critical.is_some() {
@@ -135,6 +144,7 @@ fn case(a: &Aero2dArgs) -> Result<Case> {
 pub fn run(a: &Aero2dArgs) -> Result<()> {
     check(a)?;
     let case = case(a)?;
+    case.check_work()?;
     let run = case.run().with_context(|| match &a.deformation {
         Some(path) => format!("--section {} --deformation {}", a.section, path.display()),
         None => format!("--section {}", a.section),
@@ -150,6 +160,15 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         .with_context(|| format!("--plot {}", png.display()))?;
     }
     let m = run.means();
+    let doubt = (!m.is_periodic()).then(|| {
+        format!(
+            "the result is not periodic: the mean CT changed by {:.0}% of its size or swing \
+             between the last two cycles (more than {:.0}%); run more --cycles ({} now)",
+            100.0 * m.change_of_swing,
+            100.0 * PERIODIC_CHANGE,
+            a.cycles
+        )
+    });
     let net = m.net_ct();
     let k = a.reduced_frequency;
     let (wake_count, lev_count) = (run.wake_vortices, run.leading_edge_vortices);
@@ -174,14 +193,17 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
             "mean_cd_friction": m.cd_friction,
             "mean_ct_net": net,
             "mean_cp": m.cp,
-            "efficiency": m.efficiency,
+            "efficiency": m.efficiency(),
             "net_efficiency": m.net_efficiency(),
             "mean_ct_change_last_two_cycles": m.periodicity,
+            "periodic": m.is_periodic(),
+            "warnings": doubt.iter().collect::<Vec<_>>(),
             "wake_vortices": wake_count,
             "leading_edge_vortices": lev_count,
             "model": if flat { "thin line (LDVM)" } else { "thick section (panel)" },
         });
         if let Some((gct, gcp, geta)) = garrick {
+            let geta = (gcp != 0.0).then_some(geta);
             v["garrick"] = serde_json::json!({"mean_ct": gct, "mean_cp": gcp, "efficiency": geta});
         }
         println!("{v:#}");
@@ -200,9 +222,13 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
                 ""
             }
         );
+        let efficiency = match (m.efficiency(), m.net_efficiency()) {
+            (Some(eta), Some(net)) => format!("{eta:.3} (net {net:.3})"),
+            _ => UNDEFINED_EFFICIENCY.to_string(),
+        };
         println!(
-            "  last cycle: CL {:.4}  CT {:.5} (net of friction {net:.5}, Re {:.0})  CP {:.5}  efficiency {:.3} (net {:.3})",
-            m.cl, m.ct, a.reynolds, m.cp, m.efficiency, m.net_efficiency()
+            "  last cycle: CL {:.4}  CT {:.5} (net of friction {net:.5}, Re {:.0})  CP {:.5}  efficiency {efficiency}",
+            m.cl, m.ct, a.reynolds, m.cp
         );
         println!(
             "  CT change from the cycle before: {:+.2} %; {} leading-edge vortices shed",
@@ -210,8 +236,16 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
             lev_count
         );
         if let Some((gct, gcp, geta)) = garrick {
-            println!("  Garrick (1936): CT {gct:.5}  CP {gcp:.5}  efficiency {geta:.3}");
+            let geta = if gcp == 0.0 {
+                UNDEFINED_EFFICIENCY.to_string()
+            } else {
+                format!("{geta:.3}")
+            };
+            println!("  Garrick (1936): CT {gct:.5}  CP {gcp:.5}  efficiency {geta}");
         }
     }
-    Ok(())
+    match doubt {
+        Some(message) => Err(Doubtful(message).into()),
+        None => Ok(()),
+    }
 }

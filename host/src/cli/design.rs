@@ -9,6 +9,7 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use anyhow::{bail, Context, Result};
+use fwav::config::cost::CostEstimate;
 use fwav::config::template::commented_toml;
 use fwav::config::SystemConfig;
 use fwav::mdois::lock::LOCK_FILE;
@@ -44,6 +45,11 @@ pub struct DesignArgs {
     /// The summary as JSON on standard output.
     #[arg(long)]
     pub json: bool,
+    /// Run even if the estimated memory or time is far beyond the
+    /// built-in design's (without it such a run asks on a terminal and is
+    /// refused otherwise).
+    #[arg(long)]
+    pub yes: bool,
 }
 
 /// `fwav init`'s options.
@@ -235,6 +241,7 @@ pub fn run_command(a: &DesignArgs) -> Result<()> {
         }
         None => {
             let config = super::system::read_config(a.config.as_deref())?;
+            confirm_cost(&CostEstimate::of(&config), a.yes)?;
             let replace = Replace {
                 force: a.force,
                 inputs: a.config.iter().cloned().collect(),
@@ -278,6 +285,31 @@ pub fn run_command(a: &DesignArgs) -> Result<()> {
         Some(Outcome::Converged { .. }) | Some(Outcome::CycleCap { .. }) => Ok(()),
         None => bail!("the run stopped before its end"),
     }
+}
+
+/// Lets a run far beyond the built-in design's cost go ahead only with
+/// `--yes` or a "y" typed on a terminal; prints the estimate either way.
+fn confirm_cost(estimate: &CostEstimate, yes: bool) -> Result<()> {
+    if !estimate.is_far_beyond_default() {
+        return Ok(());
+    }
+    eprintln!("this design run needs {estimate}");
+    if yes {
+        return Ok(());
+    }
+    let stdin = std::io::stdin();
+    if stdin.is_terminal() {
+        eprint!("run it? [y/N] ");
+        let mut answer = String::new();
+        stdin.read_line(&mut answer)?;
+        if matches!(answer.trim(), "y" | "Y" | "yes") {
+            return Ok(());
+        }
+    }
+    bail!(
+        "not started: the run is far beyond the built-in design's cost; pass --yes to run it \
+         anyway, or choose a coarser mesh ([wing] span_elements, chord_elements)"
+    )
 }
 
 fn print_summary(s: &Summary, dir: &Path) {

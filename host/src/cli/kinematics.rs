@@ -9,7 +9,6 @@ use fwav::aeroelastic::handoff::SectionFile;
 use fwav::aeroelastic::kinematics::FlappingKinematics;
 use fwav::discipline::cache::EvaluationCache;
 use fwav::discipline::kinematic::{optimize, KinematicResult, Weights};
-use fwav::discipline::section::SectionCase;
 use fwav::optimize::nsga2::Nsga2Config;
 
 /// The command's options.
@@ -39,15 +38,7 @@ pub struct KinematicsArgs {
 /// Runs the command.
 pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     let config = super::system::read_config(a.config.as_deref())?;
-    let planform = config.planform();
-    let radius = 0.5 * planform.semi_span;
-    let mut case = SectionCase {
-        chord: planform.chord(radius),
-        radius,
-        flight: config.flight(),
-        lesp_critical: config.design.lesp(),
-        ..SectionCase::fwav_mid_span()
-    };
+    let mut case = config.section_case();
     if let Some(path) = &a.section {
         case.deformation = SectionFile::read(path)?.samples;
     }

@@ -21,8 +21,11 @@ pub const KINEMATICS: Table<FlappingKinematics> = Table {
         Setting {
             key: "amplitude_deg",
             unit: "deg",
-            allowed: Allowed::Real(Interval::closed(0.0, 80.0)),
-            doc: "Flapping amplitude (half the stroke)",
+            allowed: Allowed::Real(Interval::above_up_to(0.0, 80.0)),
+            doc: "Flapping amplitude (half the stroke), above 0: a wing that does not flap \
+                  has no thrust, drive power or efficiency to design with (the run also \
+                  stops at its first aerodynamic discipline if the initial kinematics give no \
+                  net thrust)",
             value: |k| Value::Real(k.amplitude_deg()),
         },
         Setting {

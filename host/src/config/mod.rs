@@ -27,6 +27,7 @@
 //!   declarations.
 //! - [`template`]: the commented file (`fwav init`, a run's
 //!   `config.toml`).
+//! - [`cost`]: a design run's memory and time, estimated before it starts.
 //!
 //! This room sits above the solvers: it may import [`crate::aeroelastic`],
 //! [`crate::shell`], [`crate::discipline`], [`crate::topology`] and
@@ -35,6 +36,7 @@
 
 pub mod actuator;
 pub mod analysis;
+pub mod cost;
 pub mod design;
 pub mod flight;
 pub mod kinematics;
@@ -50,6 +52,7 @@ use crate::aeroelastic::analysis::SystemSettings;
 use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::aeroelastic::model::{FlightCondition, WingModel, WingModelError};
 use crate::discipline::kinematic::DesignSpace;
+use crate::discipline::section::{EvaluationError, SectionCase};
 use crate::shell::material::Layer;
 use crate::shell::wing::Planform;
 
@@ -103,6 +106,52 @@ pub enum ConfigError {
          would be 0 for every design; give at least one a positive weight"
     )]
     NoObjective,
+    /// The structural discipline would sample its load cases less often
+    /// than once a period of the system analysis's pressure history.
+    #[error(
+        "topology.sample_every = {sample_every} is more than analysis.steps_per_cycle = \
+         {steps_per_cycle}: the structural discipline takes one load case every sample_every \
+         steps of the last pressure period, which has steps_per_cycle steps; set \
+         topology.sample_every to at most {steps_per_cycle} (a divisor of it spaces the load \
+         cases evenly) or raise analysis.steps_per_cycle"
+    )]
+    SampleEvery {
+        /// `topology.sample_every`.
+        sample_every: usize,
+        /// `analysis.steps_per_cycle`.
+        steps_per_cycle: usize,
+    },
+    /// A flapping frequency so low for the flight speed and the mid-span
+    /// chord that each 2D analysis of the aerodynamic discipline would
+    /// take too many steps (a period of hundreds of chords).
+    #[error(
+        "{key} = {frequency_hz} Hz at flight.speed_m_s = {speed_m_s}: the mid-span section \
+         ({chord_m} m chord) flaps at reduced frequency {reduced_frequency:.4}, a period of \
+         {period_chords:.0} chords, so each 2D analysis of the aerodynamic discipline would \
+         take {steps} time steps (at most {max}); set {key} to at least \
+         {min_frequency_hz:.2} Hz or lower flight.speed_m_s"
+    )]
+    SectionWork {
+        /// The key of the lowest frequency analysed
+        /// (`kinematics.frequency_hz` or `design.frequency_hz`).
+        key: &'static str,
+        /// That frequency, Hz.
+        frequency_hz: f64,
+        /// `flight.speed_m_s`.
+        speed_m_s: f64,
+        /// The mid-span chord, m.
+        chord_m: f64,
+        /// The reduced frequency `pi f c / U`.
+        reduced_frequency: f64,
+        /// The period, chords travelled.
+        period_chords: f64,
+        /// Steps an analysis would take.
+        steps: usize,
+        /// The most allowed.
+        max: usize,
+        /// The lowest frequency that fits, Hz.
+        min_frequency_hz: f64,
+    },
 }
 
 /// The whole file.
@@ -140,8 +189,9 @@ impl SystemConfig {
 
     /// Checks every key against its declared range, table by table in
     /// the file's order (the first key outside is the error), then the
-    /// keys that must fit together (the planform, the objective's
-    /// weights).
+    /// keys that must fit together (the planform, the objective's weights,
+    /// `topology.sample_every` within `analysis.steps_per_cycle`, the
+    /// section analysis's work at the lowest frequency).
     pub fn check(&self) -> Result<(), ConfigError> {
         wing::WING.check(&self.wing)?;
         kinematics::KINEMATICS.check(&self.kinematics)?;
@@ -149,11 +199,65 @@ impl SystemConfig {
         analysis::ANALYSIS.check(&self.analysis)?;
         design::DESIGN.check(&self.design)?;
         topology::TOPOLOGY.check(&self.topology)?;
+        topology::check_sampling(&self.topology, &self.analysis)?;
         mdois::MDOIS.check(&self.mdois)?;
         actuator::ACTUATOR.check(&self.actuator)?;
         wing::check_planform(&self.wing)?;
         design::check_weights(&self.design)?;
+        self.check_section_work()?;
         Ok(())
+    }
+
+    /// Refuses frequencies whose 2D analyses in the aerodynamic discipline
+    /// would not end: the lower of the initial frequency and the lowest
+    /// frequency level (the discipline analyses both).
+    fn check_section_work(&self) -> Result<(), ConfigError> {
+        let case = self.section_case();
+        let (key, frequency_hz) = if self.kinematics.frequency <= self.design.space.frequency_hz[0]
+        {
+            ("kinematics.frequency_hz", self.kinematics.frequency)
+        } else {
+            (
+                "design.frequency_hz (lowest level)",
+                self.design.space.frequency_hz[0],
+            )
+        };
+        match case.check_work(frequency_hz) {
+            Err(EvaluationError::TooManySteps {
+                reduced_frequency,
+                steps,
+                max,
+                min_frequency_hz,
+                ..
+            }) => Err(ConfigError::SectionWork {
+                key,
+                frequency_hz,
+                speed_m_s: case.flight.speed,
+                chord_m: case.chord,
+                reduced_frequency,
+                period_chords: std::f64::consts::PI / reduced_frequency,
+                steps,
+                max,
+                min_frequency_hz,
+            }),
+            _ => Ok(()),
+        }
+    }
+
+    /// The mid-span section the aerodynamic discipline analyses (chord
+    /// and radius at half the semi-span, the flight condition, the
+    /// critical LESP; rigid until a system analysis gives its
+    /// deformation).
+    pub fn section_case(&self) -> SectionCase {
+        let planform = self.planform();
+        let radius = 0.5 * planform.semi_span;
+        SectionCase {
+            chord: planform.chord(radius),
+            radius,
+            flight: self.flight(),
+            lesp_critical: self.design.lesp(),
+            ..SectionCase::fwav_mid_span()
+        }
     }
 
     /// The planform.

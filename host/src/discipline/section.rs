@@ -23,6 +23,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::aero2d::camber::{CamberError, CamberHistory};
+use crate::aero2d::case::MAX_STEPS;
 use crate::aero2d::ldvm::{
     cycle_mean_of, cycle_means, cycle_means_until, History, Ldvm, Motion, SectionFlapping, Settings,
 };
@@ -109,6 +110,25 @@ pub enum EvaluationError {
     /// The solution is not finite (the solver diverged).
     #[error("the 2D analysis diverged (non-finite {0})")]
     Diverged(&'static str),
+    /// A frequency so low for the section and flight speed that a period
+    /// is hundreds of chords: the analysis would take too many steps.
+    #[error(
+        "{frequency_hz} Hz flaps the section at reduced frequency {reduced_frequency:.4}: \
+         {steps} time steps an analysis (at most {max}); at least {min_frequency_hz:.3} Hz \
+         is needed at this flight speed"
+    )]
+    TooManySteps {
+        /// The flapping frequency, Hz.
+        frequency_hz: f64,
+        /// Its reduced frequency.
+        reduced_frequency: f64,
+        /// Steps the analysis would take.
+        steps: usize,
+        /// The most allowed ([`MAX_STEPS`]).
+        max: usize,
+        /// The lowest frequency that fits.
+        min_frequency_hz: f64,
+    },
 }
 
 impl SectionCase {
@@ -125,6 +145,48 @@ impl SectionCase {
             steps_per_cycle: 100,
             lesp_critical: Some(FWAV_LESP_CRITICAL),
         }
+    }
+
+    /// The reduced frequency `k = pi f c / U` of flapping at
+    /// `frequency_hz`.
+    pub fn reduced_frequency(&self, frequency_hz: f64) -> f64 {
+        std::f64::consts::PI * frequency_hz * self.chord / self.flight.speed
+    }
+
+    /// The LDVM settings of an analysis at reduced frequency `k`:
+    /// `cycles` periods of at least `steps_per_cycle` steps of at most
+    /// 0.015 chords.
+    fn settings(&self, k: f64) -> Settings {
+        let period = std::f64::consts::PI / k;
+        Settings {
+            dt: (period / self.steps_per_cycle as f64).min(Settings::default().dt),
+            duration: self.cycles as f64 * period,
+            reynolds: Some(self.flight.speed * self.chord / AIR_KINEMATIC_VISCOSITY),
+            lesp_critical: self.lesp_critical,
+            ..Settings::default()
+        }
+    }
+
+    /// Refuses a frequency whose analysis would take more than
+    /// [`MAX_STEPS`] time steps (a period of hundreds of chords), with
+    /// the lowest frequency that fits.
+    pub fn check_work(&self, frequency_hz: f64) -> Result<(), EvaluationError> {
+        let k = self.reduced_frequency(frequency_hz);
+        let s = self.settings(k);
+        // Saturates: an endless analysis (k = 0) counts usize::MAX steps.
+        let steps = (s.duration / s.dt).round() as usize;
+        if steps <= MAX_STEPS {
+            return Ok(());
+        }
+        let min_k =
+            self.cycles as f64 * std::f64::consts::PI / (MAX_STEPS as f64 * Settings::default().dt);
+        Err(EvaluationError::TooManySteps {
+            frequency_hz,
+            reduced_frequency: k,
+            steps,
+            max: MAX_STEPS,
+            min_frequency_hz: frequency_hz * min_k / k,
+        })
     }
 
     /// Runs the 2D analysis for `kinematics`.
@@ -153,15 +215,10 @@ impl SectionCase {
                 )));
             }
         }
-        let k = std::f64::consts::PI * kinematics.frequency * self.chord / self.flight.speed;
+        self.check_work(kinematics.frequency)?;
+        let k = self.reduced_frequency(kinematics.frequency);
         let period = std::f64::consts::PI / k;
-        let settings = Settings {
-            dt: (period / self.steps_per_cycle as f64).min(Settings::default().dt),
-            duration: self.cycles as f64 * period,
-            reynolds: Some(self.flight.speed * self.chord / AIR_KINEMATIC_VISCOSITY),
-            lesp_critical: self.lesp_critical,
-            ..Settings::default()
-        };
+        let settings = self.settings(k);
         let flapping = SectionFlapping {
             reduced_frequency: k,
             radius: self.radius / self.chord,

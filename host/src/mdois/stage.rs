@@ -223,15 +223,9 @@ impl Context<'_> {
 
     /// The 2D case of the mid-span section deforming as in `section`.
     fn section_case(&self, section: SectionFile) -> SectionCase {
-        let planform = self.config.planform();
-        let radius = 0.5 * planform.semi_span;
         SectionCase {
-            chord: planform.chord(radius),
-            radius,
-            flight: self.config.flight(),
             deformation: section.samples,
-            lesp_critical: self.config.design.lesp(),
-            ..SectionCase::fwav_mid_span()
+            ..self.config.section_case()
         }
     }
 

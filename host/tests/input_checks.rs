@@ -1,0 +1,267 @@
+//! Values that used to fail late, hang or report nonsense as success, as a
+//! user meets them: `fwav aero2d` and `fwav design` run as processes on
+//! real files, and what they print and leave behind checked.
+
+use std::path::PathBuf;
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+fn fwav(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_fwav"))
+        .args(args)
+        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+        .output()
+        .expect("the fwav binary runs")
+}
+
+/// A fresh scratch directory for one test.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("fwav-input-{name}-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+/// The coarse test configuration.
+const COARSE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../configs/coarse.toml");
+
+/// `--section naca9999` and a three-point section file used to exit 0
+/// with CL 5.4e7, CT -3.3e8 and efficiency -35: both are refused before a
+/// step, saying why and what to do.
+#[test]
+fn aero2d_refuses_sections_the_panel_method_cannot_take() {
+    let out = fwav(&["aero2d", "--section", "naca9999"]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}{}", text(&out.stdout));
+    assert!(
+        stderr.contains("naca9999") && stderr.contains("99% thick") && stderr.contains("50%"),
+        "{stderr}"
+    );
+    assert!(out.stdout.is_empty(), "{}", text(&out.stdout));
+
+    let dir = scratch("three-points");
+    let file = dir.join("triangle.dat");
+    std::fs::write(&file, "0 0\n0.5 0.1\n1 0\n").unwrap();
+    let out = fwav(&["aero2d", "--section", file.to_str().unwrap()]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}{}", text(&out.stdout));
+    assert!(
+        stderr.contains("triangle.dat")
+            && stderr.contains("3 points")
+            && stderr.contains("at least 20"),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `--plunge-amplitude 0` used to print "efficiency NaN": a section that
+/// does not move has no input power, and its efficiency is undefined.
+#[test]
+fn aero2d_without_input_power_says_efficiency_is_undefined() {
+    let out = fwav(&["aero2d", "--plunge-amplitude", "0", "--cycles", "2"]);
+    let stdout = text(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    assert!(stdout.contains("undefined (no input power)"), "{stdout}");
+    assert!(
+        !stdout.contains("NaN") && !stdout.contains("inf"),
+        "{stdout}"
+    );
+
+    let out = fwav(&[
+        "aero2d",
+        "--plunge-amplitude",
+        "0",
+        "--cycles",
+        "2",
+        "--json",
+    ]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(
+        v["efficiency"].is_null() && v["net_efficiency"].is_null(),
+        "{v}"
+    );
+    assert!(v["garrick"]["efficiency"].is_null(), "{v}");
+}
+
+/// `--reduced-frequency 1e-3` (a period of 3,142 chords, a million
+/// steps) used to run for hours: it is refused at once with the smallest
+/// reduced frequency that fits.
+#[test]
+fn aero2d_refuses_an_endless_case_at_once() {
+    let started = Instant::now();
+    let out = fwav(&["aero2d", "--reduced-frequency", "1e-3"]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("1047198 time steps") && stderr.contains("at least 0.052"),
+        "{stderr}"
+    );
+    // Refused before any step (the run itself would take hours).
+    assert!(started.elapsed() < Duration::from_secs(30));
+}
+
+/// A result whose last two cycles disagree is printed, marked as a
+/// warning, and the exit status is 2, not 0.
+#[test]
+fn aero2d_marks_a_result_that_is_not_periodic() {
+    let out = fwav(&["aero2d", "--section", "naca9912", "--cycles", "2"]);
+    let (stdout, stderr) = (text(&out.stdout), text(&out.stderr));
+    assert_eq!(out.status.code(), Some(2), "{stdout}{stderr}");
+    assert!(stdout.contains("last cycle: CL"), "{stdout}");
+    assert!(
+        stderr.starts_with("warning: the result is not periodic") && stderr.contains("--cycles"),
+        "{stderr}"
+    );
+    let out = fwav(&["aero2d", "--section", "naca9912", "--cycles", "2", "--json"]);
+    assert_eq!(out.status.code(), Some(2));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["periodic"], false);
+    assert_eq!(v["warnings"].as_array().map(Vec::len), Some(1), "{v}");
+    // Enough cycles make it periodic: no warning, exit 0.
+    let out = fwav(&["aero2d", "--section", "naca9912", "--cycles", "8"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+}
+
+/// Values inside the old ranges that could not run — `amplitude_deg =
+/// 0`, `mass_fraction = 0.01` (Newton failed after 76 s), `sample_every`
+/// beyond the steps of a period (failed after 78 s), a frequency whose 2D
+/// analyses take tens of thousands of steps, a fluid as dense as water —
+/// are refused by the configuration check, naming the keys, before the
+/// run directory exists.
+#[test]
+fn design_refuses_values_that_cannot_run_before_writing_anything() {
+    // (text of configs/coarse.toml, replaced by, the error expected)
+    let cases = [
+        (
+            "[wing]\n",
+            "[kinematics]\namplitude_deg = 0\n[wing]\n",
+            "kinematics.amplitude_deg = 0 is outside (0, 80] deg",
+        ),
+        (
+            "mass_fraction = 0.7",
+            "mass_fraction = 0.01",
+            "topology.mass_fraction = 0.01 is outside [0.2, 1]",
+        ),
+        (
+            "simp_iterations = 30",
+            "simp_iterations = 30\nsample_every = 30",
+            "topology.sample_every = 30 is more than analysis.steps_per_cycle = 20",
+        ),
+        // Each 2D analysis of 26,667 steps: failed after 156 s.
+        (
+            "[wing]\n",
+            "[kinematics]\nfrequency_hz = 0.5\n[wing]\n",
+            "kinematics.frequency_hz = 0.5 Hz at flight.speed_m_s = 3",
+        ),
+        // Water, not air: the wing's tip swung further than its span.
+        (
+            "[wing]\n",
+            "[flight]\ndensity_kg_m3 = 1000\n[wing]\n",
+            "flight.density_kg_m3 = 1000 is outside [0.01, 5] kg/m^3",
+        ),
+    ];
+    for (i, (from, to, expected)) in cases.iter().enumerate() {
+        let dir = scratch(&format!("design-{i}"));
+        let config = dir.join("fwav.toml");
+        let coarse = std::fs::read_to_string(COARSE).unwrap();
+        assert!(coarse.contains(from), "{from}");
+        std::fs::write(&config, coarse.replacen(from, to, 1)).unwrap();
+        let out_dir = dir.join("run");
+        let out = fwav(&[
+            "design",
+            "--quiet",
+            "--config",
+            config.to_str().unwrap(),
+            "--out",
+            out_dir.to_str().unwrap(),
+        ]);
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{expected}: {stderr}");
+        assert!(stderr.contains(expected), "{expected}: {stderr}");
+        assert!(
+            !out_dir.exists(),
+            "{expected}: the run directory was created"
+        );
+        std::fs::remove_dir_all(&dir).ok();
+    }
+}
+
+/// A 400 x 200 mesh used to start without a word about its 4+ GB and
+/// hours: the estimate is printed and, without `--yes` and a terminal, the
+/// run is refused before anything is written.
+#[test]
+fn design_of_a_huge_mesh_prints_its_cost_and_needs_yes() {
+    let dir = scratch("huge");
+    let config = dir.join("huge.toml");
+    std::fs::write(
+        &config,
+        "[wing]\nspan_elements = 400\nchord_elements = 200\n",
+    )
+    .unwrap();
+    let out_dir = dir.join("run");
+    let out = fwav(&[
+        "design",
+        "--quiet",
+        "--config",
+        config.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("80000 shell elements")
+            && stderr.contains("GB")
+            && stderr.contains("hours")
+            && stderr.contains("--yes"),
+        "{stderr}"
+    );
+    assert!(!out_dir.exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// With `--yes` a run far beyond the default prints its estimate and
+/// starts (stopped here as soon as its directory is written).
+#[test]
+fn design_with_yes_starts_a_costly_run() {
+    let dir = scratch("yes");
+    let config = dir.join("long.toml");
+    // 27,040 elements and 20 cycles of analysis: 32 times the default's
+    // time, under its memory.
+    std::fs::write(
+        &config,
+        "[wing]\nspan_elements = 260\nchord_elements = 104\n[analysis]\ncycles = 20\n",
+    )
+    .unwrap();
+    let out_dir = dir.join("run");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_fwav"))
+        .args(["design", "--quiet", "--yes", "--config"])
+        .arg(&config)
+        .arg("--out")
+        .arg(&out_dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let started = Instant::now();
+    while !out_dir.join("state.json").exists() && started.elapsed() < Duration::from_secs(60) {
+        if child.try_wait().unwrap().is_some() {
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    child.kill().ok();
+    let out = child.wait_with_output().unwrap();
+    let stderr = text(&out.stderr);
+    assert!(out_dir.join("state.json").exists(), "{stderr}");
+    assert!(
+        stderr.contains("27040 shell elements") && stderr.contains("times the built-in"),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
