@@ -99,19 +99,39 @@ pub enum ScenarioError {
     /// A bad value.
     #[error("{0}")]
     Invalid(String),
+    /// A value outside its range (NaN is outside every range).
+    #[error("{key} = {value} is outside {range}")]
+    OutOfRange {
+        /// The key in the scenario file.
+        key: &'static str,
+        /// Its value.
+        value: f64,
+        /// The values allowed, with their unit.
+        range: &'static str,
+    },
 }
+
+/// Longest simulated run, s (about a day of simulation on one core).
+const MAX_DURATION_S: f64 = 1e5;
 
 impl Scenario {
     /// Parses a TOML text.
     pub fn from_toml(text: &str) -> Result<Self, ScenarioError> {
         let s: Self = toml::from_str(text)?;
         // Written so that NaN fails.
-        let ok = s.duration_s > 0.0 && s.duration_s < 1e5 && s.heartbeat_s > 0.0;
-        if !ok {
-            return Err(ScenarioError::Invalid(format!(
-                "duration_s = {} and heartbeat_s = {} must be positive",
-                s.duration_s, s.heartbeat_s
-            )));
+        if !(s.duration_s > 0.0 && s.duration_s <= MAX_DURATION_S) {
+            return Err(ScenarioError::OutOfRange {
+                key: "duration_s",
+                value: s.duration_s,
+                range: "(0, 100000] s",
+            });
+        }
+        if !(s.heartbeat_s > 0.0 && s.heartbeat_s.is_finite()) {
+            return Err(ScenarioError::OutOfRange {
+                key: "heartbeat_s",
+                value: s.heartbeat_s,
+                range: "(0, inf) s",
+            });
         }
         Ok(s)
     }

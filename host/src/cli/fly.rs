@@ -59,7 +59,7 @@ fn status_line(s: &Status) -> String {
         s.running,
         s.active_segment.map_or("-".to_owned(), |i| i.to_string()),
         s.faults,
-        s.last_disarm.map_or("-".to_owned(), |r| format!("{r:?}")),
+        s.last_disarm.map_or("-".to_owned(), |r| r.to_string()),
         s.link.frames_ok,
         s.link.dropped()
     )
