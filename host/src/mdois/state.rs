@@ -174,6 +174,17 @@ impl RunState {
                 message: format!("format {:?}, expected {STATE_FORMAT:?}", state.format),
             });
         }
+        // The driver numbers its invocations 1, 2, ... in order; another
+        // number is not one it wrote (and usize::MAX overflowed the next).
+        if let Some((i, r)) = (1..).zip(&state.runs).find(|(i, r)| r.run != *i) {
+            return Err(DesignError::State {
+                path,
+                message: format!(
+                    "run {i} is numbered {}: the driver numbers its runs 1, 2, ... in order",
+                    r.run
+                ),
+            });
+        }
         Ok(state)
     }
 

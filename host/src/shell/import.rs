@@ -54,6 +54,14 @@ pub enum ImportError {
         /// What.
         message: String,
     },
+    /// A block says it has more entries than the file has lines left.
+    #[error("line {line}: a block of {count} entries runs past the end of the file")]
+    Truncated {
+        /// The block's header line.
+        line: usize,
+        /// The entries it announces.
+        count: usize,
+    },
     /// The mesh itself is bad.
     #[error(transparent)]
     Mesh(#[from] MeshError),
@@ -340,12 +348,26 @@ pub fn gmsh(text: &str, default: Section) -> Result<ImportedMesh, ImportError> {
         let blocks = number(head, 0, row(head).first().ok_or(short(head))?)? as usize;
         Ok((blocks, start + 2))
     };
+    // The line after a block of `count` entries of `per` lines each whose
+    // header is on line `at`, if the file holds them all (a count read as
+    // a huge number is refused, never walked).
+    let block_end = |at: usize, count: usize, per: usize| {
+        count
+            .checked_mul(per)
+            .and_then(|n| n.checked_add(at + 1))
+            .filter(|&end| end <= lines.len())
+            .ok_or(ImportError::Truncated {
+                line: at + 1,
+                count,
+            })
+    };
     let (blocks, mut at) = section("$Nodes")?;
     let mut ids = Vec::new();
     let mut nodes = Vec::new();
     for _ in 0..blocks {
         let head = row(at);
         let count = number(at, 3, head.get(3).ok_or(short(at))?)? as usize;
+        let end = block_end(at, count, 2)?;
         for k in 0..count {
             ids.push(number(
                 at + 1 + k,
@@ -365,7 +387,7 @@ pub fn gmsh(text: &str, default: Section) -> Result<ImportedMesh, ImportError> {
                 number(l, 2, r[2])?,
             ));
         }
-        at += 1 + 2 * count;
+        at = end;
     }
     let index: HashMap<i64, usize> = ids.iter().enumerate().map(|(i, &id)| (id, i)).collect();
     let (blocks, mut at) = section("$Elements")?;
@@ -377,14 +399,16 @@ pub fn gmsh(text: &str, default: Section) -> Result<ImportedMesh, ImportError> {
         }
         let kind = number(at, 2, head[2])? as i64;
         let count = number(at, 3, head[3])? as usize;
-        for k in 0..count {
+        let end = block_end(at, count, 1)?;
+        let (corners, shells) = match kind {
+            2 => (3, count),
+            3 => (4, count),
+            // Not a shell element (points, lines, volumes): skipped.
+            _ => (0, 0),
+        };
+        for k in 0..shells {
             let l = at + 1 + k;
             let r = row(l);
-            let corners = match kind {
-                2 => 3,
-                3 => 4,
-                _ => continue,
-            };
             if r.len() < 1 + corners {
                 return Err(short(l));
             }
@@ -403,7 +427,7 @@ pub fn gmsh(text: &str, default: Section) -> Result<ImportedMesh, ImportError> {
             elements.push(c);
             element_ids.push(number(l, 0, r[0])? as i64);
         }
-        at += 1 + count;
+        at = end;
     }
     let n = elements.len();
     Ok(ImportedMesh {
