@@ -3,6 +3,8 @@
 //! once, without Rust's debug formatting, and names the file, key and
 //! value concerned.
 
+#![cfg(unix)]
+
 use std::os::unix::process::ExitStatusExt as _;
 use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};

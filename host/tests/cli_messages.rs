@@ -3,6 +3,8 @@
 //! once, its causes in order, without Rust's debug formatting, and names
 //! the file, key or value concerned.
 
+#![cfg(unix)]
+
 use std::os::unix::process::ExitStatusExt as _;
 use std::path::PathBuf;
 use std::process::{Command, ExitStatus, Output, Stdio};
