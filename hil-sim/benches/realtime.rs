@@ -9,26 +9,23 @@ use fwav_hil_sim::sim::Simulator;
 use fwav_link::Link;
 use fwav_protocol::Command;
 
-fn flying() -> Link<Simulator> {
+fn flying() -> (Link<Simulator>, u32) {
     let scenario = Scenario::from_toml(include_str!("../scenarios/cruise-11hz.toml"))
         .expect("shipped scenario");
     let profile = scenario.profile().expect("valid profile");
     let mut host = Link::new(Simulator::new(&PlantParams::default()));
     host.handshake().expect("handshake");
-    for command in [
-        Command::UploadProfile(profile),
-        Command::Arm,
-        Command::Start,
-    ] {
-        host.command(command).expect("accepted");
-    }
+    host.command(Command::UploadProfile(profile))
+        .expect("accepted");
+    let session = host.arm().expect("armed");
+    host.command(Command::Start).expect("started");
     for k in 0..20_000 {
         if k % 1000 == 0 {
-            host.request(Command::Ping { nonce: k }).expect("pong"); // heartbeat
+            host.heartbeat(session).expect("acked");
         }
         host.get_mut().step(); // past the 1 s ramp
     }
-    host
+    (host, session)
 }
 
 fn realtime(c: &mut Criterion) {
@@ -36,12 +33,12 @@ fn realtime(c: &mut Criterion) {
         ("with energy ledger (hil-sim run)", true),
         ("without ledger (hil-sim serve)", false),
     ] {
-        let mut host = flying();
+        let (mut host, session) = flying();
         host.get_mut().plant.keep_ledger = ledger;
         let steps = (0.1 / host.get_ref().params().control_dt()) as usize; // 0.1 s simulated
         c.bench_function(&format!("fly 0.1 s simulated, {name}"), |b| {
             b.iter(|| {
-                host.request(Command::Ping { nonce: 0 }).expect("pong"); // heartbeat
+                host.heartbeat(session).expect("acked");
                 let sim = host.get_mut();
                 for _ in 0..steps {
                     std::hint::black_box(sim.step());

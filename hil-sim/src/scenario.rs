@@ -54,6 +54,24 @@ pub enum FaultKind {
     SupplyDrop,
 }
 
+impl FaultKind {
+    /// The name in a scenario file.
+    pub const fn name(self) -> &'static str {
+        match self {
+            FaultKind::LinkSilence => "link_silence",
+            FaultKind::EncoderLoss => "encoder_loss",
+            FaultKind::Stall => "stall",
+            FaultKind::SupplyDrop => "supply_drop",
+        }
+    }
+}
+
+impl std::fmt::Display for FaultKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 /// A scripted run.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -96,44 +114,87 @@ pub enum ScenarioError {
     /// none.
     #[error("the simulated flight controller: {0}")]
     Link(#[from] LinkError),
-    /// A bad value.
-    #[error("{0}")]
-    Invalid(String),
-    /// A value outside its range (NaN is outside every range).
-    #[error("{key} = {value} is outside {range}")]
-    OutOfRange {
-        /// The key in the scenario file.
-        key: &'static str,
-        /// Its value.
-        value: f64,
-        /// The values allowed, with their unit.
-        range: &'static str,
+    /// The run's length is not a positive number of seconds below the cap.
+    #[error("duration_s = {duration_s} is outside 0 < duration_s < {max} s")]
+    Duration {
+        /// The value given.
+        duration_s: f64,
+        /// The cap, s.
+        max: f64,
+    },
+    /// The heartbeat period is not a positive, finite number of seconds.
+    #[error("heartbeat_s = {heartbeat_s} is not a positive, finite number of seconds")]
+    Heartbeat {
+        /// The value given.
+        heartbeat_s: f64,
+    },
+    /// A fault whose time is not inside the run never fires.
+    #[error("faults[{index}] ({kind}): at_s = {at_s} is outside the run: a fault fires at 0 <= at_s < duration_s = {duration_s} s")]
+    FaultTime {
+        /// Its position in `faults`, from 0.
+        index: usize,
+        /// Its kind.
+        kind: FaultKind,
+        /// The time given, s.
+        at_s: f64,
+        /// The run's length, s.
+        duration_s: f64,
+    },
+    /// A supply drop without the voltage it drops to, or with one that is
+    /// not a positive number of volts.
+    #[error("faults[{index}] (supply_drop): battery_v = {} must be given as the battery's voltage after the drop, a positive number of volts", battery_v.map_or("(missing)".to_owned(), |v| v.to_string()))]
+    Battery {
+        /// Its position in `faults`, from 0.
+        index: usize,
+        /// The voltage given, if any, V.
+        battery_v: Option<f64>,
     },
 }
 
-/// Longest simulated run, s (about a day of simulation on one core).
-const MAX_DURATION_S: f64 = 1e5;
+/// The longest run a scenario may ask for, s.
+pub const MAX_DURATION_S: f64 = 1e5;
 
 impl Scenario {
-    /// Parses a TOML text.
+    /// Parses a TOML text and checks its values.
     pub fn from_toml(text: &str) -> Result<Self, ScenarioError> {
         let s: Self = toml::from_str(text)?;
-        // Written so that NaN fails.
-        if !(s.duration_s > 0.0 && s.duration_s <= MAX_DURATION_S) {
-            return Err(ScenarioError::OutOfRange {
-                key: "duration_s",
-                value: s.duration_s,
-                range: "(0, 100000] s",
-            });
-        }
-        if !(s.heartbeat_s > 0.0 && s.heartbeat_s.is_finite()) {
-            return Err(ScenarioError::OutOfRange {
-                key: "heartbeat_s",
-                value: s.heartbeat_s,
-                range: "(0, inf) s",
-            });
-        }
+        s.check()?;
         Ok(s)
+    }
+
+    /// Checks the values: the run's length, the heartbeat period, and that
+    /// every fault fires inside the run (a supply drop with its voltage).
+    pub fn check(&self) -> Result<(), ScenarioError> {
+        // Written so that NaN fails.
+        if !(self.duration_s > 0.0 && self.duration_s < MAX_DURATION_S) {
+            return Err(ScenarioError::Duration {
+                duration_s: self.duration_s,
+                max: MAX_DURATION_S,
+            });
+        }
+        if !(self.heartbeat_s > 0.0 && self.heartbeat_s.is_finite()) {
+            return Err(ScenarioError::Heartbeat {
+                heartbeat_s: self.heartbeat_s,
+            });
+        }
+        for (index, fault) in self.faults.iter().enumerate() {
+            if !(0.0..self.duration_s).contains(&fault.at_s) {
+                return Err(ScenarioError::FaultTime {
+                    index,
+                    kind: fault.kind,
+                    at_s: fault.at_s,
+                    duration_s: self.duration_s,
+                });
+            }
+            let volts = fault.battery_v.filter(|v| *v > 0.0 && v.is_finite());
+            if fault.kind == FaultKind::SupplyDrop && volts.is_none() {
+                return Err(ScenarioError::Battery {
+                    index,
+                    battery_v: fault.battery_v,
+                });
+            }
+        }
+        Ok(())
     }
 
     /// The profile in wire form.
@@ -149,7 +210,8 @@ impl Scenario {
     }
 }
 
-/// Runs `scenario` on a plant; returns the metrics report.
+/// Runs `scenario` on a plant; returns the metrics report (a scenario
+/// that fails [`Scenario::check`] is refused).
 pub fn run(scenario: &Scenario, plant: &PlantParams) -> Result<Report, ScenarioError> {
     let (report, _) = run_with_trace(scenario, plant)?;
     Ok(report)
@@ -161,6 +223,7 @@ pub fn run_with_trace(
     scenario: &Scenario,
     plant: &PlantParams,
 ) -> Result<(Report, Vec<TracePoint>), ScenarioError> {
+    scenario.check()?;
     let profile = scenario.profile()?;
     let mut host = Link::new(Simulator::new(plant));
     host.handshake()?;
@@ -170,7 +233,7 @@ pub fn run_with_trace(
         host.command(Command::SetParam(value))?;
     }
     host.command(Command::UploadProfile(profile.clone()))?;
-    host.command(Command::Arm)?;
+    let session = host.arm()?;
     host.command(Command::Start)?;
     let mut reference = ReferenceGenerator::new();
     reference.start(&profile, &Limits::REFERENCE_FWAV);
@@ -199,7 +262,9 @@ pub fn run_with_trace(
             host.get_mut().set_faults(faults);
         }
         if !silent && k % heartbeat_every == 0 && k > 0 {
-            host.request(Command::Ping { nonce: k as u32 })?;
+            // Refused once the device disarmed (a fault): the host keeps
+            // sending, as a real one does until it notices.
+            host.request(Command::Heartbeat { session })?;
         }
         let target = reference.waveform();
         let segment = reference.active_segment();

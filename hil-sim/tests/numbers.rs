@@ -233,3 +233,65 @@ fn shipped_scenarios_parse() {
     .unwrap();
     Scenario::from_toml(&text).unwrap();
 }
+
+/// A fault at a negative, NaN or after-the-end time never fires (a
+/// negative one gave NaN metrics and exit 0): `hil-sim run` refuses the
+/// scenario, naming the fault, its field and the run's duration.
+#[test]
+fn fault_times_outside_the_run_are_refused_naming_the_fault() {
+    let dir = std::env::temp_dir().join(format!("hil-sim-fault-times-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let base = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenarios/link-silence.toml"
+    ))
+    .unwrap();
+    assert!(base.contains("at_s = 2.4001"));
+    for (at, shown) in [
+        ("-1.0", "-1"),
+        ("nan", "NaN"),
+        ("3.5", "3.5"),
+        ("10.0", "10"),
+    ] {
+        let path = dir.join("fault.toml");
+        std::fs::write(
+            &path,
+            base.replace("at_s = 2.4001", &format!("at_s = {at}")),
+        )
+        .unwrap();
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_hil-sim"))
+            .args(["run", path.to_str().unwrap()])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "at_s = {at}: {stderr}");
+        assert!(
+            stderr.contains("faults[0] (link_silence)")
+                && stderr.contains(&format!("at_s = {shown}"))
+                && stderr.contains("duration_s = 3.5"),
+            "at_s = {at}: {stderr}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A supply drop needs the voltage it drops to, a positive number of volts
+/// (a NaN or negative battery would give NaN metrics).
+#[test]
+fn a_supply_drop_without_a_positive_voltage_is_refused() {
+    let base = "duration_s = 2.0\n[[segments]]\nfrequency_hz = 11.0\namplitude_deg = 30.0\nduration_s = 100.0\nramp_s = 1.0\n[[faults]]\nat_s = 1.0\nkind = \"supply_drop\"\n";
+    for (extra, shown) in [
+        ("", "(missing)"),
+        ("battery_v = -6.0\n", "-6"),
+        ("battery_v = nan\n", "NaN"),
+    ] {
+        let e = Scenario::from_toml(&format!("{base}{extra}")).unwrap_err();
+        let text = e.to_string();
+        assert!(
+            text.contains("faults[0] (supply_drop)")
+                && text.contains(&format!("battery_v = {shown}")),
+            "{text}"
+        );
+    }
+    assert!(Scenario::from_toml(&format!("{base}battery_v = 6.0\n")).is_ok());
+}

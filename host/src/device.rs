@@ -140,8 +140,20 @@ impl<P: Read + Write> Device<P> {
             .command(Command::SetParam(ParamValue { id, value }))?)
     }
 
-    /// Sends one of the simple commands (arm, disarm, start, stop, save,
-    /// clear faults).
+    /// Arms; returns the session whose heartbeats ([`Device::heartbeat`])
+    /// alone keep the device armed (status queries do not).
+    pub fn arm(&mut self) -> Result<u32, DeviceError> {
+        Ok(self.link.arm()?)
+    }
+
+    /// The heartbeat of `session` (from [`Device::arm`]), due at least once
+    /// per link timeout while armed.
+    pub fn heartbeat(&mut self, session: u32) -> Result<(), DeviceError> {
+        Ok(self.link.heartbeat(session)?)
+    }
+
+    /// Sends one of the simple commands (disarm, start, stop, save, clear
+    /// faults; arming is [`Device::arm`]).
     pub fn command(&mut self, command: Command) -> Result<(), DeviceError> {
         Ok(self.link.command(command)?)
     }

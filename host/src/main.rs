@@ -61,7 +61,9 @@ enum Command {
     SystemAnalysis(cli::system::SystemArgs),
     /// The aerodynamic discipline: choose the flapping kinematics (L18,
     /// ANOM, response surfaces + NSGA-II, confirmation runs) on 2D analyses
-    /// of the deforming mid-span section.
+    /// of the deforming mid-span section. Alone it is unconstrained: no
+    /// analysed vehicle, so no actuator check (`fwav design` judges every
+    /// candidate on the designed vehicle; ask `fwav actuator` of a result).
     Kinematics(cli::kinematics::KinematicsArgs),
     /// The structural discipline: the carbon reinforcement layout by
     /// nonlinear dynamic topology optimization with equivalent static
@@ -90,14 +92,15 @@ enum Command {
         port: String,
         /// The profile file (JSON).
         file: PathBuf,
-        /// Then arm, start and fly, keeping the link, until Ctrl-C.
+        /// Then arm, start and fly, sending the heartbeat, until Ctrl-C,
+        /// SIGTERM or SIGHUP (the wing is stopped and disarmed first).
         #[arg(long)]
         start: bool,
         /// Store the profile in the device's flash.
         #[arg(long)]
         save: bool,
         /// With --start: fly this many seconds, then stop.
-        #[arg(long)]
+        #[arg(long, value_parser = cli::fly::duration_seconds, allow_negative_numbers = true)]
         duration: Option<f64>,
         /// Machine-readable output.
         #[arg(long)]
@@ -118,7 +121,8 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// Live telemetry until Ctrl-C, optionally logged to CSV.
+    /// Live telemetry until Ctrl-C, SIGTERM or SIGHUP (which stop a running
+    /// wing first), optionally logged to CSV.
     Monitor {
         /// Serial port.
         #[arg(long)]
@@ -130,7 +134,7 @@ enum Command {
         #[arg(long, default_value_t = 100)]
         decimation: u16,
         /// Stop after this many seconds.
-        #[arg(long)]
+        #[arg(long, value_parser = cli::fly::duration_seconds, allow_negative_numbers = true)]
         duration: Option<f64>,
     },
 }

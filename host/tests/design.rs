@@ -149,8 +149,14 @@ fn coarse_design_converges_writes_everything_and_resumes() {
     let dir = temp("full");
     let run = start(&coarse(), &dir, &RunOptions::default(), &|_| {}).unwrap();
     println!("uninterrupted run: {:.1} s", clock.elapsed().as_secs_f64());
-    assert_eq!(run.outcome, Some(Outcome::Converged { cycle: 3 }));
-    assert_eq!(run.stages_computed, 9);
+    // Converges in cycle 2 (6 stages; it was cycle 3, 9 stages, before the
+    // section objective saw separation): with leading-edge shedding the
+    // section's thrust is capped near 2 pi LESP_c^2 (issue 21, deliver 9),
+    // the net efficiency decides, and the first cycle already picks the low
+    // corner of the coarse levels (10 Hz, +-25 deg, -5 deg, 80 deg), which
+    // the second cycle keeps.
+    assert_eq!(run.outcome, Some(Outcome::Converged { cycle: 2 }));
+    assert_eq!(run.stages_computed, 6);
     for file in [
         "summary.json",
         "report.md",
@@ -165,13 +171,11 @@ fn coarse_design_converges_writes_everything_and_resumes() {
         "kinematics.json",
         "wing-cycle-1.vtu",
         "wing-cycle-2.vtu",
-        "wing-cycle-3.vtu",
         "cycle-1/system.json",
         "cycle-1/section.json",
         "cycle-1/pressure.json",
         "cycle-1/kinematics.json",
         "cycle-2/topology.json",
-        "cycle-3/topology.json",
     ] {
         let size = std::fs::metadata(dir.join(file)).map_or(0, |m| m.len());
         assert!(size > 100, "{file}: {size} bytes");
@@ -180,7 +184,7 @@ fn coarse_design_converges_writes_everything_and_resumes() {
     assert_eq!(summary["finished"], true);
     assert_eq!(summary["outcome"], "converged");
     let cycles = summary["cycles"].as_array().unwrap();
-    assert_eq!(cycles.len(), 3);
+    assert_eq!(cycles.len(), 2);
     for c in cycles {
         for key in ["ct", "cp", "efficiency", "seconds"] {
             assert!(c["system"][key].is_f64(), "system.{key}: {c}");
@@ -201,22 +205,21 @@ fn coarse_design_converges_writes_everything_and_resumes() {
         assert!(c["structural"]["seconds"].is_f64());
         assert!(c["change"]["design_unchanged"].is_boolean());
     }
-    assert_eq!(cycles[2]["change"]["design_unchanged"], true);
-    assert_eq!(cycles[1]["change"]["design_unchanged"], false);
+    assert_eq!(cycles[1]["change"]["design_unchanged"], true);
     assert_eq!(cycles[0]["change"]["design_unchanged"], false);
     for key in ["initial", "final"] {
         assert!(summary[key]["ct"].is_f64(), "{key}");
     }
-    assert_eq!(summary["final"]["cycle"], 3);
+    assert_eq!(summary["final"]["cycle"], 2);
     assert!(summary["comparison"]["ct_relative_change"].is_f64());
     let report = std::fs::read_to_string(dir.join("report.md")).unwrap();
-    assert!(report.contains("Converged in cycle 3") && report.contains("convergence.png"));
+    assert!(report.contains("Converged in cycle 2") && report.contains("convergence.png"));
     let profile = fwav::profile_file::ProfileFile::load(dir.join("kinematics.json")).unwrap();
     let f = summary["final"]["kinematics"]["frequency_hz"]
         .as_f64()
         .unwrap();
     assert!((profile.document.segments[0].frequency_hz - f).abs() < 1e-4 * f);
-    designed_plant_is_the_final_analysis(&dir, 3, profile.document.segments[0].frequency_hz);
+    designed_plant_is_the_final_analysis(&dir, 2, profile.document.segments[0].frequency_hz);
     // The flown kinematics are the final analysed ones (no derating) and
     // the actuator flies them with the reserve: judged here on plant.toml
     // by the actuator crate's check, under the design file's limits.
@@ -252,11 +255,22 @@ fn coarse_design_converges_writes_everything_and_resumes() {
     assert_eq!(summary["actuator"]["feasible"], true);
     let reference = answer(&dir);
 
-    // A finished run is not started over, and resuming it computes nothing.
-    let again = start(&coarse(), &dir, &RunOptions::default(), &|_| {}).unwrap_err();
-    assert!(matches!(again, DesignError::Exists { .. }), "{again}");
+    // A finished run is not started over: started again with the same
+    // configuration or resumed, it computes nothing and says it had
+    // finished; started with another configuration, it is refused naming
+    // the first differing key.
+    let again = start(&coarse(), &dir, &RunOptions::default(), &|_| {}).unwrap();
+    assert!(again.finished_before && again.stages_computed == 0);
+    let mut other = coarse();
+    other.design.seed = 2;
+    let e = start(&other, &dir, &RunOptions::default(), &|_| {}).unwrap_err();
+    assert!(
+        matches!(e, DesignError::Exists { ref field, .. } if field == "design.seed"),
+        "{e}"
+    );
     let done = resume(&dir, None, &RunOptions::default(), &|_| {}).unwrap();
     assert_eq!(done.stages_computed, 0);
+    assert!(done.finished_before);
     assert_eq!(done.outcome, run.outcome);
 
     // The same design in pieces.
@@ -279,14 +293,14 @@ fn coarse_design_converges_writes_everything_and_resumes() {
         events.lock().unwrap().push((p.cycle, p.stage, p.event))
     })
     .unwrap();
-    assert_eq!(second.outcome, Some(Outcome::Converged { cycle: 3 }));
-    assert_eq!((second.stages_reused, second.stages_computed), (3, 6));
+    // Cycle 1 reused, cycle 2 (the converged one) computed again.
+    assert_eq!(second.outcome, Some(Outcome::Converged { cycle: 2 }));
+    assert_eq!((second.stages_reused, second.stages_computed), (3, 3));
     let state = RunState::load(&pieces).unwrap();
     assert_eq!(state.runs.len(), 2);
     for stage in [Stage::System, Stage::Kinematics, Stage::Topology] {
         assert_eq!(run_of(&state, 1, stage), Some(1), "cycle 1 {stage}");
         assert_eq!(run_of(&state, 2, stage), Some(2), "cycle 2 {stage}");
-        assert_eq!(run_of(&state, 3, stage), Some(2), "cycle 3 {stage}");
     }
     let events = events.into_inner().unwrap();
     let started = |cycle: usize| {
@@ -295,11 +309,7 @@ fn coarse_design_converges_writes_everything_and_resumes() {
             .filter(|(c, _, e)| *c == cycle && *e == fwav::mdois::Event::Started)
             .count()
     };
-    assert_eq!(
-        (started(1), started(2), started(3)),
-        (0, 3, 3),
-        "{events:?}"
-    );
+    assert_eq!((started(1), started(2)), (0, 3), "{events:?}");
     assert_same(&reference, &answer(&pieces));
 
     // The summary reads back through its own type (its numbers to the
@@ -308,7 +318,7 @@ fn coarse_design_converges_writes_everything_and_resumes() {
     let read = Summary::read(&dir.join("summary.json")).unwrap();
     assert_eq!(
         (read.outcome, read.converged_cycle, read.cycles.len()),
-        (done.summary.outcome.clone(), Some(3), 3)
+        (done.summary.outcome.clone(), Some(2), 2)
     );
     let system = dir.join("cycle-1/system.json");
     let text = std::fs::read_to_string(&system)
@@ -384,6 +394,22 @@ fn killed_design_resumes_with_the_same_answer() {
     );
     let summary: serde_json::Value = serde_json::from_slice(&resumed.stdout).unwrap();
     assert_eq!(summary["outcome"], "converged");
+    // Resumed again, the finished run says so instead of "0 stage(s)
+    // computed, 0 reused", and its lock is gone.
+    let finished = fwav(&["design", "--resume", out.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&finished.stdout);
+    assert!(
+        finished.status.success(),
+        "{}",
+        String::from_utf8_lossy(&finished.stderr)
+    );
+    assert!(
+        stdout.contains("converged in cycle")
+            && stdout.contains("the run had already finished: nothing computed")
+            && !stdout.contains("0 stage(s) computed"),
+        "{stdout}"
+    );
+    assert!(!out.join("fwav.lock").exists());
     let after = RunState::load(&out).unwrap();
     assert_eq!(run_of(&after, 1, Stage::System), Some(1));
     for c in &before.cycles {

@@ -87,6 +87,7 @@ pub fn command_name(c: &Command) -> &'static str {
         Command::SetTelemetry(_) => "telemetry",
         Command::ClearFaults => "clear faults",
         Command::GetLimits => "limits",
+        Command::Heartbeat { .. } => "heartbeat",
     }
 }
 
@@ -181,6 +182,30 @@ impl<P: Read + Write> Link<P> {
                 answer: format!("{other:?}"),
             }),
         }
+    }
+
+    /// Arms the device; returns the session whose heartbeats
+    /// ([`Link::heartbeat`]) alone keep it armed.
+    pub fn arm(&mut self) -> Result<u32, LinkError> {
+        match self.request(Command::Arm)? {
+            Reply::Armed { session } => Ok(session),
+            Reply::Nack(reason) => Err(LinkError::Refused {
+                command: "arm",
+                reason,
+            }),
+            other => Err(LinkError::Unexpected {
+                command: "arm",
+                answer: format!("{other:?}"),
+            }),
+        }
+    }
+
+    /// The heartbeat of `session` (from [`Link::arm`]): keeps the device
+    /// armed for another link timeout. Refused if the device disarmed
+    /// ([`NackReason::NotArmed`]) or another client armed it since
+    /// ([`NackReason::OtherSession`]).
+    pub fn heartbeat(&mut self, session: u32) -> Result<(), LinkError> {
+        self.command(Command::Heartbeat { session })
     }
 
     /// Takes the telemetry received so far.

@@ -79,4 +79,7 @@ pub use status::{DisarmReason, FaultFlags, LinkStats, Status, TelemetryConfig, T
 
 /// Version of the fwav link protocol. Bumped by hand on a deliberate change of
 /// meaning that the schema hash cannot see (e.g. a unit change of a field).
-pub const PROTOCOL_VERSION: u16 = 1;
+///
+/// Version 2: only the arming session's [`Command::Heartbeat`] feeds the link
+/// failsafe; in version 1 any frame (a status query from any client) did.
+pub const PROTOCOL_VERSION: u16 = 2;

@@ -84,7 +84,8 @@ pub enum Command {
     /// Open a session: the device answers [`DeviceMessage::Hello`] and, if the
     /// versions differ, refuses every other command.
     Handshake(Hello),
-    /// Liveness check (also the heartbeat that feeds the link failsafe).
+    /// Liveness check. It does not feed the link failsafe: only the arming
+    /// session's [`Command::Heartbeat`] does.
     Ping {
         /// Echoed in [`Reply::Pong`].
         nonce: u32,
@@ -93,7 +94,10 @@ pub enum Command {
     UploadProfile(Profile),
     /// Read back the active profile: [`Reply::Profile`].
     ReadProfile,
-    /// Enable the motor output (preconditions in the firmware).
+    /// Enable the motor output (preconditions in the firmware). Answered
+    /// with [`Reply::Armed`]: the session that now controls the device, whose
+    /// heartbeats alone keep it armed. Arming an armed device at rest starts
+    /// a new session; the previous one's heartbeats are then refused.
     Arm,
     /// Disable the motor output now.
     Disarm,
@@ -115,6 +119,17 @@ pub enum Command {
     ClearFaults,
     /// Read the device's kinematic limits: [`Reply::Limits`].
     GetLimits,
+    /// The controlling session's heartbeat, the only traffic that feeds the
+    /// link failsafe (with the [`Command::Arm`] that opened the session):
+    /// acked for the session of the last arming, refused with
+    /// [`NackReason::NotArmed`] while disarmed and
+    /// [`NackReason::OtherSession`] for any other session. Read-only
+    /// queries (status, ping, parameters, profile, limits) from any client
+    /// never keep the device armed.
+    Heartbeat {
+        /// The session [`Reply::Armed`] returned.
+        session: u32,
+    },
 }
 
 /// Device → host. Variant 0 ([`DeviceMessage::Hello`]) is frozen.
@@ -174,6 +189,11 @@ pub enum Reply {
     Params(Vec<ParamValue, MAX_PARAMS>),
     /// Answer to [`Command::GetLimits`].
     Limits(Limits),
+    /// Answer to [`Command::Arm`]: armed, controlled by this session.
+    Armed {
+        /// Send it in every [`Command::Heartbeat`].
+        session: u32,
+    },
 }
 
 /// Why the device refused a command.
@@ -224,4 +244,8 @@ pub enum NackReason {
     /// This device does not implement the command.
     #[error("not supported by this device")]
     Unsupported,
+    /// A heartbeat of a session that does not control the device (another
+    /// client armed it since).
+    #[error("another session armed the device: only the heartbeats of the client that armed it last keep it armed")]
+    OtherSession,
 }

@@ -52,7 +52,8 @@ pub enum ParamId {
     PhaseGain,
     /// Motor current limit, A.
     CurrentLimit,
-    /// Link silence that triggers the failsafe while armed, s.
+    /// Time without a heartbeat of the arming session that triggers the
+    /// link failsafe while armed, s.
     LinkTimeout,
     /// Measured current that disarms at once (over-current fault), A.
     OverCurrentTrip,

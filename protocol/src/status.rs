@@ -10,7 +10,8 @@ use serde::{Deserialize, Serialize};
 pub struct FaultFlags(pub u16);
 
 impl FaultFlags {
-    /// No frame within the link timeout while running.
+    /// No heartbeat of the arming session within the link timeout while
+    /// armed.
     pub const LINK_LOSS: Self = Self(1 << 0);
     /// Encoder silent while driven, or an impossible jump.
     pub const ENCODER: Self = Self(1 << 1);
@@ -89,7 +90,7 @@ impl core::fmt::Display for FaultFlags {
 pub enum DisarmReason {
     /// The host sent [`crate::Command::Disarm`].
     Command,
-    /// Link silent for longer than the timeout.
+    /// No heartbeat of the arming session for longer than the link timeout.
     LinkLoss,
     /// Encoder fault.
     EncoderFault,

@@ -33,6 +33,7 @@ const REQUESTS: &[(&str, &str)] = &[
 ("set_telemetry", "00090c0c010a4233ce1b00"),
 ("clear_faults", "00070d0d1201758e00"),
 ("get_limits", "0009ffff030e939ffe6900"),
+("heartbeat", "000a0e0fc0c4073009e02d00"),
 ];
 
 const DEVICE_MESSAGES: &[(&str, &str)] = &[
@@ -47,6 +48,8 @@ const DEVICE_MESSAGES: &[(&str, &str)] = &[
 ("params", "0005010905020682a8fb360d0101063fa43c0af900"),
 ("limits", "000601ffff03060103803f0113a041db0f493fc2b8b23e920a863f920a863f010b2041cdcc4c3eb19b0c5c00"),
 ("telemetry", "0006024dc0843d0101063f48e1fa3e010b80becdcc4c3fb81e053f01073041cf5c506f00"),
+("armed", "000b010407c0c407b9df899300"),
+("nack_other_session", "0009010e010c0a7e232200"),
 ];
 
 fn hex(bytes: &[u8]) -> String {
@@ -94,8 +97,8 @@ fn golden_vectors_cover_every_variant() {
         .iter()
         .map(|(_, r)| postcard::to_allocvec(&r.command).unwrap()[0])
         .collect();
-    // Command has 15 variants, indices 0..=14 (one byte of varint each).
-    assert_eq!(commands, (0..15).collect());
+    // Command has 16 variants, indices 0..=15 (one byte of varint each).
+    assert_eq!(commands, (0..16).collect());
     let replies: std::collections::BTreeSet<u8> = golden_cases::device_messages()
         .iter()
         .filter_map(|(_, m)| match m {
@@ -103,7 +106,7 @@ fn golden_vectors_cover_every_variant() {
             _ => None,
         })
         .collect();
-    assert_eq!(replies, (0..7).collect());
+    assert_eq!(replies, (0..8).collect());
 }
 
 /// CRC-32C check value (catalogue of parametrised CRC algorithms, "CRC-32/ISCSI").

@@ -63,7 +63,7 @@ fn the_coarse_design_converges_and_its_kinematics_fly_in_hil_sim() {
     device
         .upload(&file.profile)
         .expect("accepted and read back");
-    device.command(Command::Arm).unwrap();
+    let session = device.arm().unwrap();
     device.command(Command::Start).unwrap();
     device.telemetry(true, 100).unwrap();
     // The ramp, then 1.5 s (16 or more flapping cycles) to settle.
@@ -71,6 +71,7 @@ fn the_coarse_design_converges_and_its_kinematics_fly_in_hil_sim() {
     let clock = Instant::now();
     let mut samples = Vec::new();
     while clock.elapsed() < flight {
+        device.heartbeat(session).unwrap();
         let status = device.status().unwrap();
         assert!(status.armed && status.running, "{status:?}");
         device.link.listen(Duration::from_millis(100)).unwrap();

@@ -275,17 +275,25 @@ fn pressure_json(bytes: &[u8]) {
     }
 }
 
-/// `fwav design --resume DIR`: read the state, cut it back to what the
-/// directory holds, number the next run.
+/// `fwav design --resume DIR`: read the state and the configuration the
+/// run started with, compare it with the run's, cut the state back to
+/// what the directory holds, number the next run.
 fn state_json(dir: &Path, bytes: &[u8]) {
     std::fs::write(dir.join(STATE_FILE), bytes).unwrap();
-    match RunState::load(dir) {
-        Ok(mut state) => {
-            state.consistent_prefix(dir);
-            let _ = state.next_run();
+    let mut state = match RunState::load(dir) {
+        Ok(state) => state,
+        Err(e) => return refused(&e),
+    };
+    match state.started_with(dir) {
+        Ok(started) => {
+            if let Err(e) = state.is_of(&started) {
+                refused(&e);
+            }
         }
         Err(e) => refused(&e),
     }
+    state.consistent_prefix(dir);
+    let _ = state.next_run();
 }
 
 /// `fwav aero2d --section FILE`: the point file, then the panel shape.
@@ -353,7 +361,7 @@ const SCENARIO: &str = include_str!("../../hil-sim/scenarios/encoder-loss.toml")
 
 /// A state of a run with two cycles begun, whose files are in `dir`.
 fn state(dir: &Path) -> String {
-    let mut state = RunState::default();
+    let mut state = RunState::new(&SystemConfig::from_toml(COARSE).unwrap()).unwrap();
     for run in 1..=2 {
         state.runs.push(RunRecord {
             run,

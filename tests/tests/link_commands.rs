@@ -34,13 +34,15 @@ fn upload_start_and_telemetry_reach_the_commanded_amplitude() {
     assert!(device.hello.firmware.starts_with("fwav-fc "));
     let profile = initial_design().profile;
     device.upload(&profile).expect("accepted and read back");
-    device.command(Command::Arm).unwrap();
+    let session = device.arm().unwrap();
     device.command(Command::Start).unwrap();
     device.telemetry(true, 100).unwrap();
-    // 1 s ramp + 1.5 s settling, with a heartbeat every 0.1 s.
+    // 1 s ramp + 1.5 s settling, with a heartbeat every 0.1 s (status
+    // queries alone would not keep the device armed).
     let started = Instant::now();
     let mut samples = Vec::new();
     while started.elapsed() < Duration::from_secs_f64(2.5) {
+        device.heartbeat(session).unwrap();
         let status = device.status().unwrap();
         assert!(status.armed && status.running, "{status:?}");
         device.link.listen(Duration::from_millis(100)).unwrap();

@@ -11,6 +11,13 @@
 //! fault and no save in progress; starting needs armed and a valid profile.
 //! Every disarm records its [`DisarmReason`]; every fault stays latched until
 //! [`Command::ClearFaults`].
+//!
+//! The link failsafe: arming opens a session (a number returned in
+//! [`Reply::Armed`]) and only [`Command::Heartbeat`]s carrying that number
+//! keep the device armed. Any client on any link may still query (status,
+//! ping, parameters, profile, limits) and stop or disarm, but none of that
+//! feeds the failsafe, so a wing whose controlling client died is brought to
+//! rest within the link timeout and one wingbeat whoever else keeps asking.
 
 use fwav_protocol::{
     Command, DeviceMessage, DisarmReason, FaultFlags, Limits, LinkStats, NackReason, ParamId,
@@ -98,6 +105,9 @@ pub struct FlightController {
     controller: FlappingController,
     monitor: FaultMonitor,
     armed: bool,
+    /// The session of the last arming: only its heartbeats feed the link
+    /// failsafe.
+    session: u32,
     saving: bool,
     /// The link failsafe is ramping down; disarm when at rest.
     link_lost: bool,
@@ -106,7 +116,8 @@ pub struct FlightController {
     telemetry: Option<(LinkId, u16)>,
     telemetry_countdown: u16,
     telemetry_seq: u32,
-    last_frame_us: u64,
+    /// When the controlling session last armed or sent a heartbeat, µs.
+    last_heartbeat_us: u64,
     now_us: u64,
     last_duty: f32,
     last_output: Option<ControlOutput>,
@@ -126,6 +137,7 @@ impl FlightController {
             controller: FlappingController::new(),
             monitor: FaultMonitor::new(),
             armed: false,
+            session: 0,
             saving: false,
             link_lost: false,
             faults: FaultFlags::NONE,
@@ -133,7 +145,7 @@ impl FlightController {
             telemetry: None,
             telemetry_countdown: 0,
             telemetry_seq: 0,
-            last_frame_us: 0,
+            last_heartbeat_us: 0,
             now_us: 0,
             last_duty: 0.0,
             last_output: None,
@@ -218,7 +230,9 @@ impl FlightController {
     ///
     /// A request with the same sequence number as the previous one on the
     /// link is a retry (its answer was lost): it gets the cached answer and
-    /// is not executed again. A handshake starts afresh.
+    /// is not executed again. A handshake starts afresh. Only an arming and
+    /// the controlling session's heartbeats feed the link failsafe; other
+    /// traffic, from whichever client, does not.
     pub fn handle(
         &mut self,
         link: LinkId,
@@ -232,24 +246,17 @@ impl FlightController {
             self.last_reply[index] = None;
         } else if let Some((seq, answer)) = &self.last_reply[index] {
             if *seq == request.seq && self.sessions[index].is_open() {
-                self.last_frame_us = now_us;
                 return Handled::Reply(answer.clone());
             }
         }
         let seq = request.seq;
-        let session = &mut self.sessions[index];
-        let dispatch = session.receive(request);
-        if session.is_open() {
-            // Any frame from an open session is a heartbeat.
-            self.last_frame_us = now_us;
-        }
-        let handled = match dispatch {
+        let handled = match self.sessions[index].receive(request) {
             Dispatch::Reply(message) => Handled::Reply(message),
             Dispatch::Forward { seq, command } => {
                 if let Command::SaveProfile = command {
                     return self.begin_save(seq);
                 }
-                let reply = self.command(link, command, stats);
+                let reply = self.command(link, command, stats, now_us);
                 Handled::Reply(DeviceMessage::Response(Response { seq, reply }))
             }
         };
@@ -259,7 +266,7 @@ impl FlightController {
         handled
     }
 
-    fn command(&mut self, link: LinkId, command: Command, stats: LinkStats) -> Reply {
+    fn command(&mut self, link: LinkId, command: Command, stats: LinkStats, now_us: u64) -> Reply {
         let refuse = Reply::Nack;
         match command {
             // Answered by the session; listed so a new command is a compile error here.
@@ -287,13 +294,16 @@ impl FlightController {
                 } else if self.generator.is_active() {
                     refuse(NackReason::NotAtRest)
                 } else {
-                    if !self.armed {
-                        self.armed = true;
-                        self.controller.reset();
-                        self.monitor = FaultMonitor::new();
-                        self.link_lost = false;
-                        self.last_frame_us = self.now_us.max(self.last_frame_us);
-                    }
+                    self.arm(now_us)
+                }
+            }
+            Command::Heartbeat { session } => {
+                if !self.armed {
+                    refuse(NackReason::NotArmed)
+                } else if session != self.session {
+                    refuse(NackReason::OtherSession)
+                } else {
+                    self.last_heartbeat_us = self.now_us.max(now_us);
                     Reply::Ack
                 }
             }
@@ -338,6 +348,24 @@ impl FlightController {
                 Reply::Ack
             }
             Command::GetLimits => Reply::Limits(self.limits),
+        }
+    }
+
+    /// Arms (if not armed yet) and opens a new controlling session, numbered
+    /// above the previous one and at least the uptime in ms (so a host left
+    /// over from before a reset is unlikely to hold the new number).
+    fn arm(&mut self, now_us: u64) -> Reply {
+        if !self.armed {
+            self.armed = true;
+            self.controller.reset();
+            self.monitor = FaultMonitor::new();
+            self.link_lost = false;
+        }
+        let uptime_ms = (self.now_us.max(now_us) / 1000) as u32;
+        self.session = self.session.wrapping_add(1).max(uptime_ms);
+        self.last_heartbeat_us = self.now_us.max(now_us);
+        Reply::Armed {
+            session: self.session,
         }
     }
 
@@ -441,7 +469,7 @@ impl FlightController {
             return;
         }
         let timeout_us = (self.params.get(ParamId::LinkTimeout) * 1e6) as u64;
-        let silent = self.now_us.saturating_sub(self.last_frame_us) > timeout_us;
+        let silent = self.now_us.saturating_sub(self.last_heartbeat_us) > timeout_us;
         if silent && !self.link_lost {
             self.latch(FaultFlags::LINK_LOSS);
             self.link_lost = true;

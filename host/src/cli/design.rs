@@ -11,8 +11,9 @@ use std::time::{Duration, Instant};
 use anyhow::{bail, Context, Result};
 use fwav::config::template::commented_toml;
 use fwav::config::SystemConfig;
+use fwav::mdois::lock::LOCK_FILE;
 use fwav::mdois::summary::Summary;
-use fwav::mdois::{resume, start, Event, Outcome, Progress, RunOptions, Stage};
+use fwav::mdois::{Event, Outcome, Progress, Replace, RunDir, RunOptions, Stage};
 
 /// `fwav design`'s options.
 #[derive(clap::Args)]
@@ -24,9 +25,15 @@ pub struct DesignArgs {
     pub config: Option<PathBuf>,
     /// Write the run here: `summary.json`, `report.md`, the plots,
     /// `topology.vtu`/`.png`, `wing-cycle-N.vtu`, `kinematics.json`, and
-    /// every stage's files under `cycle-N/` with `state.json`.
+    /// every stage's files under `cycle-N/` with `state.json`. A new or
+    /// empty directory, or a run of the same configuration (continued);
+    /// anything else is refused (see --force).
     #[arg(long, default_value = "design", conflicts_with = "resume")]
     pub out: PathBuf,
+    /// Delete what the --out directory holds and start the run there
+    /// (never the --config file itself: that is refused).
+    #[arg(long, conflicts_with = "resume")]
+    pub force: bool,
     /// Continue the interrupted run in this directory without redoing its
     /// finished stages.
     #[arg(long, value_name = "DIR")]
@@ -75,10 +82,16 @@ pub fn init(a: &InitArgs) -> Result<()> {
     Ok(())
 }
 
+/// The stages running, by their order on the line: each one's latest
+/// report.
+type Running = BTreeMap<u8, (Stage, String)>;
+
 /// The live progress line on a terminal: the latest report of each stage
-/// running, redrawn at most every 0.2 s; stage ends on their own lines.
+/// running, redrawn in place at most every 0.2 s and fitted to the
+/// terminal's width (short stage names, then cut); stage ends on their own
+/// lines.
 struct Display {
-    live: Mutex<(BTreeMap<u8, String>, Option<Instant>)>,
+    live: Mutex<(Running, Option<Instant>)>,
 }
 
 fn stage_key(stage: Stage) -> u8 {
@@ -94,6 +107,39 @@ fn clock(d: Duration) -> String {
     format!("{}:{:02}:{:02}", s / 3600, (s / 60) % 60, s % 60)
 }
 
+/// A stage's name in a narrow progress line.
+fn short_name(stage: Stage) -> &'static str {
+    match stage {
+        Stage::System => "system",
+        Stage::Kinematics => "aero",
+        Stage::Topology => "structure",
+    }
+}
+
+/// Columns the live line may take: the terminal's width less one (a line
+/// that reaches the last column wraps on some terminals, and a wrapped
+/// line is not redrawn in place); 80 if the terminal does not say.
+fn columns() -> usize {
+    terminal_size::terminal_size_of(std::io::stderr())
+        .map_or(80, |(width, _)| usize::from(width.0))
+        .saturating_sub(1)
+        .max(1)
+}
+
+/// `head` then `tail` in at most `width` characters: `head` is cut (and
+/// ends in "…") to keep `tail`, the clock.
+fn fitted(head: &str, tail: &str, width: usize) -> String {
+    let (h, t) = (head.chars().count(), tail.chars().count());
+    if h + t <= width {
+        format!("{head}{tail}")
+    } else if t + 1 >= width {
+        head.chars().chain(tail.chars()).take(width).collect()
+    } else {
+        let kept: String = head.chars().take(width - t - 1).collect();
+        format!("{kept}…{tail}")
+    }
+}
+
 impl Display {
     fn update(&self, p: &Progress) {
         let mut guard = self.live.lock().unwrap_or_else(|e| e.into_inner());
@@ -105,7 +151,7 @@ impl Display {
                 p.cycle, p.stage
             )),
             Event::Started => {
-                live.insert(key, format!("{}: starting", p.stage));
+                live.insert(key, (p.stage, "starting".to_string()));
                 None
             }
             Event::Advanced { done, total, inner } => {
@@ -117,7 +163,7 @@ impl Display {
                     }
                     (Stage::Topology, None) => format!("{done}/{total}"),
                 };
-                live.insert(key, format!("{}: {what}", p.stage));
+                live.insert(key, (p.stage, what));
                 None
             }
             Event::InnerCycle {
@@ -141,13 +187,23 @@ impl Display {
         }
         let due = drawn.is_none_or(|t| t.elapsed() >= Duration::from_millis(200));
         if due && !live.is_empty() {
-            let text: Vec<&str> = live.values().map(String::as_str).collect();
-            eprint!(
-                "\r\x1b[2Kcycle {}: {} [{}]",
-                p.cycle,
-                text.join(" | "),
-                clock(p.elapsed)
-            );
+            let width = columns();
+            let tail = format!(" [{}]", clock(p.elapsed));
+            let head = |name: fn(Stage) -> &'static str| {
+                let text: Vec<String> = live
+                    .values()
+                    .map(|(stage, what)| format!("{}: {what}", name(*stage)))
+                    .collect();
+                format!("cycle {}: {}", p.cycle, text.join(" | "))
+            };
+            let full = head(Stage::name);
+            let head = if full.chars().count() + tail.chars().count() <= width {
+                full
+            } else {
+                head(short_name)
+            };
+            let line = fitted(&head, &tail, width);
+            eprint!("\r\x1b[2K{line}");
             *drawn = Some(Instant::now());
         }
     }
@@ -165,21 +221,43 @@ pub fn run_command(a: &DesignArgs) -> Result<()> {
         }
     };
     let options = RunOptions::default();
-    let run = match &a.resume {
+    let (claimed, what) = match &a.resume {
         Some(dir) => {
             let config = match &a.config {
                 Some(path) => Some(super::system::read_config(Some(path))?),
                 None => None,
             };
-            resume(dir, config.as_ref(), &options, &progress)
-                .with_context(|| format!("resuming the design run in {}", dir.display()))?
+            let what = format!("resuming the design run in {}", dir.display());
+            (
+                RunDir::for_resume(dir, config.as_ref()).context(what.clone())?,
+                what,
+            )
         }
         None => {
             let config = super::system::read_config(a.config.as_deref())?;
-            start(&config, &a.out, &options, &progress)
-                .with_context(|| format!("design run in {}", a.out.display()))?
+            let replace = Replace {
+                force: a.force,
+                inputs: a.config.iter().cloned().collect(),
+            };
+            let what = format!("design run in {}", a.out.display());
+            (
+                RunDir::for_start(&config, &a.out, &replace).context(what.clone())?,
+                what,
+            )
         }
     };
+    let dir = claimed.path().display().to_string();
+    if let Some(holder) = claimed.stale_lock() {
+        eprintln!(
+            "warning: {dir}/{LOCK_FILE} is a stale lock: {holder} ended without letting go of it; taking the run over"
+        );
+    }
+    if claimed.replaced() {
+        eprintln!("--force: deleted what {dir} held; starting the run there");
+    } else if a.resume.is_none() && claimed.continues() {
+        eprintln!("{dir} holds a run of this configuration: continuing it");
+    }
+    let run = claimed.run(&options, &progress).context(what)?;
     if show {
         eprint!("\r\x1b[2K");
     }
@@ -187,10 +265,14 @@ pub fn run_command(a: &DesignArgs) -> Result<()> {
         println!("{}", serde_json::to_string_pretty(&run.summary)?);
     } else {
         print_summary(&run.summary, &run.dir);
-        println!(
-            "{} stage(s) computed, {} reused",
-            run.stages_computed, run.stages_reused
-        );
+        if run.finished_before {
+            println!("the run had already finished: nothing computed");
+        } else {
+            println!(
+                "{} stage(s) computed, {} reused",
+                run.stages_computed, run.stages_reused
+            );
+        }
     }
     match run.outcome {
         Some(Outcome::Converged { .. }) | Some(Outcome::CycleCap { .. }) => Ok(()),

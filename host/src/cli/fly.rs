@@ -8,22 +8,79 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result};
-use fwav::device::Device;
-use fwav::link::Link;
+use fwav::device::{Device, DeviceError};
+use fwav::link::{Link, LinkError};
 use fwav::port;
 use fwav::profile_file::ProfileFile;
-use fwav_protocol::{Command, Status, TelemetrySample};
+use fwav_protocol::{Command, NackReason, Status, TelemetrySample};
 use serialport::SerialPort;
 
 type Port = Box<dyn SerialPort>;
 
-/// Set by Ctrl-C.
-fn interrupted() -> Result<Arc<AtomicBool>> {
+/// Why a `--duration` is refused.
+#[derive(Debug, thiserror::Error)]
+pub enum DurationError {
+    /// Not a number at all.
+    #[error("{text:?} is not a number of seconds")]
+    NotANumber {
+        /// What was given.
+        text: String,
+    },
+    /// NaN, infinite, zero or negative.
+    #[error("{seconds} is not a positive number of seconds (a finite one; leave --duration out to run until Ctrl-C)")]
+    NotPositive {
+        /// The value given.
+        seconds: f64,
+    },
+}
+
+/// Parses `--duration` of `upload --start` and `monitor`: a positive,
+/// finite number of seconds. The argument parser calls it, so a bad value is
+/// refused before any port is opened.
+pub fn duration_seconds(text: &str) -> Result<f64, DurationError> {
+    let seconds: f64 = text.trim().parse().map_err(|_| DurationError::NotANumber {
+        text: text.to_owned(),
+    })?;
+    if seconds > 0.0 && seconds.is_finite() {
+        Ok(seconds)
+    } else {
+        Err(DurationError::NotPositive { seconds })
+    }
+}
+
+/// Set by Ctrl-C (SIGINT), SIGTERM or SIGHUP: the flight or the monitor then
+/// ends through its own shutdown, which stops the wing first.
+fn stop_signals() -> Result<Arc<AtomicBool>> {
     let flag = Arc::new(AtomicBool::new(false));
     let f = flag.clone();
     ctrlc::set_handler(move || f.store(true, Ordering::SeqCst))
-        .context("cannot install the Ctrl-C handler")?;
+        .context("cannot install the handler of SIGINT, SIGTERM and SIGHUP")?;
     Ok(flag)
+}
+
+/// A line for the user on stderr. A failed write (a hung-up terminal after
+/// SIGHUP) is ignored: it must not keep the program from stopping the wing.
+fn tell(line: &str) {
+    let _ = writeln!(std::io::stderr(), "{line}");
+}
+
+/// How a flight or a monitor loop ended when the link did not fail.
+enum Ended {
+    /// A stop signal or the end of `--duration`.
+    Asked,
+    /// Its output could not be written (a closed pipe, a hung-up terminal).
+    Output(std::io::Error),
+}
+
+impl Ended {
+    fn into_result(self) -> Result<()> {
+        match self {
+            Ended::Asked => Ok(()),
+            Ended::Output(e) => {
+                Err(e).context("cannot write the output (the wing was stopped first)")
+            }
+        }
+    }
 }
 
 fn connect(path: &str) -> Result<Device<Port>> {
@@ -148,57 +205,97 @@ pub fn upload(
     Ok(())
 }
 
-/// Arms, starts and keeps the link alive (the device's link failsafe stops
-/// the wing within the link timeout otherwise) until Ctrl-C or `duration`;
-/// then stops, waits for rest and disarms.
+/// Arms, starts and sends this session's heartbeat (the device's link
+/// failsafe stops the wing within the link timeout otherwise) until a stop
+/// signal, `duration` or an output failure; then stops, waits for rest and
+/// disarms.
 fn fly(device: &mut Device<Port>, duration: Option<f64>) -> Result<()> {
-    let stop = interrupted()?;
+    let stop = stop_signals()?;
     device.command(Command::ClearFaults)?;
-    device.command(Command::Arm)?;
+    let session = device.arm()?;
     device.command(Command::Start)?;
     device.telemetry(true, 100)?; // 100 Hz at a 10 kHz control rate
-    eprintln!("flying; Ctrl-C stops the wing and disarms");
+    tell("flying; Ctrl-C (or SIGTERM, SIGHUP) stops the wing and disarms");
+    let ended = keep_flying(device, session, duration, &stop)?;
+    land(device, session)?;
+    tell("stopped and disarmed");
+    ended.into_result()
+}
+
+/// The heartbeat every ~0.1 s and a progress line every 0.5 s, until a stop
+/// signal, `duration` or an output failure. An error if the device disarmed
+/// by itself or another client armed it since.
+fn keep_flying(
+    device: &mut Device<Port>,
+    session: u32,
+    duration: Option<f64>,
+    stop: &AtomicBool,
+) -> Result<Ended> {
     let started = Instant::now();
     let mut last_print = Instant::now();
     while !stop.load(Ordering::SeqCst)
         && duration.is_none_or(|d| started.elapsed().as_secs_f64() < d)
     {
-        let status = device.status()?; // also the heartbeat
+        match device.heartbeat(session) {
+            Err(e) if refused_for(&e, NackReason::NotArmed) => {
+                let status = device.status()?;
+                anyhow::bail!("the device disarmed: {}", status_line(&status));
+            }
+            other => other?,
+        }
         device.link.listen(Duration::from_millis(100))?;
         let samples = device.link.take_telemetry();
         if last_print.elapsed() >= Duration::from_millis(500) {
             last_print = Instant::now();
-            match samples.last() {
-                Some(t) => println!(
+            let status = device.status()?;
+            let line = match samples.last() {
+                Some(t) => format!(
                     "{}  amplitude {:.2} deg  frequency {:.3} Hz  current {:.3} A",
                     status_line(&status),
                     t.amplitude_est_rad.to_degrees(),
                     t.frequency_est_hz,
                     t.current_a
                 ),
-                None => println!("{}", status_line(&status)),
-            }
-            if !status.armed {
-                anyhow::bail!("the device disarmed: {}", status_line(&status));
+                None => status_line(&status),
+            };
+            if let Err(e) = writeln!(std::io::stdout(), "{line}") {
+                return Ok(Ended::Output(e));
             }
         }
     }
+    Ok(Ended::Asked)
+}
+
+/// Stops the wing, keeps the heartbeat while it ramps to rest (at most 5 s),
+/// turns the telemetry off and disarms.
+fn land(device: &mut Device<Port>, session: u32) -> Result<()> {
     device.command(Command::Stop)?;
     let deadline = Instant::now() + Duration::from_secs(5);
-    while device.status()?.running && Instant::now() < deadline {
+    while Instant::now() < deadline {
+        match device.heartbeat(session) {
+            // Already at rest and disarmed (a profile ending in stop).
+            Err(e) if refused_for(&e, NackReason::NotArmed) => break,
+            other => other?,
+        }
+        if !device.status()?.running {
+            break;
+        }
         device.link.listen(Duration::from_millis(100))?;
     }
     device.telemetry(false, 1)?;
     device.command(Command::Disarm)?;
-    eprintln!("stopped and disarmed");
     Ok(())
+}
+
+/// True if the device refused with `reason`.
+fn refused_for(e: &DeviceError, reason: NackReason) -> bool {
+    matches!(e, DeviceError::Link(LinkError::Refused { reason: r, .. }) if *r == reason)
 }
 
 /// `fwav fc ACTION`.
 pub fn fc(path: &str, action: &str, sets: &[String], json: bool) -> Result<()> {
     let mut device = connect(path)?;
     let simple = match action {
-        "arm" => Some(Command::Arm),
         "disarm" => Some(Command::Disarm),
         "start" => Some(Command::Start),
         "stop" => Some(Command::Stop),
@@ -206,10 +303,13 @@ pub fn fc(path: &str, action: &str, sets: &[String], json: bool) -> Result<()> {
         "save" => Some(Command::SaveProfile),
         _ => None,
     };
-    if let Some(command) = simple {
+    if action == "arm" {
+        let session = device.arm()?;
+        tell(&format!("armed, session {session}; note: the device disarms after its link timeout without this session's heartbeats: `fwav upload --start` arms, flies and keeps them"));
+    } else if let Some(command) = simple {
         device.command(command)?;
-        if action == "arm" || action == "start" {
-            eprintln!("note: the device disarms after its link timeout without a heartbeat; use `fwav upload --start` or `fwav monitor` to keep the link");
+        if action == "start" {
+            tell("note: the device disarms after its link timeout without the heartbeats of the session that armed it: `fwav upload --start` arms, flies and keeps them");
         }
     } else if action == "params" {
         for set in sets {
@@ -257,14 +357,17 @@ pub fn fc(path: &str, action: &str, sets: &[String], json: bool) -> Result<()> {
     Ok(())
 }
 
-/// `fwav monitor`.
+/// `fwav monitor`: live telemetry until a stop signal or `duration`. On
+/// Ctrl-C, SIGTERM or SIGHUP a running wing is stopped (it ramps to rest)
+/// before the monitor ends. Its status queries never keep a wing armed: only
+/// the heartbeats of the client that armed it do.
 pub fn monitor(
     path: &str,
     csv: Option<&Path>,
     decimation: u16,
     duration: Option<f64>,
 ) -> Result<()> {
-    let stop = interrupted()?;
+    let stop = stop_signals()?;
     let mut device = connect(path)?;
     let mut csv = match csv {
         Some(p) => {
@@ -278,17 +381,36 @@ pub fn monitor(
         None => None,
     };
     device.telemetry(true, decimation.max(1))?;
-    eprintln!(
-        "monitoring {path} ({}); Ctrl-C stops",
+    tell(&format!(
+        "monitoring {path} ({}); Ctrl-C (or SIGTERM, SIGHUP) stops the wing and the monitor",
         device.hello.firmware
-    );
+    ));
+    let ended = watch(&mut device, csv.as_mut(), duration, &stop)?;
+    if stop.load(Ordering::SeqCst) && device.status()?.running {
+        device.command(Command::Stop)?;
+        tell("stopped the wing");
+    }
+    device.telemetry(false, 1)?;
+    if let Some(mut f) = csv {
+        f.flush()?;
+    }
+    tell("monitor stopped");
+    ended.into_result()
+}
+
+/// The monitor's loop: telemetry to the CSV file, a line every 0.25 s.
+fn watch(
+    device: &mut Device<Port>,
+    mut csv: Option<&mut std::io::BufWriter<std::fs::File>>,
+    duration: Option<f64>,
+    stop: &AtomicBool,
+) -> Result<Ended> {
     let started = Instant::now();
     let mut last_print = Instant::now();
     let mut latest: Option<TelemetrySample> = None;
     while !stop.load(Ordering::SeqCst)
         && duration.is_none_or(|d| started.elapsed().as_secs_f64() < d)
     {
-        let status = device.status()?; // heartbeat
         device.link.listen(Duration::from_millis(100))?;
         for t in device.link.take_telemetry() {
             if let Some(f) = csv.as_mut() {
@@ -309,8 +431,9 @@ pub fn monitor(
         }
         if last_print.elapsed() >= Duration::from_millis(250) {
             last_print = Instant::now();
-            match latest {
-                Some(t) => println!(
+            let status = device.status()?;
+            let line = match latest {
+                Some(t) => format!(
                     "t {:9.3} s  cmd {:+7.2} deg  meas {:+7.2} deg  amp {:6.2} deg  f {:6.3} Hz  I {:+6.3} A  duty {:+5.2}  faults {}",
                     t.time_us as f64 * 1e-6,
                     t.commanded_rad.to_degrees(),
@@ -321,14 +444,12 @@ pub fn monitor(
                     t.duty,
                     status.faults
                 ),
-                None => println!("{} (no telemetry yet)", status_line(&status)),
+                None => format!("{} (no telemetry yet)", status_line(&status)),
+            };
+            if let Err(e) = writeln!(std::io::stdout(), "{line}") {
+                return Ok(Ended::Output(e));
             }
         }
     }
-    device.telemetry(false, 1)?;
-    if let Some(mut f) = csv {
-        f.flush()?;
-    }
-    eprintln!("monitor stopped");
-    Ok(())
+    Ok(Ended::Asked)
 }

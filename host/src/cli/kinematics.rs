@@ -162,4 +162,7 @@ fn print_result(result: &KinematicResult) {
         ),
         None => println!("chosen: the initial design (no candidate beats it)"),
     }
+    println!(
+        "unconstrained (no actuator check without an analysed vehicle): `fwav actuator` judges a choice, `fwav design` constrains every candidate"
+    );
 }

@@ -124,12 +124,31 @@ pub const DESIGN: Table<DesignConfig> = Table {
     ],
 };
 
+/// The level keys of the table ([`DesignSpace`]'s fields): three values
+/// each.
+const LEVEL_KEYS: [&str; 4] = [
+    "frequency_hz",
+    "amplitude_deg",
+    "mean_angle_deg",
+    "stroke_plane_deg",
+];
+
 /// Refuses a key of the file's `[design]` table that [`DESIGN`] does not
-/// declare.
+/// declare, and a level key whose array does not hold three levels.
 pub fn check_keys(file: &toml::Table) -> Result<(), ConfigError> {
     let Some(toml::Value::Table(table)) = file.get(DESIGN.name) else {
         return Ok(());
     };
+    for key in LEVEL_KEYS {
+        if let Some(toml::Value::Array(levels)) = table.get(key) {
+            if levels.len() != 3 {
+                return Err(ConfigError::Levels {
+                    key,
+                    found: levels.len(),
+                });
+            }
+        }
+    }
     match table.keys().find(|k| DESIGN.setting(k).is_none()) {
         None => Ok(()),
         Some(key) => Err(ConfigError::Unknown {
@@ -143,4 +162,13 @@ pub fn check_keys(file: &toml::Table) -> Result<(), ConfigError> {
                 .join(", "),
         }),
     }
+}
+
+/// Refuses a combined objective that is 0 for every design (both weights
+/// 0).
+pub fn check_weights(d: &DesignConfig) -> Result<(), ConfigError> {
+    if d.thrust_weight == 0.0 && d.efficiency_weight == 0.0 {
+        return Err(ConfigError::NoObjective);
+    }
+    Ok(())
 }

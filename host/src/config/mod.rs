@@ -84,6 +84,25 @@ pub enum ConfigError {
     /// The wing could not be built.
     #[error(transparent)]
     Wing(#[from] WingModelError),
+    /// Planform keys that do not fit together.
+    #[error(transparent)]
+    Planform(#[from] wing::PlanformConflict),
+    /// A level key of `[design]` without three levels.
+    #[error(
+        "design.{key} has {found} levels; the L18 array takes exactly three (low, initial, high)"
+    )]
+    Levels {
+        /// The key.
+        key: &'static str,
+        /// The levels given.
+        found: usize,
+    },
+    /// Both weights of the combined objective are 0.
+    #[error(
+        "design.thrust_weight and design.efficiency_weight are both 0: the combined objective \
+         would be 0 for every design; give at least one a positive weight"
+    )]
+    NoObjective,
 }
 
 /// The whole file.
@@ -111,14 +130,18 @@ pub struct SystemConfig {
 impl SystemConfig {
     /// Parses and checks a TOML text.
     pub fn from_toml(text: &str) -> Result<Self, ConfigError> {
-        let config: Self = toml::from_str(text)?;
+        // The [design] table's keys first: its levels are flattened, and
+        // serde's own complaint about them names no key.
         design::check_keys(&toml::from_str(text)?)?;
+        let config: Self = toml::from_str(text)?;
         config.check()?;
         Ok(config)
     }
 
     /// Checks every key against its declared range, table by table in
-    /// the file's order; the first key outside is the error.
+    /// the file's order (the first key outside is the error), then the
+    /// keys that must fit together (the planform, the objective's
+    /// weights).
     pub fn check(&self) -> Result<(), ConfigError> {
         wing::WING.check(&self.wing)?;
         kinematics::KINEMATICS.check(&self.kinematics)?;
@@ -128,6 +151,8 @@ impl SystemConfig {
         topology::TOPOLOGY.check(&self.topology)?;
         mdois::MDOIS.check(&self.mdois)?;
         actuator::ACTUATOR.check(&self.actuator)?;
+        wing::check_planform(&self.wing)?;
+        design::check_weights(&self.design)?;
         Ok(())
     }
 

@@ -11,11 +11,13 @@
 //! default wing's layout kept moving 1.5–2.6% a cycle and the design ran
 //! to its cap in 11.1 min; warm, it converges in cycle 2 in 2.8 min.
 //!
-//! A run lives in a directory: `config.toml` (the resolved configuration,
-//! checked on resume), `state.json` ([`super::state`]), each stage's files
+//! A run lives in a directory: `config.toml` (the resolved configuration;
+//! a resume refuses it edited since the start, [`super::state`] keeps the
+//! original), `state.json` ([`super::state`]), each stage's files
 //! under `cycle-N/` ([`super::stage`]), and the result files
 //! ([`super::output`]). [`start`] begins a run, [`resume`] continues one
-//! without redoing its finished stages.
+//! without redoing its finished stages; both claim the directory first
+//! ([`super::directory`]: what may be written there, and its lock).
 
 use std::path::{Path, PathBuf};
 use std::sync::{Mutex, MutexGuard};
@@ -27,6 +29,7 @@ use crate::files::write_atomic;
 use crate::shell::material::Layer;
 use crate::topology::eslso::DesignProblem;
 
+use super::directory::{Plan, RunDir};
 use super::error::DesignError;
 use super::output::files::{write_final, write_summary};
 use super::plant::write_plant;
@@ -64,32 +67,26 @@ pub struct DesignRun {
     pub stages_computed: usize,
     /// Stages reused from earlier invocations.
     pub stages_reused: usize,
+    /// The run had ended before this invocation, which computed and
+    /// wrote nothing.
+    pub finished_before: bool,
 }
 
-/// Starts a new run of `config` in `dir` (created if missing; refused if
-/// it already holds a run).
+/// Starts a new run of `config` in `dir` (created if missing), or
+/// continues the run of the same configuration there; any other content
+/// is refused ([`RunDir::for_start`]; `--force` is
+/// [`RunDir::for_start`] with [`Replace`](super::directory::Replace)).
 pub fn start(
     config: &SystemConfig,
     dir: &Path,
     options: &RunOptions,
     progress: &(dyn Fn(&Progress) + Sync),
 ) -> Result<DesignRun, DesignError> {
-    config.check()?;
-    if dir.join(super::state::STATE_FILE).exists() {
-        return Err(DesignError::Exists {
-            dir: dir.to_path_buf(),
-        });
-    }
-    std::fs::create_dir_all(dir).map_err(DesignError::io(dir))?;
-    let text = commented_toml(config).map_err(|e| DesignError::output(CONFIG_FILE, e))?;
-    write_atomic(dir, CONFIG_FILE, text)?;
-    let state = RunState::default();
-    state.save(dir)?;
-    drive(config.clone(), dir, state, options, progress)
+    RunDir::for_start(config, dir, &super::directory::Replace::default())?.run(options, progress)
 }
 
 /// Continues the run in `dir`: its finished stages are reused, the rest
-/// computed. With `config`, it must equal the run's `config.toml` (the
+/// computed. With `config`, it must equal the run's configuration (the
 /// error names the first differing field).
 pub fn resume(
     dir: &Path,
@@ -97,15 +94,61 @@ pub fn resume(
     options: &RunOptions,
     progress: &(dyn Fn(&Progress) + Sync),
 ) -> Result<DesignRun, DesignError> {
+    RunDir::for_resume(dir, config)?.run(options, progress)
+}
+
+impl RunDir {
+    /// Runs the design in the claimed directory (a new run, or the one
+    /// there continued); the lock is let go at the end.
+    pub fn run(
+        self,
+        options: &RunOptions,
+        progress: &(dyn Fn(&Progress) + Sync),
+    ) -> Result<DesignRun, DesignError> {
+        let dir = self.dir.as_path();
+        match &self.plan {
+            Plan::New(config) => {
+                let text =
+                    commented_toml(config).map_err(|e| DesignError::output(CONFIG_FILE, e))?;
+                write_atomic(dir, CONFIG_FILE, text)?;
+                let state = RunState::new(config)?;
+                state.save(dir)?;
+                drive(config.clone(), dir, state, options, progress)
+            }
+            Plan::Continue(given) => continue_run(dir, given.as_ref(), options, progress),
+        }
+    }
+}
+
+/// Goes on with the run in `dir`: its `config.toml` must be the
+/// configuration it started with (and `given`, if any); a finished run is
+/// reported as it is, nothing written.
+fn continue_run(
+    dir: &Path,
+    given: Option<&SystemConfig>,
+    options: &RunOptions,
+    progress: &(dyn Fn(&Progress) + Sync),
+) -> Result<DesignRun, DesignError> {
     let mut state = RunState::load(dir)?;
+    let started = state.started_with(dir)?;
     let path = dir.join(CONFIG_FILE);
     let text = std::fs::read_to_string(&path).map_err(DesignError::io(&path))?;
-    let stored = SystemConfig::from_toml(&text).map_err(|e| DesignError::State {
+    let file = SystemConfig::from_toml(&text).map_err(|source| DesignError::RunConfig {
         path: path.clone(),
-        message: e.to_string(),
+        source: Box::new(source),
     })?;
-    if let Some(given) = config {
-        if let Some((field, given, stored)) = first_difference(given, &stored) {
+    if !state.is_of(&file)? {
+        let (field, now, then) = first_difference(&file, &started)
+            .unwrap_or_else(|| ("configuration".into(), "?".into(), "?".into()));
+        return Err(DesignError::ConfigEdited {
+            path,
+            field,
+            now,
+            then,
+        });
+    }
+    if let Some(given) = given {
+        if let Some((field, given, stored)) = first_difference(given, &started) {
             return Err(DesignError::ConfigMismatch {
                 dir: dir.to_path_buf(),
                 field,
@@ -115,12 +158,26 @@ pub fn resume(
         }
     }
     state.consistent_prefix(dir);
-    drive(stored, dir, state, options, progress)
+    if state.outcome.is_some() {
+        let summary = summary::build(&started, dir, &state)?;
+        return Ok(DesignRun {
+            dir: dir.to_path_buf(),
+            outcome: state.outcome,
+            summary,
+            stages_computed: 0,
+            stages_reused: 0,
+            finished_before: true,
+        });
+    }
+    drive(started, dir, state, options, progress)
 }
 
 /// The first `table.key` whose value differs between two configurations,
 /// with both values.
-fn first_difference(a: &SystemConfig, b: &SystemConfig) -> Option<(String, String, String)> {
+pub(crate) fn first_difference(
+    a: &SystemConfig,
+    b: &SystemConfig,
+) -> Option<(String, String, String)> {
     let value = |c: &SystemConfig| toml::Value::try_from(c).ok();
     let (Some(toml::Value::Table(a)), Some(toml::Value::Table(b))) = (value(a), value(b)) else {
         return (a != b).then(|| ("configuration".into(), "?".into(), "?".into()));
@@ -278,6 +335,7 @@ fn drive(
         summary,
         stages_computed: computed,
         stages_reused: reused,
+        finished_before: false,
     })
 }
 

@@ -16,7 +16,8 @@ use crate::topology::eslso::EslsoError;
 use crate::topology::pressure::PressureError;
 use crate::vehicle::VehicleError;
 
-use super::state::Stage;
+use super::lock::LockError;
+use super::state::{Stage, StateProblem};
 
 /// Why a design run stopped.
 #[derive(Debug, thiserror::Error)]
@@ -54,11 +55,106 @@ pub enum DesignError {
         /// What is wrong.
         message: String,
     },
-    /// A new run was asked for in a directory that holds one.
-    #[error("{d} already holds a design run; continue it with --resume {d} or choose another output directory", d = .dir.display())]
+    /// A new run was asked for in a directory that holds a run of another
+    /// configuration.
+    #[error(
+        "{d} holds a design run of another configuration ({field}: {given} here, {stored} in that run); \
+         continue that run with --resume {d}, replace it with --force, or choose another --out",
+        d = .dir.display()
+    )]
     Exists {
         /// The directory.
         dir: PathBuf,
+        /// The first differing field, `table.key`.
+        field: String,
+        /// Its value in the configuration given.
+        given: String,
+        /// Its value in the run's.
+        stored: String,
+    },
+    /// A new run was asked for in a directory that holds other files.
+    #[error(
+        "{d} holds files that are not a design run ({}); fwav design writes only into a new or \
+         empty directory or a run of its own: choose another --out, or add --force to delete \
+         what {d} holds and start there",
+        listed(.names),
+        d = .dir.display()
+    )]
+    NotARun {
+        /// The directory.
+        dir: PathBuf,
+        /// What it holds, sorted.
+        names: Vec<String>,
+    },
+    /// The output path is a file.
+    #[error("{} is not a directory: choose another --out", .path.display())]
+    NotADirectory {
+        /// The path.
+        path: PathBuf,
+    },
+    /// `--force` would delete an input of the run.
+    #[error(
+        "--force would delete {}, which this run reads, with the rest of {}: keep the \
+         configuration outside the output directory, or choose another --out",
+        .input.display(),
+        .dir.display()
+    )]
+    InputInside {
+        /// The output directory.
+        dir: PathBuf,
+        /// The input, as given.
+        input: PathBuf,
+    },
+    /// `--force` would delete the working directory.
+    #[error(
+        "--force would delete {d}, which holds the current directory: run fwav from elsewhere, \
+         or choose another --out",
+        d = .dir.display()
+    )]
+    WorkingDirectoryInside {
+        /// The output directory.
+        dir: PathBuf,
+    },
+    /// Another process computes in the run's directory.
+    #[error(transparent)]
+    Lock(#[from] LockError),
+    /// The run's state file cannot be used.
+    #[error(
+        "{p} cannot be used: {problem}. The run cannot be resumed from it: start the design \
+         again with --force (deletes what the directory holds), or with another --out",
+        p = .path.display()
+    )]
+    StateUnreadable {
+        /// The state file.
+        path: PathBuf,
+        /// What is wrong with it.
+        problem: StateProblem,
+    },
+    /// The run's `config.toml` does not parse or is refused.
+    #[error("{}: {source}", .path.display())]
+    RunConfig {
+        /// The run's `config.toml`.
+        path: PathBuf,
+        /// The cause.
+        source: Box<ConfigError>,
+    },
+    /// The run's `config.toml` was edited after the run started.
+    #[error(
+        "{p} was edited after the run started ({field}: {now} in the file, {then} when the run \
+         started); a run goes on only with the configuration it started with, so that no cycle \
+         mixes the two: undo the edit to resume, or start a new run of the edited file (another \
+         --out, or --force)",
+        p = .path.display()
+    )]
+    ConfigEdited {
+        /// The run's `config.toml`.
+        path: PathBuf,
+        /// The first differing field, `table.key`.
+        field: String,
+        /// Its value in the file now.
+        now: String,
+        /// Its value when the run started.
+        then: String,
     },
     /// A resume was asked for where there is no run.
     #[error("{d} holds no design run to resume (no state.json)", d = .dir.display())]
@@ -179,6 +275,21 @@ pub enum DesignError {
         /// The stage.
         stage: Stage,
     },
+}
+
+/// A directory's first few names, for a message.
+fn listed(names: &[String]) -> String {
+    const SHOWN: usize = 4;
+    let mut text = names
+        .iter()
+        .take(SHOWN)
+        .map(String::as_str)
+        .collect::<Vec<_>>()
+        .join(", ");
+    if names.len() > SHOWN {
+        text.push_str(&format!(" and {} more", names.len() - SHOWN));
+    }
+    text
 }
 
 impl DesignError {

@@ -9,6 +9,8 @@
 //! design variable changes.
 //!
 //! - [`driver`]: the cycle loop, [`start`] and [`resume`].
+//! - [`directory`]: where a run may write ([`RunDir`]: an output
+//!   directory checked, made and locked), and [`lock`], its lock file.
 //! - [`stage`]: the three stages as functions from files to files (the
 //!   computation, and the order of reading, computing and writing).
 //! - [`records`]: each stage's JSON record (`system.json`,
@@ -28,8 +30,10 @@
 //! disciplines, [`crate::output`]'s tools for `mdois/output/`); nothing
 //! imports `mdois` but the program.
 
+pub mod directory;
 pub mod driver;
 pub mod error;
+pub mod lock;
 pub mod output;
 pub mod plant;
 pub mod profile;
@@ -39,6 +43,7 @@ pub mod stage;
 pub mod state;
 pub mod summary;
 
+pub use directory::{Replace, RunDir};
 pub use driver::{resume, start, DesignRun, RunOptions};
 pub use error::DesignError;
 pub use progress::{Event, Progress};

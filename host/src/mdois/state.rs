@@ -2,7 +2,8 @@
 //! directory: which stages of which cycle are finished, by which
 //! invocation of the driver (a fresh start is run 1, each resume the next
 //! number), in how many seconds and with which files, and the outcome once
-//! the run is over.
+//! the run is over; and the configuration the run started with, with its
+//! SHA-256, so that a resume refuses a `config.toml` edited since.
 //!
 //! A stage's files are written (atomically) before the state marks it
 //! finished, and the state itself is written atomically, so a run killed
@@ -14,7 +15,10 @@
 use std::path::Path;
 
 use serde::{Deserialize, Serialize};
+use sha2::{Digest, Sha256};
 
+use crate::config::SystemConfig;
+use crate::file_format::{FileFormat, FormatError};
 use crate::files::write_atomic;
 
 use super::error::DesignError;
@@ -22,8 +26,45 @@ use super::error::DesignError;
 /// The state file's name in the run's directory.
 pub const STATE_FILE: &str = "state.json";
 
-/// The `format` value of the state file this build reads and writes.
-pub const STATE_FORMAT: &str = "fwav-mdois-state-1";
+/// The state file's format. Version 2 holds the configuration the run
+/// started with and its hash; version 1 (`"format": "fwav-mdois-state-1"`,
+/// no `format_version`) did not, and is refused.
+pub const STATE: FileFormat = FileFormat {
+    file: STATE_FILE,
+    format: "fwav-mdois-state",
+    version: 2,
+};
+
+/// The `format` of the state files of earlier builds (version 1).
+const EARLIER_FORMAT: &str = "fwav-mdois-state-1";
+
+/// Why a state file cannot be used.
+#[derive(Debug, thiserror::Error)]
+pub enum StateProblem {
+    /// Not a state file of this build's format (corrupt, cut short, or of
+    /// another kind or version).
+    #[error(transparent)]
+    Format(#[from] FormatError),
+    /// A state file of an earlier build, without the configuration's
+    /// hash.
+    #[error(
+        "it was written by an earlier fwav (format {EARLIER_FORMAT:?}, without the configuration's hash); \
+         this build reads {:?} version {}", STATE.format, STATE.version
+    )]
+    Earlier,
+    /// The configuration it holds does not parse.
+    #[error("its configuration does not parse: {0}")]
+    Configuration(toml::de::Error),
+    /// A run is numbered otherwise than the driver numbers them (1, 2,
+    /// ... in order).
+    #[error("run {run} is numbered {number}: the driver numbers its runs 1, 2, ... in order")]
+    RunNumber {
+        /// The run's position in `runs`, from 1.
+        run: usize,
+        /// The number it has.
+        number: usize,
+    },
+}
 
 /// The stages of a design cycle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -127,8 +168,15 @@ pub enum Outcome {
 /// The whole state file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RunState {
-    /// [`STATE_FORMAT`].
+    /// [`STATE`]'s format.
     pub format: String,
+    /// [`STATE`]'s version.
+    pub format_version: u32,
+    /// SHA-256 (hex) of `configuration`: a resume compares the run's
+    /// `config.toml` with it.
+    pub configuration_sha256: String,
+    /// The configuration the run started with: every key, as TOML.
+    pub configuration: String,
     /// Every invocation of the driver.
     pub runs: Vec<RunRecord>,
     /// The cycles begun, in order.
@@ -137,18 +185,32 @@ pub struct RunState {
     pub outcome: Option<Outcome>,
 }
 
-impl Default for RunState {
-    fn default() -> Self {
-        Self {
-            format: STATE_FORMAT.to_string(),
-            runs: Vec::new(),
-            cycles: Vec::new(),
-            outcome: None,
-        }
-    }
+/// A configuration as the state keeps it (every key, no comments) and its
+/// hash.
+fn canonical(config: &SystemConfig) -> Result<(String, String), DesignError> {
+    let text = toml::to_string(config).map_err(|e| DesignError::output(STATE_FILE, e))?;
+    let hash = Sha256::digest(text.as_bytes())
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect();
+    Ok((text, hash))
 }
 
 impl RunState {
+    /// The state of a new run of `config`: nothing done yet.
+    pub fn new(config: &SystemConfig) -> Result<Self, DesignError> {
+        let (configuration, configuration_sha256) = canonical(config)?;
+        Ok(Self {
+            format: STATE.format.to_string(),
+            format_version: STATE.version,
+            configuration_sha256,
+            configuration,
+            runs: Vec::new(),
+            cycles: Vec::new(),
+            outcome: None,
+        })
+    }
+
     /// Reads `dir/state.json`.
     pub fn load(dir: &Path) -> Result<Self, DesignError> {
         let path = dir.join(STATE_FILE);
@@ -164,25 +226,24 @@ impl RunState {
                 }
             }
         })?;
-        let state: Self = serde_json::from_str(&text).map_err(|e| DesignError::State {
-            path: path.clone(),
-            message: e.to_string(),
+        let state: Self = STATE.parse(&text).map_err(|error| {
+            let problem = match error {
+                FormatError::WrongFormat {
+                    found: Some(ref f), ..
+                } if f == EARLIER_FORMAT => StateProblem::Earlier,
+                other => StateProblem::Format(other),
+            };
+            DesignError::StateUnreadable {
+                path: path.clone(),
+                problem,
+            }
         })?;
-        if state.format != STATE_FORMAT {
-            return Err(DesignError::State {
-                path,
-                message: format!("format {:?}, expected {STATE_FORMAT:?}", state.format),
-            });
-        }
         // The driver numbers its invocations 1, 2, ... in order; another
         // number is not one it wrote (and usize::MAX overflowed the next).
-        if let Some((i, r)) = (1..).zip(&state.runs).find(|(i, r)| r.run != *i) {
-            return Err(DesignError::State {
+        if let Some((run, r)) = (1..).zip(&state.runs).find(|(i, r)| r.run != *i) {
+            return Err(DesignError::StateUnreadable {
                 path,
-                message: format!(
-                    "run {i} is numbered {}: the driver numbers its runs 1, 2, ... in order",
-                    r.run
-                ),
+                problem: StateProblem::RunNumber { run, number: r.run },
             });
         }
         Ok(state)
@@ -190,12 +251,21 @@ impl RunState {
 
     /// Writes `dir/state.json` atomically.
     pub fn save(&self, dir: &Path) -> Result<(), DesignError> {
-        let text = serde_json::to_string_pretty(self).map_err(|e| DesignError::State {
-            path: dir.join(STATE_FILE),
-            message: e.to_string(),
-        })?;
-        write_atomic(dir, STATE_FILE, text)?;
+        write_atomic(dir, STATE_FILE, STATE.to_json(self, true)?)?;
         Ok(())
+    }
+
+    /// Whether `config` is the configuration the run started with.
+    pub fn is_of(&self, config: &SystemConfig) -> Result<bool, DesignError> {
+        Ok(canonical(config)?.1 == self.configuration_sha256)
+    }
+
+    /// The configuration the run started with (the run is in `dir`).
+    pub fn started_with(&self, dir: &Path) -> Result<SystemConfig, DesignError> {
+        toml::from_str(&self.configuration).map_err(|e| DesignError::StateUnreadable {
+            path: dir.join(STATE_FILE),
+            problem: StateProblem::Configuration(e),
+        })
     }
 
     /// The record of `stage` of `cycle`, if finished.
@@ -284,7 +354,7 @@ mod tests {
         for f in ["s1", "k1", "t1", "s2"] {
             std::fs::write(dir.join(f), "x").unwrap();
         }
-        let mut state = RunState::default();
+        let mut state = RunState::new(&SystemConfig::default()).unwrap();
         state.finish(1, Stage::System, record(&["s1"]));
         state.finish(1, Stage::Kinematics, record(&["k1"]));
         state.finish(1, Stage::Topology, record(&["t1"]));

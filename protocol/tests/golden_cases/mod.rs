@@ -69,6 +69,15 @@ pub fn requests() -> Vec<(&'static str, Request)> {
         ),
         ("clear_faults", r(13, Command::ClearFaults)),
         ("get_limits", r(u16::MAX, Command::GetLimits)),
+        (
+            "heartbeat",
+            r(
+                14,
+                Command::Heartbeat {
+                    session: 0x0001_e240,
+                },
+            ),
+        ),
     ]
 }
 
@@ -163,6 +172,19 @@ pub fn device_messages() -> Vec<(&'static str, DeviceMessage)> {
                 amplitude_est_rad: 0.52,
                 frequency_est_hz: 11.0,
             }),
+        ),
+        (
+            "armed",
+            resp(
+                4,
+                Reply::Armed {
+                    session: 0x0001_e240,
+                },
+            ),
+        ),
+        (
+            "nack_other_session",
+            resp(14, Reply::Nack(NackReason::OtherSession)),
         ),
     ]
 }

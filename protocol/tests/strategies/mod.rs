@@ -94,6 +94,7 @@ pub fn command(f: bool) -> impl Strategy<Value = Command> {
         )),
         Just(Command::ClearFaults),
         Just(Command::GetLimits),
+        any::<u32>().prop_map(|session| Command::Heartbeat { session }),
     ]
 }
 
@@ -252,6 +253,7 @@ pub fn nack(f: bool) -> impl Strategy<Value = NackReason> {
         Just(NackReason::Storage),
         Just(NackReason::Busy),
         Just(NackReason::Unsupported),
+        Just(NackReason::OtherSession),
     ]
 }
 
@@ -266,6 +268,7 @@ pub fn reply(f: bool) -> impl Strategy<Value = Reply> {
             heapless::Vec::from_slice(&v).expect("at most MAX_PARAMS")
         )),
         limits(f).prop_map(Reply::Limits),
+        any::<u32>().prop_map(|session| Reply::Armed { session }),
     ]
 }
 

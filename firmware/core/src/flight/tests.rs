@@ -15,6 +15,8 @@ struct Bench {
     fc: FlightController,
     now_us: u64,
     seq: u16,
+    /// The session of the last arming.
+    session: u32,
     angle: f32,
     current: f32,
 }
@@ -25,6 +27,7 @@ impl Bench {
             fc: FlightController::new(L),
             now_us: 0,
             seq: 0,
+            session: 0,
             angle: 0.0,
             current: 0.1,
         }
@@ -76,14 +79,31 @@ impl Bench {
             .collect()
     }
 
-    /// Runs with a ping every 0.1 s (the host's heartbeat).
+    /// Arms; keeps the session for the heartbeats.
+    fn arm(&mut self) {
+        match self.ask(Command::Arm) {
+            Reply::Armed { session } => self.session = session,
+            other => panic!("arming refused: {other:?}"),
+        }
+    }
+
+    /// The controlling session's heartbeat.
+    fn heartbeat(&mut self) -> Reply {
+        self.ask(Command::Heartbeat {
+            session: self.session,
+        })
+    }
+
+    /// Runs with a heartbeat every 0.1 s (while the device is armed).
     fn run_with_heartbeat(&mut self, seconds: f32) -> Vec<Actuation> {
         let mut out = Vec::new();
         for _ in 0..(seconds / 0.1) as usize {
-            assert_eq!(
-                self.ask(Command::Ping { nonce: 1 }),
-                Reply::Pong { nonce: 1 }
-            );
+            let expected = if self.fc.is_armed() {
+                Reply::Ack
+            } else {
+                Reply::Nack(NackReason::NotArmed)
+            };
+            assert_eq!(self.heartbeat(), expected);
             out.extend(self.run(0.1));
         }
         out
@@ -110,7 +130,7 @@ fn flying() -> Bench {
     let mut b = Bench::new();
     b.connect();
     assert_eq!(b.ask(Command::UploadProfile(cruise())), Reply::Ack);
-    assert_eq!(b.ask(Command::Arm), Reply::Ack);
+    b.arm();
     assert_eq!(b.ask(Command::Start), Reply::Ack);
     b
 }
@@ -130,7 +150,7 @@ fn every_refusal_reason() {
     b.connect();
     // Start: not armed, then no profile.
     assert_eq!(nack(b.ask(Command::Start)), NackReason::NotArmed);
-    assert_eq!(b.ask(Command::Arm), Reply::Ack);
+    b.arm();
     assert_eq!(nack(b.ask(Command::Start)), NackReason::NoProfile);
     // An invalid profile, with its reason.
     let mut bad = cruise();
@@ -191,7 +211,7 @@ fn every_refusal_reason() {
         NackReason::Faulted(FaultFlags::STORAGE)
     );
     assert_eq!(b.ask(Command::ClearFaults), Reply::Ack);
-    assert_eq!(b.ask(Command::Arm), Reply::Ack);
+    b.arm();
 }
 
 #[test]
@@ -231,8 +251,8 @@ fn link_silence_ramps_to_rest_within_a_wingbeat_then_disarms() {
     let mut b = flying();
     b.run_with_heartbeat(2.0);
     let timeout = b.fc.params().get(ParamId::LinkTimeout);
-    // The last frame; then silence.
-    assert_eq!(b.ask(Command::Ping { nonce: 2 }), Reply::Pong { nonce: 2 });
+    // The last heartbeat; then silence.
+    assert_eq!(b.heartbeat(), Reply::Ack);
     let silence = b.run(timeout + 1.0 / 11.0 + 0.01);
     // Still driving until the timeout...
     let detect = (timeout / DT) as usize;
@@ -254,7 +274,7 @@ fn link_silence_ramps_to_rest_within_a_wingbeat_then_disarms() {
         NackReason::Faulted(FaultFlags::LINK_LOSS)
     );
     assert_eq!(b.ask(Command::ClearFaults), Reply::Ack);
-    assert_eq!(b.ask(Command::Arm), Reply::Ack);
+    b.arm();
 }
 
 #[test]
@@ -265,7 +285,7 @@ fn heartbeat_keeps_the_link_alive_and_silence_while_idle_disarms_at_once() {
     assert_eq!(b.ask(Command::Stop), Reply::Ack);
     b.run_with_heartbeat(1.0);
     let timeout = b.fc.params().get(ParamId::LinkTimeout);
-    assert_eq!(b.ask(Command::Ping { nonce: 2 }), Reply::Pong { nonce: 2 });
+    assert_eq!(b.heartbeat(), Reply::Ack);
     let acts = b.run(timeout + 0.01);
     let off = acts.iter().position(|a| !a.bridge_enabled).unwrap();
     assert!((off as f32 * DT - timeout).abs() < 2.0 * DT);
@@ -316,14 +336,14 @@ fn profile_ending_in_stop_disarms() {
     let seg = Segment::symmetric(11.0, 20.0 * DEG, 0.0, 1.0, 0.5);
     let p = Profile::from_segments(&[seg], EndAction::Stop).unwrap();
     assert_eq!(b.ask(Command::UploadProfile(p)), Reply::Ack);
-    assert_eq!(b.ask(Command::Arm), Reply::Ack);
+    b.arm();
     assert_eq!(b.ask(Command::Start), Reply::Ack);
     b.run_with_heartbeat(2.0);
     let s = b.status();
     assert!(!s.armed);
     assert_eq!(s.last_disarm, Some(DisarmReason::ProfileEnded));
     assert!(s.faults.is_empty());
-    assert_eq!(b.ask(Command::Arm), Reply::Ack, "re-arming works");
+    b.arm(); // re-arming works
     b.run_with_heartbeat(0.2);
     assert!(b.fc.is_armed(), "and does not disarm again by itself");
 }
@@ -478,6 +498,7 @@ fn any_command() -> impl Strategy<Value = Command> {
         )),
         Just(Command::ClearFaults),
         Just(Command::GetLimits),
+        any::<u32>().prop_map(|session| Command::Heartbeat { session }),
     ]
 }
 
@@ -521,7 +542,7 @@ fn retries_by_sequence_number_are_not_executed_twice() {
     let mut b = Bench::new();
     b.connect();
     assert_eq!(b.ask(Command::UploadProfile(cruise())), Reply::Ack);
-    assert_eq!(b.ask(Command::Arm), Reply::Ack);
+    b.arm();
     assert_eq!(b.ask(Command::Start), Reply::Ack);
     let seq = b.seq;
     let again = b.fc.handle(
@@ -560,4 +581,82 @@ fn retries_by_sequence_number_are_not_executed_twice() {
             ..
         }))
     ));
+}
+
+/// The controlling client dies; a second client keeps reading (handshake,
+/// limits, status, parameters, profile, ping) every 50 ms. Read-only traffic
+/// does not feed the link failsafe: the wing is at rest and disarmed within
+/// the link timeout and one wingbeat of the last heartbeat.
+#[test]
+fn read_only_traffic_from_another_client_does_not_keep_an_orphaned_wing_flying() {
+    let mut b = flying();
+    b.run_with_heartbeat(1.0);
+    let timeout = b.fc.params().get(ParamId::LinkTimeout);
+    let mut off_after = None;
+    for k in 0..40u32 {
+        b.connect();
+        for command in [
+            Command::GetLimits,
+            Command::GetStatus,
+            Command::GetParams,
+            Command::ReadProfile,
+            Command::Ping { nonce: k },
+        ] {
+            assert!(!matches!(b.ask(command), Reply::Nack(_)));
+        }
+        if !b.fc.is_armed() {
+            off_after = Some(k as f32 * 0.05);
+            break;
+        }
+        b.run(0.05);
+    }
+    let t = off_after.expect("still armed after 2 s of read-only polling");
+    assert!(t <= timeout + 1.0 / 11.0 + 0.05, "disarmed after {t} s");
+    assert!(b.angle.abs() < 1e-3, "at rest: {}", b.angle);
+    let s = b.status();
+    assert!(s.faults.contains(FaultFlags::LINK_LOSS), "{s:?}");
+    assert_eq!(s.last_disarm, Some(DisarmReason::LinkLoss));
+}
+
+/// Only the session of the last arming feeds the failsafe: heartbeats with
+/// another number are refused and do not keep the device armed; heartbeats
+/// while disarmed are refused; a new arming at rest opens a new session and
+/// the old one's heartbeats are refused from then on.
+#[test]
+fn only_the_arming_sessions_heartbeats_keep_the_device_armed() {
+    let mut b = Bench::new();
+    b.connect();
+    assert_eq!(nack(b.heartbeat()), NackReason::NotArmed);
+    b.arm();
+    let first = b.session;
+    let foreign = Command::Heartbeat {
+        session: first.wrapping_add(1),
+    };
+    assert_eq!(nack(b.ask(foreign.clone())), NackReason::OtherSession);
+    let mut acts = Vec::new();
+    for _ in 0..5 {
+        b.ask(foreign.clone());
+        acts.extend(b.run(0.1));
+    }
+    let timeout = b.fc.params().get(ParamId::LinkTimeout);
+    let off = acts
+        .iter()
+        .position(|a| !a.bridge_enabled)
+        .expect("disarmed");
+    assert!((off as f32 * DT - timeout).abs() < 2.0 * DT, "off at {off}");
+    assert_eq!(b.status().last_disarm, Some(DisarmReason::LinkLoss));
+
+    assert_eq!(b.ask(Command::ClearFaults), Reply::Ack);
+    b.arm();
+    let second = b.session;
+    assert_ne!(second, first);
+    b.arm();
+    assert_ne!(b.session, second, "re-arming at rest opens a new session");
+    assert_eq!(
+        nack(b.ask(Command::Heartbeat { session: second })),
+        NackReason::OtherSession
+    );
+    assert_eq!(b.heartbeat(), Reply::Ack);
+    b.run_with_heartbeat(1.0);
+    assert!(b.fc.is_armed());
 }
