@@ -62,13 +62,53 @@ fn load_plant(path: Option<&Path>) -> Result<PlantParams> {
 }
 
 fn main() -> ExitCode {
+    end_quietly_on_a_closed_pipe();
     match run(Cli::parse()) {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            eprintln!("error: {}", error_text(&e));
             ExitCode::FAILURE
         }
     }
+}
+
+/// A closed output pipe (`hil-sim run S | head -1`) ends the program as it
+/// ends `cat`: killed by SIGPIPE, status 141 in a shell, nothing printed.
+/// Rust starts a program with SIGPIPE ignored, so a write to a closed
+/// pipe fails and `println!` panics (exit 101); the default action,
+/// restored first thing, covers every print at once. `serve` writes to
+/// its pseudo-terminal, where a vanished client is an I/O error, not
+/// SIGPIPE.
+#[cfg(unix)]
+fn end_quietly_on_a_closed_pipe() {
+    // SAFETY: SIG_DFL installs no handler (no code runs in the signal's
+    // context); called first in main, before any other thread exists.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
+}
+
+#[cfg(not(unix))]
+fn end_quietly_on_a_closed_pipe() {}
+
+/// An error as one line: its message, then each cause in order that the
+/// text so far does not already hold (the errors of the scenario, the
+/// plant and the link read whole and also hand their cause on as
+/// `source()`, which anyhow's `{:#}` printed a second time).
+fn error_text(e: &anyhow::Error) -> String {
+    let mut text = String::new();
+    for cause in e.chain() {
+        let part = cause.to_string();
+        let part = part.trim_end();
+        if text.contains(part) {
+            continue;
+        }
+        if !text.is_empty() {
+            text.push_str(": ");
+        }
+        text.push_str(part);
+    }
+    text
 }
 
 fn run(cli: Cli) -> Result<ExitCode> {
@@ -142,9 +182,14 @@ fn run(cli: Cli) -> Result<ExitCode> {
                     report.energy_balance_residual_pct
                 );
                 if !report.settle_cycles.is_empty() {
+                    let cycles: Vec<String> = report
+                        .settle_cycles
+                        .iter()
+                        .map(|c| c.map_or("not settled".to_owned(), |n| n.to_string()))
+                        .collect();
                     println!(
-                        "  settling after segment changes (cycles): {:?}",
-                        report.settle_cycles
+                        "  settling after segment changes (cycles): {}",
+                        cycles.join(", ")
                     );
                 }
                 if let Some(t) = report.time_to_rest_after_link_silence_s {

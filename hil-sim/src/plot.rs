@@ -4,20 +4,51 @@
 use std::path::Path;
 
 use plotters::prelude::*;
+use plotters_backend::DrawingErrorKind;
+use plotters_bitmap::BitMapBackendError;
 
 use crate::metrics::TracePoint;
 
-/// The picture could not be drawn (font, file or backend error).
+/// The picture could not be drawn.
 #[derive(Debug, thiserror::Error)]
-#[error("{0}")]
-pub struct PlotError(String);
+pub enum PlotError {
+    /// The PNG file could not be written (no such directory, no
+    /// permission, disk full): the file system's or the encoder's reason.
+    #[error("cannot write the file: {0}")]
+    File(Box<dyn std::error::Error + Send + Sync>),
+    /// The text could not be drawn (no font of the family found).
+    #[error("font: {0}")]
+    Font(Box<dyn std::error::Error + Send + Sync>),
+    /// The plotting backend failed otherwise (its message).
+    #[error("{0}")]
+    Backend(String),
+}
+
+/// The bitmap backend's errors, whose own text is Rust's debug form
+/// (`ImageError(IoError(Os { code: 2, ...`), taken apart into their
+/// reason.
+impl From<DrawingAreaErrorKind<BitMapBackendError>> for PlotError {
+    fn from(e: DrawingAreaErrorKind<BitMapBackendError>) -> Self {
+        match e {
+            DrawingAreaErrorKind::BackendError(DrawingErrorKind::DrawingError(bitmap)) => {
+                match bitmap {
+                    BitMapBackendError::IOError(io) => Self::File(Box::new(io)),
+                    BitMapBackendError::ImageError(image) => Self::File(Box::new(image)),
+                    BitMapBackendError::InvalidBuffer => {
+                        Self::Backend("the pixel buffer does not fit the picture".into())
+                    }
+                }
+            }
+            DrawingAreaErrorKind::BackendError(DrawingErrorKind::FontError(font)) => {
+                Self::Font(font)
+            }
+            other => Self::Backend(other.to_string()),
+        }
+    }
+}
 
 /// Draws the last second of `trace` to `png`.
 pub fn draw(trace: &[TracePoint], png: &Path) -> Result<(), PlotError> {
-    draw_panels(trace, png).map_err(|e| PlotError(e.to_string()))
-}
-
-fn draw_panels(trace: &[TracePoint], png: &Path) -> Result<(), Box<dyn std::error::Error>> {
     let end = trace.last().map_or(0.0, |p| p.sample.time_s);
     let shown: Vec<&TracePoint> = trace
         .iter()

@@ -4,6 +4,7 @@
 
 #![warn(clippy::too_many_lines)]
 
+use std::io::Write as _;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -154,7 +155,12 @@ enum ProfileCommand {
 }
 
 fn main() -> ExitCode {
-    let result = match Cli::parse().command {
+    end_quietly_on_a_closed_pipe();
+    let command = Cli::parse().command;
+    if holds_the_wing(&command) {
+        stop_the_wing_on_a_closed_pipe();
+    }
+    let result = match command {
         Command::Profile(ProfileCommand::Check { file, json }) => {
             return check_profile(&file, json)
         }
@@ -199,10 +205,81 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
         Err(e) => {
-            eprintln!("error: {e:#}");
+            // Never a panic, even with standard error gone too.
+            let _ = writeln!(std::io::stderr(), "error: {}", error_text(&e));
             ExitCode::from(1)
         }
     }
+}
+
+/// Whether the command keeps a wing flapping while it prints: `upload
+/// --start` and `monitor`. Their loops write their lines fallibly and, on
+/// a closed output, stop the wing first and then end with the error.
+fn holds_the_wing(command: &Command) -> bool {
+    matches!(
+        command,
+        Command::Upload { start: true, .. } | Command::Monitor { .. }
+    )
+}
+
+/// A closed output pipe (`fwav validate --list | head -1`) ends the
+/// program as it ends `cat`: killed by SIGPIPE, status 141 in a shell,
+/// nothing printed. Rust starts a program with SIGPIPE ignored, so a
+/// write to a closed pipe fails and `println!` panics (exit 101, "failed
+/// printing to stdout"); the default action, restored first thing, covers
+/// every print of the program (both streams, every command) at once,
+/// rather than a fallible writer threaded through each of them. A run
+/// ended this way is one killed at any moment, which the design run
+/// survives (its files are written atomically, `--resume` goes on). The
+/// two commands that keep a wing flapping go back to ignoring it
+/// ([`stop_the_wing_on_a_closed_pipe`]).
+#[cfg(unix)]
+fn end_quietly_on_a_closed_pipe() {
+    // SAFETY: SIG_DFL installs no handler (no code runs in the signal's
+    // context); called first in main, before any other thread exists.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
+}
+
+#[cfg(not(unix))]
+fn end_quietly_on_a_closed_pipe() {}
+
+/// For the commands that hold the wing ([`holds_the_wing`]): SIGPIPE
+/// ignored again (as Rust starts a program), so that a closed output is
+/// a write error their loops handle by stopping the wing, not the end of
+/// the program with the wing left flying to the device's link failsafe.
+#[cfg(unix)]
+fn stop_the_wing_on_a_closed_pipe() {
+    // SAFETY: SIG_IGN installs no handler; no other thread exists yet.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_IGN);
+    }
+}
+
+#[cfg(not(unix))]
+fn stop_the_wing_on_a_closed_pipe() {}
+
+/// An error as one line a person reads: its message, then each cause in
+/// order that the text so far does not already hold. The library's errors
+/// read whole (`cannot read F: <the OS's reason>`) and also hand their
+/// cause on as `source()`, which anyhow's `{:#}` prints again, once per
+/// level: "No such file or directory" came out twice, serde's message
+/// three times.
+fn error_text(e: &anyhow::Error) -> String {
+    let mut text = String::new();
+    for cause in e.chain() {
+        let part = cause.to_string();
+        let part = part.trim_end();
+        if text.contains(part) {
+            continue;
+        }
+        if !text.is_empty() {
+            text.push_str(": ");
+        }
+        text.push_str(part);
+    }
+    text
 }
 
 fn protocol_info(json: bool) {
@@ -263,7 +340,7 @@ fn print_profile(loaded: &ProfileFile) {
         println!("  {}", doc.description);
     }
     println!(
-        "  {} segment(s), {:.2} s per pass, then {:?}",
+        "  {} segment(s), {:.2} s per pass, then {}",
         doc.segments.len(),
         loaded.profile.duration_s(),
         doc.on_end

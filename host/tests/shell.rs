@@ -572,3 +572,25 @@ fn kept_factorizations_give_the_same_steps() {
         "{kept_iterations}"
     );
 }
+
+/// A plate held nowhere has a singular stiffness: the error says so in
+/// words, with the pivot, not in faer's debug form
+/// (`Numeric(NonPositivePivot { index: 0 })`) (issue 22).
+#[test]
+fn an_unsupported_plate_is_singular_in_words() {
+    let mesh =
+        ShellMesh::mapped(2, 2, |s, t| nalgebra::Vector3::new(0.1 * s, 0.1 * t, 0.0)).unwrap();
+    let sections = vec![Section::single(&Layer::MYLAR); mesh.elements.len()];
+    let e = fwav::shell::linear::LinearStatic::new(&mesh, &sections, &[])
+        .err()
+        .expect("a free plate cannot be factorized");
+    let text = e.to_string();
+    assert!(
+        text.contains("singular or indefinite") && text.contains("is not positive"),
+        "{text}"
+    );
+    assert!(
+        !text.contains('{') && !text.contains("NonPositivePivot"),
+        "{text}"
+    );
+}

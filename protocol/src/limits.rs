@@ -105,6 +105,18 @@ pub enum SlewQuantity {
     Frequency,
 }
 
+impl core::fmt::Display for SlewQuantity {
+    /// The quantity as a person names it (`amplitude`, `mean angle`,
+    /// `frequency`).
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self {
+            SlewQuantity::Amplitude => "amplitude",
+            SlewQuantity::Mean => "mean angle",
+            SlewQuantity::Frequency => "frequency",
+        })
+    }
+}
+
 /// Why a profile cannot be flown. Segment indices count from 0.
 ///
 /// Values are carried in the units of the wire (rad, Hz, s); the `Display`
@@ -205,7 +217,7 @@ pub enum ProfileError {
     /// A ramp changes a quantity faster than the slew limit at its peak
     /// (`RAMP_PEAK_RATE_FACTOR * |change| / ramp_s`; a ramp time of zero with
     /// any change is infinitely fast).
-    #[error("segment {segment}: the ramp changes the {quantity:?} at {} per s, the limit is {}", slew_display(*quantity, *rate), slew_display(*quantity, *max_rate))]
+    #[error("segment {segment}: the ramp changes the {quantity} at {} per s, the limit is {}", slew_display(*quantity, *rate), slew_display(*quantity, *max_rate))]
     SlewTooFast {
         /// Segment index (the segment whose ramp is too short).
         segment: u8,

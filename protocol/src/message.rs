@@ -224,7 +224,7 @@ pub enum NackReason {
     #[error("arming needs the amplitude at zero")]
     NotAtRest,
     /// Parameter value outside its range.
-    #[error("parameter {id:?} = {value} is outside {min}..={max}")]
+    #[error("parameter {} = {value} is outside {min}..={max} {}", id.info().name, id.info().unit)]
     ParamOutOfRange {
         /// Which parameter.
         id: ParamId,

@@ -86,6 +86,17 @@ pub enum EndAction {
     Stop,
 }
 
+impl core::fmt::Display for EndAction {
+    /// The name the JSON profile document uses (`hold`, `repeat`, `stop`).
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self {
+            EndAction::Hold => "hold",
+            EndAction::Repeat => "repeat",
+            EndAction::Stop => "stop",
+        })
+    }
+}
+
 /// The kinematic program uploaded to the flight controller.
 ///
 /// Construct it freely; check it with [`Profile::validate`] against the

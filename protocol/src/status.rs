@@ -104,6 +104,21 @@ pub enum DisarmReason {
     Reset,
 }
 
+impl core::fmt::Display for DisarmReason {
+    /// The reason as a person reads it (`link loss`, `over-current`).
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.write_str(match self {
+            DisarmReason::Command => "command",
+            DisarmReason::LinkLoss => "link loss",
+            DisarmReason::EncoderFault => "encoder fault",
+            DisarmReason::OverCurrent => "over-current",
+            DisarmReason::UnderVoltage => "under-voltage",
+            DisarmReason::ProfileEnded => "profile ended",
+            DisarmReason::Reset => "reset",
+        })
+    }
+}
+
 /// Counters of the frame decoder, wrapping at `u32::MAX`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, Schema)]
 pub struct LinkStats {

@@ -168,7 +168,7 @@ impl<T> Table<T> {
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum SettingError {
     /// A value outside its declared range.
-    #[error("{table}.{key} = {value} is outside {limits}")]
+    #[error("{table}.{key} = {value} {}", Complaint(limits))]
     OutOfRange {
         /// The table.
         table: &'static str,
@@ -192,6 +192,23 @@ pub enum SettingError {
         /// The declared range and unit.
         limits: Limits,
     },
+}
+
+/// What is wrong with a value outside `limits`, in the words that fit
+/// the kind of range: `is outside [0.01, 2] m` for an interval or an
+/// integer range, `must be increasing, each in [0, 80] deg` for a
+/// sequence, `must be "a" or "b"` for a choice.
+struct Complaint<'l>(&'l Limits);
+
+impl fmt::Display for Complaint<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.0.allowed {
+            Allowed::Real(_) | Allowed::Integer(_) => write!(f, "is outside {}", self.0),
+            Allowed::Increasing(_) | Allowed::Flag | Allowed::Choice(_) => {
+                write!(f, "must be {}", self.0)
+            }
+        }
+    }
 }
 
 impl SettingError {
@@ -300,7 +317,7 @@ mod tests {
             .unwrap_err();
         assert_eq!(
             e.to_string(),
-            "wing.levels_deg = [40, 30, 20] is outside increasing, each in [0, 80] deg"
+            "wing.levels_deg = [40, 30, 20] must be increasing, each in [0, 80] deg"
         );
         let e = WING
             .check(&Wing {
@@ -315,7 +332,7 @@ mod tests {
                 ..good()
             })
             .unwrap_err();
-        assert_eq!(e.to_string(), "wing.form = \"c\" is outside \"a\" or \"b\"");
+        assert_eq!(e.to_string(), "wing.form = \"c\" must be \"a\" or \"b\"");
     }
 
     /// A declaration that reads the wrong kind of value is refused.

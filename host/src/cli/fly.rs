@@ -116,7 +116,7 @@ fn status_line(s: &Status) -> String {
         s.running,
         s.active_segment.map_or("-".to_owned(), |i| i.to_string()),
         s.faults,
-        s.last_disarm.map_or("-".to_owned(), |r| format!("{r:?}")),
+        s.last_disarm.map_or("-".to_owned(), |r| r.to_string()),
         s.link.frames_ok,
         s.link.dropped()
     )
@@ -186,10 +186,13 @@ pub fn upload(
         "accepted": true,
         "saved": save,
     });
+    // Written fallibly: with --start a closed pipe is an error here, not
+    // SIGPIPE (main), and nothing flies yet.
     if json {
-        println!("{report:#}");
+        writeln!(std::io::stdout(), "{report:#}")?;
     } else {
-        println!(
+        writeln!(
+            std::io::stdout(),
             "{}: {} accepted {} ({} segment(s), {:.2} s per pass){}",
             path,
             device.hello.firmware,
@@ -197,7 +200,7 @@ pub fn upload(
             loaded.profile.segments.len(),
             loaded.profile.duration_s(),
             if save { ", saved to flash" } else { "" }
-        );
+        )?;
     }
     if start {
         fly(&mut device, duration)?;

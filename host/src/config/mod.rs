@@ -326,7 +326,7 @@ mod tests {
         let e = SystemConfig::from_toml("[design]\namplitude_deg = [40, 30, 20]\n").unwrap_err();
         assert_eq!(
             e.to_string(),
-            "design.amplitude_deg = [40, 30, 20] is outside increasing, each in [0, 80] deg"
+            "design.amplitude_deg = [40, 30, 20] must be increasing, each in [0, 80] deg"
         );
     }
 

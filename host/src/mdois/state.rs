@@ -55,6 +55,15 @@ pub enum StateProblem {
     /// The configuration it holds does not parse.
     #[error("its configuration does not parse: {0}")]
     Configuration(toml::de::Error),
+    /// A run is numbered otherwise than the driver numbers them (1, 2,
+    /// ... in order).
+    #[error("run {run} is numbered {number}: the driver numbers its runs 1, 2, ... in order")]
+    RunNumber {
+        /// The run's position in `runs`, from 1.
+        run: usize,
+        /// The number it has.
+        number: usize,
+    },
 }
 
 /// The stages of a design cycle.
@@ -217,15 +226,27 @@ impl RunState {
                 }
             }
         })?;
-        STATE.parse(&text).map_err(|error| {
+        let state: Self = STATE.parse(&text).map_err(|error| {
             let problem = match error {
                 FormatError::WrongFormat {
                     found: Some(ref f), ..
                 } if f == EARLIER_FORMAT => StateProblem::Earlier,
                 other => StateProblem::Format(other),
             };
-            DesignError::StateUnreadable { path, problem }
-        })
+            DesignError::StateUnreadable {
+                path: path.clone(),
+                problem,
+            }
+        })?;
+        // The driver numbers its invocations 1, 2, ... in order; another
+        // number is not one it wrote (and usize::MAX overflowed the next).
+        if let Some((run, r)) = (1..).zip(&state.runs).find(|(i, r)| r.run != *i) {
+            return Err(DesignError::StateUnreadable {
+                path,
+                problem: StateProblem::RunNumber { run, number: r.run },
+            });
+        }
+        Ok(state)
     }
 
     /// Writes `dir/state.json` atomically.

@@ -54,6 +54,14 @@ pub enum ImportError {
         /// What.
         message: String,
     },
+    /// A block says it has more entries than the file has lines left.
+    #[error("line {line}: a block of {count} entries runs past the end of the file")]
+    Truncated {
+        /// The block's header line.
+        line: usize,
+        /// The entries it announces.
+        count: usize,
+    },
     /// The mesh itself is bad.
     #[error(transparent)]
     Mesh(#[from] MeshError),
@@ -301,110 +309,24 @@ impl Bulk {
 /// Reads a Gmsh 4.x ASCII mesh; every quadrangle (type 3) and triangle
 /// (type 2) becomes an element with section `default`.
 pub fn gmsh(text: &str, default: Section) -> Result<ImportedMesh, ImportError> {
-    let lines: Vec<&str> = text.lines().collect();
-    let number = |line: usize, field: usize, t: &str| -> Result<f64, ImportError> {
-        t.parse().map_err(|_| ImportError::Number {
-            line: line + 1,
-            field,
-            text: t.to_string(),
-        })
+    let msh = Msh {
+        lines: text.lines().collect(),
     };
-    let row = |i: usize| -> Vec<&str> {
-        lines
-            .get(i)
-            .map_or(Vec::new(), |l| l.split_whitespace().collect())
-    };
-    let find = |tag: &str| lines.iter().position(|l| l.trim() == tag);
-    if let Some(i) = find("$MeshFormat") {
-        let version = row(i + 1).first().map_or(0.0, |v| v.parse().unwrap_or(0.0));
-        if !(4.0..5.0).contains(&version) || row(i + 1).get(1) != Some(&"0") {
+    if let Some(i) = msh.find("$MeshFormat") {
+        let version = msh
+            .row(i + 1)
+            .first()
+            .map_or(0.0, |v| v.parse().unwrap_or(0.0));
+        if !(4.0..5.0).contains(&version) || msh.row(i + 1).get(1) != Some(&"0") {
             return Err(ImportError::Unsupported {
                 line: i + 2,
                 message: "only Gmsh 4.x ASCII meshes are read".into(),
             });
         }
     }
-    let short = |line: usize| ImportError::Short {
-        line: line + 1,
-        card: "Gmsh block".into(),
-        needed: 4,
-    };
-    // A section opens with its tag, then a line whose first field is the
-    // number of entity blocks; the blocks start on the line after it.
-    let section = |tag: &str| -> Result<(usize, usize), ImportError> {
-        let start = find(tag).ok_or(ImportError::Unsupported {
-            line: 0,
-            message: format!("no {tag} section"),
-        })?;
-        let head = start + 1;
-        let blocks = number(head, 0, row(head).first().ok_or(short(head))?)? as usize;
-        Ok((blocks, start + 2))
-    };
-    let (blocks, mut at) = section("$Nodes")?;
-    let mut ids = Vec::new();
-    let mut nodes = Vec::new();
-    for _ in 0..blocks {
-        let head = row(at);
-        let count = number(at, 3, head.get(3).ok_or(short(at))?)? as usize;
-        for k in 0..count {
-            ids.push(number(
-                at + 1 + k,
-                0,
-                row(at + 1 + k).first().ok_or(short(at + 1 + k))?,
-            )? as i64);
-        }
-        for k in 0..count {
-            let r = row(at + 1 + count + k);
-            let l = at + 1 + count + k;
-            if r.len() < 3 {
-                return Err(short(l));
-            }
-            nodes.push(Vector3::new(
-                number(l, 0, r[0])?,
-                number(l, 1, r[1])?,
-                number(l, 2, r[2])?,
-            ));
-        }
-        at += 1 + 2 * count;
-    }
+    let (ids, nodes) = msh.nodes()?;
     let index: HashMap<i64, usize> = ids.iter().enumerate().map(|(i, &id)| (id, i)).collect();
-    let (blocks, mut at) = section("$Elements")?;
-    let (mut elements, mut element_ids) = (Vec::new(), Vec::new());
-    for _ in 0..blocks {
-        let head = row(at);
-        if head.len() < 4 {
-            return Err(short(at));
-        }
-        let kind = number(at, 2, head[2])? as i64;
-        let count = number(at, 3, head[3])? as usize;
-        for k in 0..count {
-            let l = at + 1 + k;
-            let r = row(l);
-            let corners = match kind {
-                2 => 3,
-                3 => 4,
-                _ => continue,
-            };
-            if r.len() < 1 + corners {
-                return Err(short(l));
-            }
-            let mut c = [0usize; NODES];
-            for j in 0..corners {
-                let id = number(l, j + 1, r[j + 1])? as i64;
-                c[j] = *index.get(&id).ok_or(ImportError::Undefined {
-                    line: l + 1,
-                    what: "node",
-                    id,
-                })?;
-            }
-            if corners == 3 {
-                c[3] = c[2];
-            }
-            elements.push(c);
-            element_ids.push(number(l, 0, r[0])? as i64);
-        }
-        at += 1 + count;
-    }
+    let (elements, element_ids) = msh.elements(&index)?;
     let n = elements.len();
     Ok(ImportedMesh {
         mesh: ShellMesh::new(nodes, elements)?,
@@ -412,6 +334,147 @@ pub fn gmsh(text: &str, default: Section) -> Result<ImportedMesh, ImportError> {
         node_ids: ids,
         element_ids,
     })
+}
+
+/// The lines of a `.msh` file, with the readers of its sections.
+struct Msh<'t> {
+    lines: Vec<&'t str>,
+}
+
+impl Msh<'_> {
+    /// Field `field` of line `line` (0-based) as a number.
+    fn number(&self, line: usize, field: usize, t: &str) -> Result<f64, ImportError> {
+        t.parse().map_err(|_| ImportError::Number {
+            line: line + 1,
+            field,
+            text: t.to_string(),
+        })
+    }
+
+    /// The fields of line `i` (none past the end).
+    fn row(&self, i: usize) -> Vec<&str> {
+        self.lines
+            .get(i)
+            .map_or(Vec::new(), |l| l.split_whitespace().collect())
+    }
+
+    fn find(&self, tag: &str) -> Option<usize> {
+        self.lines.iter().position(|l| l.trim() == tag)
+    }
+
+    fn short(line: usize) -> ImportError {
+        ImportError::Short {
+            line: line + 1,
+            card: "Gmsh block".into(),
+            needed: 4,
+        }
+    }
+
+    /// A section opens with its tag, then a line whose first field is the
+    /// number of entity blocks; the blocks start on the line after it.
+    fn section(&self, tag: &str) -> Result<(usize, usize), ImportError> {
+        let start = self.find(tag).ok_or(ImportError::Unsupported {
+            line: 0,
+            message: format!("no {tag} section"),
+        })?;
+        let head = start + 1;
+        let first = self.row(head).first().copied().ok_or(Self::short(head))?;
+        let blocks = self.number(head, 0, first)? as usize;
+        Ok((blocks, start + 2))
+    }
+
+    /// The line after a block of `count` entries of `per` lines each whose
+    /// header is on line `at`, if the file holds them all (a count read as
+    /// a huge number is refused, never walked).
+    fn block_end(&self, at: usize, count: usize, per: usize) -> Result<usize, ImportError> {
+        count
+            .checked_mul(per)
+            .and_then(|n| n.checked_add(at + 1))
+            .filter(|&end| end <= self.lines.len())
+            .ok_or(ImportError::Truncated {
+                line: at + 1,
+                count,
+            })
+    }
+
+    /// The `$Nodes` section: the node ids and positions.
+    fn nodes(&self) -> Result<(Vec<i64>, Vec<Vector3<f64>>), ImportError> {
+        let (blocks, mut at) = self.section("$Nodes")?;
+        let mut ids = Vec::new();
+        let mut nodes = Vec::new();
+        for _ in 0..blocks {
+            let head = self.row(at);
+            let count = self.number(at, 3, head.get(3).ok_or(Self::short(at))?)? as usize;
+            let end = self.block_end(at, count, 2)?;
+            for l in at + 1..at + 1 + count {
+                let id = self.row(l).first().copied().ok_or(Self::short(l))?;
+                ids.push(self.number(l, 0, id)? as i64);
+            }
+            for l in at + 1 + count..end {
+                let r = self.row(l);
+                if r.len() < 3 {
+                    return Err(Self::short(l));
+                }
+                nodes.push(Vector3::new(
+                    self.number(l, 0, r[0])?,
+                    self.number(l, 1, r[1])?,
+                    self.number(l, 2, r[2])?,
+                ));
+            }
+            at = end;
+        }
+        Ok((ids, nodes))
+    }
+
+    /// The `$Elements` section: the corners (node indices, via `index`)
+    /// and ids of its quadrangles and triangles; other kinds are skipped.
+    fn elements(
+        &self,
+        index: &HashMap<i64, usize>,
+    ) -> Result<(Vec<[usize; NODES]>, Vec<i64>), ImportError> {
+        let (blocks, mut at) = self.section("$Elements")?;
+        let (mut elements, mut element_ids) = (Vec::new(), Vec::new());
+        for _ in 0..blocks {
+            let head = self.row(at);
+            if head.len() < 4 {
+                return Err(Self::short(at));
+            }
+            let kind = self.number(at, 2, head[2])? as i64;
+            let count = self.number(at, 3, head[3])? as usize;
+            let end = self.block_end(at, count, 1)?;
+            let corners = match kind {
+                2 => 3,
+                3 => 4,
+                // Not a shell element (points, lines, volumes): skipped.
+                _ => {
+                    at = end;
+                    continue;
+                }
+            };
+            for l in at + 1..end {
+                let r = self.row(l);
+                if r.len() < 1 + corners {
+                    return Err(Self::short(l));
+                }
+                let mut c = [0usize; NODES];
+                for j in 0..corners {
+                    let id = self.number(l, j + 1, r[j + 1])? as i64;
+                    c[j] = *index.get(&id).ok_or(ImportError::Undefined {
+                        line: l + 1,
+                        what: "node",
+                        id,
+                    })?;
+                }
+                if corners == 3 {
+                    c[3] = c[2];
+                }
+                elements.push(c);
+                element_ids.push(self.number(l, 0, r[0])? as i64);
+            }
+            at = end;
+        }
+        Ok((elements, element_ids))
+    }
 }
 
 #[cfg(test)]

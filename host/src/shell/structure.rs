@@ -28,11 +28,13 @@ use std::ops::Range;
 use std::sync::OnceLock;
 
 use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::linalg::cholesky::llt::factor::LltError as PivotError;
 use faer::sparse::linalg::cholesky::{
     factorize_symbolic_cholesky, LltRef, SymbolicCholesky, SymmetricOrdering,
 };
 use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
-use faer::sparse::{SparseColMat, SparseColMatRef, SymbolicSparseColMat};
+use faer::sparse::linalg::LltError;
+use faer::sparse::{FaerError, SparseColMat, SparseColMatRef, SymbolicSparseColMat};
 use faer::{Conj, Mat, MatMut, Par, Side};
 use rayon::prelude::*;
 
@@ -225,13 +227,14 @@ impl Structure {
         let symbolic = self
             .symbolic
             .get_or_init(|| {
-                SymbolicLlt::try_new(self.pattern.as_ref(), Side::Lower)
-                    .map_err(|e| format!("{e:?}"))
+                SymbolicLlt::try_new(self.pattern.as_ref(), Side::Lower).map_err(sparse_failure)
             })
             .as_ref()
             .map_err(|e| AssemblyError::Sparse(e.clone()))?;
-        Llt::try_new_with_symbolic(symbolic.clone(), k.as_ref(), Side::Lower)
-            .map_err(|e| AssemblyError::Singular(format!("{e:?}")))
+        Llt::try_new_with_symbolic(symbolic.clone(), k.as_ref(), Side::Lower).map_err(|e| match e {
+            LltError::Numeric(pivot) => AssemblyError::Singular(not_positive(pivot)),
+            LltError::Generic(e) => AssemblyError::Sparse(sparse_failure(e)),
+        })
     }
 
     /// The free DOFs in the nested-dissection elimination order of
@@ -442,14 +445,14 @@ fn symbolic_cholesky(
         .as_ref()
         .transpose()
         .to_col_major()
-        .map_err(|e| format!("{e:?}"))?;
+        .map_err(sparse_failure)?;
     factorize_symbolic_cholesky(
         upper.as_ref(),
         Side::Upper,
         SymmetricOrdering::Identity,
         Default::default(),
     )
-    .map_err(|e| format!("{e:?}"))
+    .map_err(sparse_failure)
 }
 
 /// What the columns of the ordered lower triangle are built from: the
@@ -687,7 +690,7 @@ impl<'a> OrderedFactor<'a> {
                 .symbolic
                 .factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default()),
         )
-        .map_err(|e| AssemblyError::Sparse(format!("{e:?}")))?;
+        .map_err(|e| AssemblyError::Sparse(e.to_string()))?;
         let mut factor = Self {
             structure,
             ordered,
@@ -723,7 +726,7 @@ impl<'a> OrderedFactor<'a> {
                 MemStack::new(&mut self.scratch),
                 Default::default(),
             )
-            .map_err(|e| AssemblyError::Singular(format!("{e:?}")))?;
+            .map_err(|e| AssemblyError::Singular(not_positive(e)))?;
         self.valid = true;
         Ok(())
     }
@@ -776,5 +779,24 @@ impl<'a> OrderedFactor<'a> {
             }
         }
         Ok(u)
+    }
+}
+
+/// faer's sparse failures in words (its own text is Rust's debug form).
+fn sparse_failure(e: FaerError) -> String {
+    match e {
+        FaerError::IndexOverflow => "an index overflows the sparse matrix's index type".into(),
+        FaerError::OutOfMemory => "out of memory".into(),
+        _ => "the sparse factorization failed".into(),
+    }
+}
+
+/// The pivot that was not positive, in words (faer's own text is Rust's
+/// debug form).
+fn not_positive(e: PivotError) -> String {
+    match e {
+        PivotError::NonPositivePivot { index } => {
+            format!("pivot {index} of the ordered free DOFs is not positive")
+        }
     }
 }

@@ -70,7 +70,16 @@ impl Planform {
             || self.chord_elements == 0
         {
             return Err(MeshError::Parameter(format!(
-                "planform dimensions must be positive and finite and element counts at least 1: {self:?}"
+                "planform dimensions must be positive and finite and element counts at least 1 \
+                 (semi-span {} m, root chord {} m, tip chord {} m, spar width {} m, root attachment {} m, \
+                 {} spanwise and {} chordwise elements)",
+                self.semi_span,
+                self.root_chord,
+                self.tip_chord,
+                self.spar_width,
+                self.root_attachment,
+                self.span_elements,
+                self.chord_elements
             )));
         }
         if self.spar_width >= self.root_chord.min(self.tip_chord)

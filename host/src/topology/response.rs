@@ -115,8 +115,15 @@ pub enum ResponseError {
     #[error("nonlinear dynamic analysis")]
     Shell(#[from] NonlinearError),
     /// A setting out of range.
-    #[error("response setting: {0}")]
-    Setting(String),
+    #[error("response setting {name} = {value} is outside {allowed}")]
+    Setting {
+        /// The setting's name (`sample_every`).
+        name: &'static str,
+        /// Its value.
+        value: f64,
+        /// The values allowed for this pressure history.
+        allowed: String,
+    },
 }
 
 /// The nonlinear dynamic response of `mesh` with `sections` and the global
@@ -137,15 +144,39 @@ pub fn nonlinear_response(
     pressure.check(mesh.elements.len())?;
     let steps = pressure.samples.len();
     let s = settings;
-    if s.periods < 2
-        || s.sample_every == 0
-        || s.sample_every > steps
-        || !(0.0..=1.0).contains(&s.rho_inf)
-        || !(s.tolerance.is_finite() && s.tolerance > 0.0)
-    {
-        return Err(ResponseError::Setting(format!(
-            "{s:?} with {steps} steps a period (periods >= 2, 1 <= sample_every <= steps, rho_inf in [0, 1], tolerance > 0)"
-        )));
+    // (name, value, inside, allowed)
+    let checks = [
+        (
+            "periods",
+            s.periods as f64,
+            s.periods >= 2,
+            ">= 2".to_owned(),
+        ),
+        (
+            "sample_every",
+            s.sample_every as f64,
+            (1..=steps).contains(&s.sample_every),
+            format!("1..={steps}, the {steps} steps of a period of the pressure history"),
+        ),
+        (
+            "rho_inf",
+            s.rho_inf,
+            (0.0..=1.0).contains(&s.rho_inf),
+            "[0, 1]".to_owned(),
+        ),
+        (
+            "tolerance",
+            s.tolerance,
+            s.tolerance.is_finite() && s.tolerance > 0.0,
+            "(0, inf)".to_owned(),
+        ),
+    ];
+    if let Some((name, value, _, allowed)) = checks.into_iter().find(|c| !c.2) {
+        return Err(ResponseError::Setting {
+            name,
+            value,
+            allowed,
+        });
     }
     let dt = pressure.dt;
     let mut iterations = 0;

@@ -200,16 +200,37 @@ fn check(
             )));
         }
     }
-    let ok = s.penalty >= 1.0
-        && s.mass_fraction > 0.0
-        && s.mass_fraction <= 1.0
-        && s.filter_radius > 0.0
-        && s.move_limit > 0.0
-        && s.move_limit <= 1.0
-        && s.tolerance > 0.0;
-    if !ok || design.len() != mesh.elements.len() || loads.is_empty() {
+    // (name, value, inside, range); written so that NaN is outside.
+    let settings = [
+        ("penalty", s.penalty, s.penalty >= 1.0, "[1, inf)"),
+        (
+            "mass_fraction",
+            s.mass_fraction,
+            s.mass_fraction > 0.0 && s.mass_fraction <= 1.0,
+            "(0, 1]",
+        ),
+        (
+            "filter_radius",
+            s.filter_radius,
+            s.filter_radius > 0.0,
+            "(0, inf) m",
+        ),
+        (
+            "move_limit",
+            s.move_limit,
+            s.move_limit > 0.0 && s.move_limit <= 1.0,
+            "(0, 1]",
+        ),
+        ("tolerance", s.tolerance, s.tolerance > 0.0, "(0, inf)"),
+    ];
+    if let Some((name, value, _, range)) = settings.iter().find(|(_, _, inside, _)| !inside) {
         return Err(SimpError::Setting(format!(
-            "{s:?} with {} design flags for {} elements and {} load cases",
+            "{name} = {value} is outside {range}"
+        )));
+    }
+    if design.len() != mesh.elements.len() || loads.is_empty() {
+        return Err(SimpError::Setting(format!(
+            "{} design flags for {} elements and {} load cases",
             design.len(),
             mesh.elements.len(),
             loads.len()

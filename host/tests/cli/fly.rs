@@ -258,3 +258,57 @@ fn upload_refuses_a_duration_that_is_not_a_positive_number_of_seconds() {
         assert_eq!(status["profile_loaded"], false, "{value}: {status}");
     }
 }
+
+/// `fwav upload --start | head -1`: once the reader has gone, the pilot's
+/// next status line cannot be written; it stops the wing first and then
+/// ends with that error (exit 1), instead of being killed by SIGPIPE with
+/// the wing left flying to the device's failsafe, or panicking (issue 22).
+#[test]
+fn upload_start_stops_the_wing_when_its_output_pipe_closes() {
+    use std::io::Read as _;
+    use std::os::unix::process::ExitStatusExt as _;
+
+    let board = VirtualBoard::start();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_fwav"))
+        .args(["upload", "--port", &board.path, PROFILE, "--start"])
+        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the fwav binary runs");
+    let mut stdout = BufReader::new(child.stdout.take().expect("piped"));
+    let deadline = Instant::now() + Duration::from_secs(20);
+    let mut line = String::new();
+    while !line.contains("running true") {
+        line.clear();
+        let read = stdout.read_line(&mut line).expect("stdout");
+        assert!(read > 0 && Instant::now() < deadline, "not flying: {line}");
+    }
+    drop(stdout); // the reader goes, as `head` does after its line
+    let deadline = Instant::now() + Duration::from_secs(15);
+    let exit = loop {
+        if let Some(exit) = child.try_wait().expect("wait") {
+            break exit;
+        }
+        if Instant::now() > deadline {
+            let _ = child.kill();
+            panic!("the pilot did not end after its reader went");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    let mut stderr = String::new();
+    child
+        .stderr
+        .take()
+        .expect("piped")
+        .read_to_string(&mut stderr)
+        .expect("stderr");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert_eq!(exit.signal(), None, "{exit:?}: {stderr}");
+    assert_eq!(exit.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("the wing was stopped first"), "{stderr}");
+    let status = board.status().expect("status after the flight");
+    assert_eq!(status["armed"], false, "{status}");
+    assert_eq!(status["running"], false, "{status}");
+    assert_eq!(status["last_disarm"], "Command", "{status}");
+}

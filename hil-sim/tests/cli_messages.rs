@@ -1,0 +1,154 @@
+//! How the `hil-sim` program prints (issue 22): a closed output pipe ends
+//! it quietly, as it ends `cat`, instead of a panic; an error is printed
+//! once, without Rust's debug formatting, and names the file, key and
+//! value concerned.
+
+#![cfg(unix)]
+
+use std::os::unix::process::ExitStatusExt as _;
+use std::path::PathBuf;
+use std::process::{Command, Output, Stdio};
+
+const SCENARIO: &str = "duration_s = 0.5\nmeasure_cycles = 2\n\
+                        [[segments]]\nfrequency_hz = 11.0\namplitude_deg = 30.0\n\
+                        duration_s = 100.0\nramp_s = 1.0\n";
+
+fn hil_sim(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_hil-sim"))
+        .args(args)
+        .output()
+        .expect("the hil-sim binary runs")
+}
+
+/// A scratch directory removed at the end.
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(name: &str) -> Self {
+        let dir = std::env::temp_dir().join(format!("hil-sim-msg-{name}-{}", std::process::id()));
+        std::fs::remove_dir_all(&dir).ok();
+        std::fs::create_dir_all(&dir).unwrap();
+        Self(dir)
+    }
+
+    fn file(&self, name: &str, text: &str) -> String {
+        let path = self.0.join(name);
+        std::fs::write(&path, text).unwrap();
+        path.to_str().unwrap().to_owned()
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        std::fs::remove_dir_all(&self.0).ok();
+    }
+}
+
+/// One `error:` line of text a person reads, no debug formatting.
+fn assert_plain_error(out: &Output) -> String {
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert_eq!(stderr.matches("error:").count(), 1, "{stderr}");
+    for debug in ["{", "Os {", "kind:", "Error(", "panicked"] {
+        assert!(!stderr.contains(debug), "{debug:?} in {stderr}");
+    }
+    stderr
+}
+
+/// `hil-sim run S | head -1` once `head` has gone: the reading end of the
+/// pipe is closed before hil-sim prints; it ends by SIGPIPE as `cat`
+/// does (a shell shows 141), never with a panic (101).
+#[test]
+fn run_into_a_closed_pipe_ends_quietly() {
+    let scratch = Scratch::new("pipe");
+    let scenario = scratch.file("short.toml", SCENARIO);
+    let (reader, writer) = os_pipe::pipe().unwrap();
+    drop(reader);
+    let out = Command::new(env!("CARGO_BIN_EXE_hil-sim"))
+        .args(["run", &scenario])
+        .stdout(writer)
+        .stderr(Stdio::piped())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert_ne!(out.status.code(), Some(101), "{}: {stderr}", out.status);
+    assert_eq!(
+        out.status.signal(),
+        Some(libc::SIGPIPE),
+        "{}: {stderr}",
+        out.status
+    );
+}
+
+/// A TOML error in a scenario or a plant file: the file, then the
+/// parser's message once (it was printed twice).
+#[test]
+fn toml_errors_are_reported_once() {
+    let scratch = Scratch::new("toml");
+    let scenario = scratch.file("typo.toml", &format!("heartbeat_z = 0.1\n{SCENARIO}"));
+    let stderr = assert_plain_error(&hil_sim(&["run", &scenario]));
+    assert!(stderr.contains("typo.toml"), "{stderr}");
+    assert_eq!(
+        stderr.matches("unknown field `heartbeat_z`").count(),
+        1,
+        "{stderr}"
+    );
+
+    let good = scratch.file("good.toml", SCENARIO);
+    let plant = scratch.file("plant.toml", "[motor]\nresistance = 2.0\n");
+    let stderr = assert_plain_error(&hil_sim(&["run", &good, "--plant", &plant]));
+    assert!(stderr.contains("plant.toml"), "{stderr}");
+    assert_eq!(
+        stderr.matches("unknown field `resistance`").count(),
+        1,
+        "{stderr}"
+    );
+}
+
+/// A missing file: the path, then the OS's reason once.
+#[test]
+fn a_missing_scenario_is_reported_once() {
+    let scratch = Scratch::new("missing");
+    let missing = scratch.0.join("none.toml");
+    let stderr = assert_plain_error(&hil_sim(&["run", missing.to_str().unwrap()]));
+    assert!(stderr.contains(missing.to_str().unwrap()), "{stderr}");
+    assert_eq!(
+        stderr.matches("No such file or directory").count(),
+        1,
+        "{stderr}"
+    );
+}
+
+/// A duration too long is called too long, with its key, value and
+/// range (it said "must be positive").
+#[test]
+fn a_too_long_duration_is_named_with_its_range() {
+    let scratch = Scratch::new("long");
+    let scenario = scratch.file("long.toml", &SCENARIO.replace("0.5", "1e6"));
+    let stderr = assert_plain_error(&hil_sim(&["run", &scenario]));
+    assert!(stderr.contains("duration_s = 1000000"), "{stderr}");
+    assert!(stderr.contains("< 100000 s"), "{stderr}");
+    assert!(!stderr.contains("positive"), "{stderr}");
+}
+
+/// A picture that cannot be written names the file and the OS's reason,
+/// not the backend's debug text (`ImageError(IoError(Os { code: 2 ...`).
+#[test]
+fn a_picture_that_cannot_be_written_is_named_without_debug_text() {
+    let scratch = Scratch::new("plot");
+    let scenario = scratch.file("short.toml", SCENARIO);
+    let png = scratch.0.join("no-such-dir").join("run.png");
+    let stderr = assert_plain_error(&hil_sim(&[
+        "run",
+        &scenario,
+        "--plot",
+        png.to_str().unwrap(),
+    ]));
+    assert!(stderr.contains(png.to_str().unwrap()), "{stderr}");
+    assert_eq!(
+        stderr.matches("No such file or directory").count(),
+        1,
+        "{stderr}"
+    );
+}
