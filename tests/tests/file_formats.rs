@@ -345,7 +345,12 @@ const SECTION: &str = r#"{"format": "fwav-section-history", "format_version": 1,
  "samples": [[[0.0, 0.0], [0.5, 0.01], [1.0, 0.02]], [[0.0, 0.0], [0.5, -0.01], [1.0, -0.02]]]}"#;
 const PRESSURE: &str = r#"{"format": "fwav-pressure-history", "format_version": 1, "dt_s": 0.005,
  "samples": [[1.0, 2.0, 3.0], [-1.0, -2.0, -3.0]]}"#;
-const POINTS: &str = "square-ish\n1.0 0.0\n0.5 0.06\n0.0 0.0\n0.5 -0.06\n1.0 0.0\n";
+const POINTS: &str = "ellipse, 6% thick (24 panels: the reader takes 20 points or more)\n\
+                      1.0000 0.0000\n0.9830 0.0155\n0.9330 0.0300\n0.8536 0.0424\n0.7500 0.0520\n\
+                      0.6294 0.0580\n0.5000 0.0600\n0.3706 0.0580\n0.2500 0.0520\n0.1464 0.0424\n\
+                      0.0670 0.0300\n0.0170 0.0155\n0.0000 0.0000\n0.0170 -0.0155\n0.0670 -0.0300\n\
+                      0.1464 -0.0424\n0.2500 -0.0520\n0.3706 -0.0580\n0.5000 -0.0600\n0.6294 -0.0580\n\
+                      0.7500 -0.0520\n0.8536 -0.0424\n0.9330 -0.0300\n0.9830 -0.0155\n1.0000 -0.0000\n";
 /// One block of nodes, and a quadrangle, a triangle and a line element
 /// (skipped: not a shell) in three blocks.
 const GMSH: &str = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 5 1 5\n2 1 0 5\n\
