@@ -1,0 +1,289 @@
+//! The streamfunction from the vorticity: `ψ_ξξ + ψ_θθ = -J ω`.
+//!
+//! In the conformal coordinates of [`crate::OGrid`] the Poisson operator
+//! does not depend on the section at all (the section only enters through
+//! `J` on the right-hand side), so it is the same matrix for a rigid, a
+//! moving or a deforming section. It is separable: a real FFT around each
+//! ring, then one tridiagonal system along the radius per Fourier mode
+//! (second-order differences in the stretched `η`), factored once when the
+//! solver is built. A solve costs `O(N_θ N_r log N_θ)`.
+//!
+//! Boundary conditions: Dirichlet at the outer ring; at the wall, Dirichlet
+//! on the non-uniform part of `ψ` (the wall's motion) and, for the mean
+//! (mode 0), the wall's mean normal derivative `ψ_ξ` (its circulation) with
+//! the free constant `C` of the wall's streamfunction as the unknown (the
+//! no-slip condition in the mean, which fixes the circulation round the
+//! section; Thom's second-order Taylor row with the wall's `J ω`).
+
+use std::sync::Arc;
+
+use realfft::num_complex::Complex64;
+use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+
+use crate::grid::OGrid;
+
+/// One mode's tridiagonal factors (Thomas algorithm): sub-diagonal, the
+/// reciprocal pivots and the modified super-diagonal.
+#[derive(Debug, Clone)]
+struct ModeFactors {
+    lower: Vec<f64>,
+    inv_pivot: Vec<f64>,
+    upper_mod: Vec<f64>,
+}
+
+impl ModeFactors {
+    /// Factor the system with diagonals `(lower, diag, upper)`.
+    fn new(lower: Vec<f64>, diag: &[f64], upper: &[f64]) -> Self {
+        let n = diag.len();
+        let mut inv_pivot = vec![0.0; n];
+        let mut upper_mod = vec![0.0; n];
+        let mut prev = 0.0;
+        for i in 0..n {
+            let pivot = diag[i] - lower[i] * prev;
+            inv_pivot[i] = 1.0 / pivot;
+            upper_mod[i] = upper[i] * inv_pivot[i];
+            prev = upper_mod[i];
+        }
+        Self {
+            lower,
+            inv_pivot,
+            upper_mod,
+        }
+    }
+
+    /// Solve in place (the right-hand side becomes the solution).
+    fn solve(&self, x: &mut [Complex64]) {
+        let n = x.len();
+        let mut prev = Complex64::new(0.0, 0.0);
+        for i in 0..n {
+            x[i] = (x[i] - prev * self.lower[i]) * self.inv_pivot[i];
+            prev = x[i];
+        }
+        for i in (0..n - 1).rev() {
+            x[i] = x[i] - x[i + 1] * self.upper_mod[i];
+        }
+    }
+}
+
+/// Weights of `ψ(0), ψ(ξ1), ψ(ξ2)` in the second-order one-sided `ψ_ξ(0)`
+/// (the derivative of the quadratic through the three).
+fn wall_slope_weights(xi1: f64, xi2: f64) -> [f64; 3] {
+    [
+        -(xi1 + xi2) / (xi1 * xi2),
+        xi2 / (xi1 * (xi2 - xi1)),
+        -xi1 / (xi2 * (xi2 - xi1)),
+    ]
+}
+
+/// The factored Poisson solver of one grid (module docs).
+pub struct StreamSolver {
+    nt: usize,
+    nr: usize,
+    modes: usize,
+    forward: Arc<dyn RealToComplex<f64>>,
+    inverse: Arc<dyn ComplexToReal<f64>>,
+    factors: Vec<ModeFactors>,
+    /// The radial coefficients of `ψ_{j-1}` and `ψ_{j+1}` in every row
+    /// (the same in all rows: the stretching is exponential).
+    lower_coefficient: f64,
+    upper_coefficient: f64,
+    /// The wall-slope weights of `ψ0, ψ1, ψ2` (mode 0's wall row).
+    wall_weights: [f64; 3],
+    /// `g'²` per radial node.
+    slope2: Vec<f64>,
+    spectrum: Vec<Complex64>,
+    column: Vec<Complex64>,
+    ring: Vec<f64>,
+    ring_spec: Vec<Complex64>,
+    fft_scratch: Vec<Complex64>,
+}
+
+impl std::fmt::Debug for StreamSolver {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("StreamSolver")
+            .field("nt", &self.nt)
+            .field("nr", &self.nr)
+            .finish_non_exhaustive()
+    }
+}
+
+impl StreamSolver {
+    /// Factor the operator of `grid` (`N_θ/2 + 1` tridiagonal systems of
+    /// `N_r` rows; cost `O(N_θ N_r)`).
+    #[must_use]
+    pub fn new(grid: &OGrid) -> Self {
+        let (nt, nr) = (grid.nt, grid.nr);
+        let modes = nt / 2 + 1;
+        let mut planner = RealFftPlanner::<f64>::new();
+        let forward = planner.plan_fft_forward(nt);
+        let inverse = planner.plan_fft_inverse(nt);
+        let h2 = 1.0 / (grid.d_eta * grid.d_eta);
+        let half = grid.curvature / (2.0 * grid.d_eta);
+        let (a, c) = (h2 + half, h2 - half);
+        let slope2: Vec<f64> = grid.slope.iter().map(|s| s * s).collect();
+        let mut factors = Vec::with_capacity(modes);
+        for m in 0..modes {
+            let k2 = (m * m) as f64;
+            if m == 0 {
+                // Unknowns j = 0..nr-2: the wall row is the Neumann row.
+                let n = nr - 1;
+                let mut lower = vec![a; n];
+                let mut diag: Vec<f64> = (0..n).map(|j| -2.0 * h2 - k2 * slope2[j]).collect();
+                let mut upper = vec![c; n];
+                // Row 0: the second-order one-sided ψ_ξ at the wall
+                // (a quadratic through ψ0, ψ1, ψ2), with ψ2 eliminated by
+                // row 1 to stay tridiagonal.
+                let w = wall_slope_weights(grid.xi[1], grid.xi[2]);
+                lower[0] = 0.0;
+                diag[0] = w[0] - w[2] * a / c;
+                upper[0] = w[1] - w[2] * diag[1] / c;
+                upper[n - 1] = 0.0;
+                factors.push(ModeFactors::new(lower, &diag, &upper));
+            } else {
+                // Unknowns j = 1..nr-2.
+                let n = nr - 2;
+                let mut lower = vec![a; n];
+                let diag: Vec<f64> = (1..=n).map(|j| -2.0 * h2 - k2 * slope2[j]).collect();
+                let mut upper = vec![c; n];
+                lower[0] = 0.0;
+                upper[n - 1] = 0.0;
+                factors.push(ModeFactors::new(lower, &diag, &upper));
+            }
+        }
+        let fft_scratch = forward.make_scratch_vec();
+        let fft_scratch = if fft_scratch.len() < inverse.get_scratch_len() {
+            inverse.make_scratch_vec()
+        } else {
+            fft_scratch
+        };
+        Self {
+            nt,
+            nr,
+            modes,
+            forward,
+            inverse,
+            factors,
+            lower_coefficient: a,
+            upper_coefficient: c,
+            wall_weights: wall_slope_weights(grid.xi[1], grid.xi[2]),
+            slope2,
+            spectrum: vec![Complex64::new(0.0, 0.0); modes * nr],
+            column: vec![Complex64::new(0.0, 0.0); nr],
+            ring: vec![0.0; nt],
+            ring_spec: vec![Complex64::new(0.0, 0.0); modes],
+            fft_scratch,
+        }
+    }
+
+    /// Fourier modes of one ring into `out` (unnormalized).
+    fn ring_modes(&mut self, values: &[f64], out_row: usize) {
+        self.ring.copy_from_slice(values);
+        let dst = &mut self.spectrum[out_row * self.modes..(out_row + 1) * self.modes];
+        // The lengths match by construction.
+        let _ = self
+            .forward
+            .process_with_scratch(&mut self.ring, dst, &mut self.fft_scratch);
+    }
+
+    /// Solve for `psi` (all nodes) given the source `s = J ω` at all nodes
+    /// (the wall ring's only enters the mean wall row), the wall's
+    /// streamfunction up to a constant, its normal derivative `ψ_ξ` and the
+    /// outer ring's streamfunction. Returns the wall constant `C` (the wall
+    /// ring of `psi` is `wall_shape + C`).
+    pub fn solve(
+        &mut self,
+        source: &[f64],
+        wall_shape: &[f64],
+        wall_slope: &[f64],
+        outer: &[f64],
+        psi: &mut [f64],
+    ) -> f64 {
+        let (nt, nr, modes) = (self.nt, self.nr, self.modes);
+        for j in 0..nr {
+            self.ring_modes(&source[j * nt..(j + 1) * nt], j);
+        }
+        // Scale the source rows: rhs_j = -g'_j² ŝ_j.
+        for j in 0..nr {
+            let s2 = self.slope2[j];
+            for v in &mut self.spectrum[j * modes..(j + 1) * modes] {
+                *v *= -s2;
+            }
+        }
+        let wall = self.modes_of(wall_shape);
+        let slope_mean = self.modes_of(wall_slope)[0];
+        let outer_modes = self.modes_of(outer);
+        let mut constant = 0.0;
+        for m in 0..modes {
+            if m == 0 {
+                // Row 0 (see `new`): ψ_ξ = the mean wall slope, less row
+                // 1's right-hand side times the eliminated weight.
+                let n = nr - 1;
+                self.column[0] = slope_mean - self.spectrum[modes] * (self.wall_weights[2] / self.upper_coefficient);
+                for j in 1..n {
+                    self.column[j] = self.spectrum[j * modes];
+                }
+                self.column[n - 1] -= outer_modes[0] * self.upper_coefficient;
+                self.factors[0].solve(&mut self.column[..n]);
+                for j in 0..n {
+                    self.spectrum[j * modes] = self.column[j];
+                }
+                self.spectrum[(nr - 1) * modes] = outer_modes[0];
+                constant = (self.column[0].re - wall[0].re) / nt as f64;
+            } else {
+                let n = nr - 2;
+                for j in 0..n {
+                    self.column[j] = self.spectrum[(j + 1) * modes + m];
+                }
+                self.column[0] -= wall[m] * self.lower_coefficient;
+                self.column[n - 1] -= outer_modes[m] * self.upper_coefficient;
+                self.factors[m].solve(&mut self.column[..n]);
+                for j in 0..n {
+                    self.spectrum[(j + 1) * modes + m] = self.column[j];
+                }
+                self.spectrum[m] = wall[m];
+                self.spectrum[(nr - 1) * modes + m] = outer_modes[m];
+            }
+        }
+        let scale = 1.0 / nt as f64;
+        for j in 0..nr {
+            let row = &mut self.spectrum[j * modes..(j + 1) * modes];
+            row[0].im = 0.0;
+            row[modes - 1].im = 0.0;
+            let _ = self.inverse.process_with_scratch(
+                row,
+                &mut psi[j * nt..(j + 1) * nt],
+                &mut self.fft_scratch,
+            );
+            for v in &mut psi[j * nt..(j + 1) * nt] {
+                *v *= scale;
+            }
+        }
+        constant
+    }
+
+    /// Fourier modes of a ring (unnormalized), into a fresh vector.
+    fn modes_of(&mut self, values: &[f64]) -> Vec<Complex64> {
+        self.ring.copy_from_slice(values);
+        let _ = self.forward.process_with_scratch(
+            &mut self.ring,
+            &mut self.ring_spec,
+            &mut self.fft_scratch,
+        );
+        self.ring_spec.clone()
+    }
+
+    /// `∂²f/∂θ²` of a periodic ring, spectrally (into `out`).
+    pub fn ring_second_derivative(&mut self, values: &[f64], out: &mut [f64]) {
+        let mut spec = self.modes_of(values);
+        let nt = self.nt;
+        for (m, v) in spec.iter_mut().enumerate() {
+            *v *= -((m * m) as f64) / nt as f64;
+        }
+        let last = spec.len() - 1;
+        spec[0].im = 0.0;
+        spec[last].im = 0.0;
+        let _ = self
+            .inverse
+            .process_with_scratch(&mut spec, out, &mut self.fft_scratch);
+    }
+}
