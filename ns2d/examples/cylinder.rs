@@ -42,6 +42,11 @@ fn main() {
             let (imax, _) = w.iter().enumerate().fold((0, 0.0f64), |(bi, bm), (i, v)| if v.abs() > bm { (i, v.abs()) } else { (bi, bm) });
             eprintln!("step {} wmax at j {} k {} = {:.3e}; wall mean {:.3e}", history.len(), imax / around, imax % around, w[imax], w[..around].iter().sum::<f64>() / around as f64);
         }
+        if std::env::var("CLOSURE").is_ok() && history.len() % 100 == 0 {
+            let p = &loads.pressure;
+            let range = p.iter().fold(f64::MIN, |m, v| m.max(*v)) - p.iter().fold(f64::MAX, |m, v| m.min(*v));
+            eprintln!("t {:.2} closure {:.4} range {:.4} CL {:.4}", flow.time(), loads.closure, range, loads.force.im * 2.0);
+        }
         if history.len() % 500 == 0 || history.len() < 40 {
             eprintln!("t {:.4} dt {:.2e} wmax {:.3e} CD {:.4} CL {:.4}", flow.time(), dt, flow.vorticity().iter().fold(0.0f64, |m, w| m.max(w.abs())), loads.force.re * 2.0, loads.force.im * 2.0);
         }

@@ -26,6 +26,7 @@
 //! three-stage strong-stability-preserving Runge–Kutta scheme (Shu &
 //! Osher 1988), one Poisson solve per stage.
 
+use rayon::prelude::*;
 use realfft::num_complex::Complex64;
 
 use crate::error::NsError;
@@ -49,6 +50,10 @@ pub struct WallLoads {
     pub power: f64,
     /// Wall pressure round the section (mean zero).
     pub pressure: Vec<f64>,
+    /// The pressure jump a trip round the wall gave before it was spread
+    /// (zero for the exact solution: a measure of the discrete no-slip
+    /// condition's consistency).
+    pub closure: f64,
     /// Wall vorticity relative to the section's rotation, `ω - 2Ω`
     /// (the skin friction is `ν` times it, along the counter-clockwise tangent).
     pub wall_vorticity: Vec<f64>,
@@ -69,6 +74,7 @@ pub struct Flow<M: Motion> {
     frame_psi: Vec<f64>,
     source: Vec<f64>,
     rate: Vec<f64>,
+    relative: Vec<f64>,
     wall_shape: Vec<f64>,
     wall_slope: Vec<f64>,
     wall_curvature: Vec<f64>,
@@ -78,11 +84,11 @@ pub struct Flow<M: Motion> {
     /// time step.
     previous_rate: Vec<f64>,
     last_dt: f64,
-    /// One radial line's tridiagonal system.
-    line_lower: Vec<f64>,
-    line_diag: Vec<f64>,
-    line_upper: Vec<f64>,
-    line_rhs: Vec<f64>,
+    /// The radial Thomas sweeps' modified upper diagonal and right-hand
+    /// side (all lines), and the ring the sweep has just replaced.
+    sweep_upper: Vec<f64>,
+    sweep_rhs: Vec<f64>,
+    previous_ring: Vec<f64>,
 }
 
 impl<M: Motion> std::fmt::Debug for Flow<M> {
@@ -108,7 +114,7 @@ impl<M: Motion> Flow<M> {
         }
         let grid = OGrid::new(map, spec)?;
         let stream = StreamSolver::new(&grid);
-        let (n, nt, grid_radial) = (grid.len(), grid.nt, grid.nr);
+        let (n, nt) = (grid.len(), grid.nt);
         let frame = motion.state(0.0);
         let mut flow = Self {
             grid,
@@ -122,12 +128,12 @@ impl<M: Motion> Flow<M> {
             frame_psi: vec![0.0; n],
             source: vec![0.0; n],
             rate: vec![0.0; n],
+            relative: vec![0.0; n],
             previous_rate: vec![0.0; n],
             last_dt: 0.0,
-            line_lower: vec![0.0; grid_radial - 1],
-            line_diag: vec![0.0; grid_radial - 1],
-            line_upper: vec![0.0; grid_radial - 1],
-            line_rhs: vec![0.0; grid_radial - 1],
+            sweep_upper: vec![0.0; n],
+            sweep_rhs: vec![0.0; n],
+            previous_ring: vec![0.0; nt],
             wall_shape: vec![0.0; nt],
             wall_slope: vec![0.0; nt],
             wall_curvature: vec![0.0; nt],
@@ -169,8 +175,9 @@ impl<M: Motion> Flow<M> {
         let nt = g.nt;
         self.frame = self.motion.state(t);
         let frame = self.frame;
+        let rigid = frame.rigid_field();
         for (i, z) in g.z.iter().enumerate() {
-            self.frame_psi[i] = frame.streamfunction(*z);
+            self.frame_psi[i] = rigid.streamfunction(*z);
             self.source[i] = g.jac[i] * self.omega[i];
         }
         for k in 0..nt {
@@ -212,43 +219,32 @@ impl<M: Motion> Flow<M> {
 
     /// The explicit part of `dω/dt` (advection and diffusion round the
     /// section) at the interior nodes into `self.rate` (wall and outer
-    /// rows zero).
+    /// rows zero); rows in parallel.
     fn explicit_rate(&mut self) {
         let g = &self.grid;
         let (nt, nr) = (g.nt, g.nr);
-        let (de, dt) = (g.d_eta, g.d_theta);
-        let nu = self.viscosity;
-        let w = &self.omega;
-        let psi = &self.psi;
-        let fpsi = &self.frame_psi;
-        let rel = |i: usize| psi[i] - fpsi[i];
-        self.rate[..nt].fill(0.0);
-        self.rate[(nr - 1) * nt..].fill(0.0);
-        for j in 1..nr - 1 {
-            let gp = g.slope[j];
-            for k in 0..nt {
-                let kp = if k + 1 == nt { 0 } else { k + 1 };
-                let km = if k == 0 { nt - 1 } else { k - 1 };
-                let i = j * nt + k;
-                let jac = g.jac[i];
-                let psi_t = (rel(j * nt + kp) - rel(j * nt + km)) / (2.0 * dt);
-                let psi_e = (rel(i + nt) - rel(i - nt)) / (2.0 * de);
-                let u_eta = psi_t / (jac * gp);
-                let u_theta = -psi_e / (gp * jac);
-                let kpp = if kp + 1 == nt { 0 } else { kp + 1 };
-                let kmm = if km == 0 { nt - 1 } else { km - 1 };
-                let th = [w[j * nt + kmm], w[j * nt + km], w[i], w[j * nt + kp], w[j * nt + kpp]];
-                let adv_t = u_theta * upwind3(th, u_theta) / dt;
-                let adv_e = if j >= 2 && j + 2 < nr {
-                    let er = [w[i - 2 * nt], w[i - nt], w[i], w[i + nt], w[i + 2 * nt]];
-                    u_eta * upwind3(er, u_eta) / de
-                } else {
-                    u_eta * (w[i + nt] - w[i - nt]) / (2.0 * de)
-                };
-                let w_tt = (th[3] - 2.0 * th[2] + th[1]) / (dt * dt);
-                self.rate[i] = nu / jac * w_tt - adv_t - adv_e;
-            }
+        for (i, r) in self.relative.iter_mut().enumerate() {
+            *r = self.psi[i] - self.frame_psi[i];
         }
+        let w = &self.omega;
+        let rel = &self.relative;
+        let rows = RateRows {
+            nt,
+            nr,
+            d_eta: g.d_eta,
+            d_theta: g.d_theta,
+            viscosity: self.viscosity,
+        };
+        self.rate
+            .par_chunks_mut(nt)
+            .enumerate()
+            .for_each(|(j, out)| {
+                if j == 0 || j == nr - 1 {
+                    out.fill(0.0);
+                } else {
+                    rows.row(j, w, rel, &g.inv_jac[j * nt..(j + 1) * nt], g.slope[j], out);
+                }
+            });
     }
 
     /// Outer ring: zero vorticity where the relative flow enters, the
@@ -327,7 +323,9 @@ impl<M: Motion> Flow<M> {
         self.steps += 1;
         self.last_dt = dt;
         self.evaluate(self.time);
-        if self.omega.iter().any(|w| !w.is_finite()) {
+        // Every node's vorticity reaches the wall ring through the
+        // streamfunction solve: a non-finite value anywhere shows there.
+        if self.omega[..self.grid.nt].iter().any(|w| !w.is_finite()) {
             return Err(NsError::Diverged {
                 time: self.time,
                 step: self.steps,
@@ -342,38 +340,56 @@ impl<M: Motion> Flow<M> {
     /// explicit rate in `self.rate`; the wall value (Thom's of the current
     /// streamfunction, lagged by the step) and the outer value are held.
     /// The lag limits the wall cell's diffusion number (see
-    /// [`Self::stable_dt`]).
+    /// [`Self::stable_dt`]). The Thomas sweeps run ring by ring over all
+    /// lines at once (contiguous memory).
     fn radial_crank_nicolson(&mut self, dt: f64) {
         let g = &self.grid;
         let (nt, nr) = (g.nt, g.nr);
         let h2 = 1.0 / (g.d_eta * g.d_eta);
         let half = g.curvature / (2.0 * g.d_eta);
         let (a, c) = (h2 + half, h2 - half);
-        let n = nr - 2;
-        let (lower, diag, upper, rhs) = (
-            &mut self.line_lower[..n],
-            &mut self.line_diag[..n],
-            &mut self.line_upper[..n],
-            &mut self.line_rhs[..n],
-        );
-        for k in 0..nt {
-            let w = &self.omega;
-            for row in 0..n {
-                let i = (row + 1) * nt + k;
-                let kappa = 0.5 * dt * self.viscosity / (g.jac[i] * g.slope[row + 1].powi(2));
-                let explicit = kappa * (a * w[i - nt] - 2.0 * h2 * w[i] + c * w[i + nt]);
-                rhs[row] = w[i] + explicit + dt * self.rate[i];
-                lower[row] = -kappa * a;
-                diag[row] = 1.0 + 2.0 * kappa * h2;
-                upper[row] = -kappa * c;
+        let w = &mut self.omega;
+        let (upper_mod, solved) = (&mut self.sweep_upper, &mut self.sweep_rhs);
+        // Forward sweep, rings 1..nr-1; the old ring j-1 is kept aside
+        // because ring j's right-hand side needs it.
+        self.previous_ring.copy_from_slice(&w[..nt]);
+        for j in 1..nr - 1 {
+            let factor = 0.5 * dt * self.viscosity / (g.slope[j] * g.slope[j]);
+            let row = j * nt;
+            for k in 0..nt {
+                let i = row + k;
+                let kappa = factor * g.inv_jac[i];
+                let (lower, diag, mut upper) = (-kappa * a, 1.0 + 2.0 * kappa * h2, -kappa * c);
+                let old_below = self.previous_ring[k];
+                let mut rhs = w[i]
+                    + kappa * (a * old_below - 2.0 * h2 * w[i] + c * w[i + nt])
+                    + dt * self.rate[i];
+                if j == nr - 2 {
+                    rhs -= upper * w[i + nt];
+                    upper = 0.0;
+                }
+                let (prev_upper, prev_rhs) = if j == 1 {
+                    rhs -= lower * old_below;
+                    (0.0, 0.0)
+                } else {
+                    (upper_mod[i - nt], solved[i - nt])
+                };
+                let lower = if j == 1 { 0.0 } else { lower };
+                let inv = 1.0 / (diag - lower * prev_upper);
+                upper_mod[i] = upper * inv;
+                solved[i] = (rhs - lower * prev_rhs) * inv;
+                self.previous_ring[k] = w[i];
             }
-            rhs[0] -= lower[0] * w[k];
-            rhs[n - 1] -= upper[n - 1] * w[(nr - 1) * nt + k];
-            lower[0] = 0.0;
-            upper[n - 1] = 0.0;
-            solve_tridiagonal(lower, diag, upper, rhs);
-            for (row, value) in rhs.iter().enumerate() {
-                self.omega[(row + 1) * nt + k] = *value;
+        }
+        // Back substitution.
+        for j in (1..nr - 1).rev() {
+            for k in 0..nt {
+                let i = j * nt + k;
+                w[i] = if j == nr - 2 {
+                    solved[i]
+                } else {
+                    solved[i] - upper_mod[i] * w[i + nt]
+                };
             }
         }
     }
@@ -427,6 +443,7 @@ impl<M: Motion> Flow<M> {
             moment,
             power,
             pressure,
+            closure,
             wall_vorticity,
         }
     }
@@ -441,22 +458,51 @@ const DIFFUSION_LIMIT: f64 = 0.8;
 /// cylinder at Re 550 (stable at 0.45, diverging at 0.9 within 20 steps).
 const WALL_DIFFUSION_LIMIT: f64 = 0.45;
 
-/// Solve a tridiagonal system in place (Thomas; `rhs` becomes the
-/// solution, `upper` is overwritten). The systems here are diagonally
-/// dominant, so no pivoting is needed.
-fn solve_tridiagonal(lower: &[f64], diag: &[f64], upper: &mut [f64], rhs: &mut [f64]) {
-    let n = rhs.len();
-    let mut prev_upper = 0.0;
-    let mut prev_rhs = 0.0;
-    for i in 0..n {
-        let inv = 1.0 / (diag[i] - lower[i] * prev_upper);
-        upper[i] *= inv;
-        rhs[i] = (rhs[i] - lower[i] * prev_rhs) * inv;
-        prev_upper = upper[i];
-        prev_rhs = rhs[i];
-    }
-    for i in (0..n - 1).rev() {
-        rhs[i] -= upper[i] * rhs[i + 1];
+/// The explicit rate of one ring (advection by third-order upwind
+/// differences, diffusion round the section by central differences).
+struct RateRows {
+    nt: usize,
+    nr: usize,
+    d_eta: f64,
+    d_theta: f64,
+    viscosity: f64,
+}
+
+impl RateRows {
+    /// Ring `j` (`1 <= j < nr - 1`) of `dω/dt` into `out`, from the
+    /// vorticity `w`, the relative streamfunction `rel` and the ring's
+    /// `1/J` and `g'`.
+    fn row(&self, j: usize, w: &[f64], rel: &[f64], inv_jac: &[f64], slope: f64, out: &mut [f64]) {
+        let nt = self.nt;
+        let ring = |jj: usize| &w[jj * nt..(jj + 1) * nt];
+        let (w0, wm, wp) = (ring(j), ring(j - 1), ring(j + 1));
+        let far = (j >= 2 && j + 2 < self.nr).then(|| (ring(j - 2), ring(j + 2)));
+        let (r0, rm, rp) = (
+            &rel[j * nt..(j + 1) * nt],
+            &rel[(j - 1) * nt..j * nt],
+            &rel[(j + 1) * nt..(j + 2) * nt],
+        );
+        let (half_de, half_dt) = (0.5 / self.d_eta, 0.5 / self.d_theta);
+        let (inv_de, inv_dt, inv_dt2) =
+            (1.0 / self.d_eta, 1.0 / self.d_theta, 1.0 / (self.d_theta * self.d_theta));
+        let inv_slope = 1.0 / slope;
+        for k in 0..nt {
+            let kp = if k + 1 == nt { 0 } else { k + 1 };
+            let km = if k == 0 { nt - 1 } else { k - 1 };
+            let kpp = if kp + 1 == nt { 0 } else { kp + 1 };
+            let kmm = if km == 0 { nt - 1 } else { km - 1 };
+            let scale = inv_jac[k] * inv_slope;
+            let u_eta = (r0[kp] - r0[km]) * half_dt * scale;
+            let u_theta = -(rp[k] - rm[k]) * half_de * scale;
+            let th = [w0[kmm], w0[km], w0[k], w0[kp], w0[kpp]];
+            let adv_t = u_theta * upwind3(th, u_theta) * inv_dt;
+            let adv_e = match far {
+                Some((wmm, wpp)) => u_eta * upwind3([wmm[k], wm[k], w0[k], wp[k], wpp[k]], u_eta) * inv_de,
+                None => u_eta * (wp[k] - wm[k]) * half_de,
+            };
+            let w_tt = (th[3] - 2.0 * th[2] + th[1]) * inv_dt2;
+            out[k] = self.viscosity * inv_jac[k] * w_tt - adv_t - adv_e;
+        }
     }
 }
 

@@ -114,6 +114,8 @@ pub struct OGrid {
     pub dz_dxi: Vec<Complex64>,
     /// `J = |∂z/∂ξ|²`.
     pub jac: Vec<f64>,
+    /// `1/J`.
+    pub inv_jac: Vec<f64>,
 }
 
 impl OGrid {
@@ -162,7 +164,8 @@ impl OGrid {
                 dz_dxi.push(map.radial_derivative(zeta));
             }
         }
-        let jac = dz_dxi.iter().map(Complex64::norm_sqr).collect();
+        let jac: Vec<f64> = dz_dxi.iter().map(Complex64::norm_sqr).collect();
+        let inv_jac = jac.iter().map(|j| 1.0 / j).collect();
         Ok(Self {
             nt,
             nr,
@@ -174,6 +177,7 @@ impl OGrid {
             z,
             dz_dxi,
             jac,
+            inv_jac,
         })
     }
 

@@ -41,6 +41,6 @@ mod stream;
 pub use error::NsError;
 pub use flow::{Flow, WallLoads};
 pub use grid::{GridSpec, OGrid, RadialStretch};
-pub use motion::{FrameState, Motion, SteadyStream};
+pub use motion::{FrameState, Motion, RigidField, SteadyStream};
 pub use section_map::SectionMap;
 pub use stream::StreamSolver;

@@ -53,6 +53,15 @@ impl FrameState {
             - z * (self.rate * self.rate)
     }
 
+    /// The rigid velocity field in body axes (for many points).
+    #[must_use]
+    pub fn rigid_field(&self) -> RigidField {
+        RigidField {
+            velocity: self.body_velocity(),
+            rate: self.rate,
+        }
+    }
+
     /// The streamfunction of the rigid velocity field `V + Ω × z`:
     /// `Im(conj(V) z) - Ω |z|²/2` (body axes).
     #[must_use]
@@ -65,6 +74,24 @@ impl FrameState {
     #[must_use]
     pub fn streamfunction_gradient(&self, z: Complex64) -> Complex64 {
         Complex64::new(0.0, 1.0) * self.body_velocity() - z * self.rate
+    }
+}
+
+/// The rigid velocity field of a [`FrameState`] in body axes, with the
+/// rotation of the frame's velocity into them done once.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RigidField {
+    /// The frame's velocity in body axes.
+    pub velocity: Complex64,
+    /// The rotation rate.
+    pub rate: f64,
+}
+
+impl RigidField {
+    /// The streamfunction `Im(conj(V) z) - Ω |z|²/2`.
+    #[must_use]
+    pub fn streamfunction(&self, z: Complex64) -> f64 {
+        (self.velocity.conj() * z).im - 0.5 * self.rate * z.norm_sqr()
     }
 }
 
