@@ -37,6 +37,15 @@ pub enum NsError {
     /// The Reynolds number is not a positive number.
     #[error("the Reynolds number is {0}: give a positive, finite number")]
     BadReynolds(f64),
+    /// The wall's influence matrix is singular for this time step.
+    #[error(
+        "the wall vorticity condition has no unique solution for the time step {dt:.3e}: \
+         change the time step or the grid"
+    )]
+    SingularWall {
+        /// The time step.
+        dt: f64,
+    },
     /// The flow was not finite after a step: a time step beyond the
     /// scheme's stability or a case the grid cannot resolve.
     #[error(

@@ -75,10 +75,16 @@ pub struct Flow<M: Motion> {
     source: Vec<f64>,
     rate: Vec<f64>,
     relative: Vec<f64>,
+    theta_diffusion: Vec<f64>,
     wall_shape: Vec<f64>,
     wall_slope: Vec<f64>,
     wall_curvature: Vec<f64>,
     outer: Vec<f64>,
+    /// The vorticity at the step's start, a wall ring, and the wall's
+    /// factored influence matrix of the current time step.
+    start: Vec<f64>,
+    wall_scratch: Vec<f64>,
+    influence: Option<WallInfluence>,
     frame: FrameState,
     /// The explicit rate of the previous step (Adams–Bashforth) and its
     /// time step.
@@ -129,6 +135,10 @@ impl<M: Motion> Flow<M> {
             source: vec![0.0; n],
             rate: vec![0.0; n],
             relative: vec![0.0; n],
+            theta_diffusion: vec![0.0; n],
+            start: vec![0.0; n],
+            wall_scratch: vec![0.0; nt],
+            influence: None,
             previous_rate: vec![0.0; n],
             last_dt: 0.0,
             sweep_upper: vec![0.0; n],
@@ -169,57 +179,78 @@ impl<M: Motion> Flow<M> {
     }
 
     /// Solve the streamfunction of the current vorticity at time `t`, set
-    /// the wall vorticity from it, and leave the frame state of `t`.
+    /// the wall vorticity from it (Thom's), and leave the frame state of
+    /// `t`.
     fn evaluate(&mut self, t: f64) {
+        self.solve_stream(t, false);
+        let mut wall = std::mem::take(&mut self.wall_scratch);
+        self.thom(false, &mut wall);
+        self.omega[..self.grid.nt].copy_from_slice(&wall);
+        self.wall_scratch = wall;
+    }
+
+    /// The streamfunction of the current vorticity: with the wall's and
+    /// far field's conditions at time `t` (and the frame state of `t`
+    /// left), or with homogeneous ones (`homogeneous`, for the wall's
+    /// influence matrix).
+    fn solve_stream(&mut self, t: f64, homogeneous: bool) {
         let g = &self.grid;
         let nt = g.nt;
-        self.frame = self.motion.state(t);
-        let frame = self.frame;
-        let rigid = frame.rigid_field();
-        for (i, z) in g.z.iter().enumerate() {
-            self.frame_psi[i] = rigid.streamfunction(*z);
-            self.source[i] = g.jac[i] * self.omega[i];
+        for (i, s) in self.source.iter_mut().enumerate() {
+            *s = g.jac[i] * self.omega[i];
         }
-        for k in 0..nt {
-            self.wall_shape[k] = self.frame_psi[k];
-            let grad = frame.streamfunction_gradient(g.z[k]);
-            self.wall_slope[k] = (grad.conj() * g.dz_dxi[k]).re;
+        if homogeneous {
+            self.wall_shape.fill(0.0);
+            self.wall_slope.fill(0.0);
+        } else {
+            self.frame = self.motion.state(t);
+            let frame = self.frame;
+            let rigid = frame.rigid_field();
+            for (i, z) in g.z.iter().enumerate() {
+                self.frame_psi[i] = rigid.streamfunction(*z);
+            }
+            for k in 0..nt {
+                self.wall_shape[k] = self.frame_psi[k];
+                let grad = frame.streamfunction_gradient(g.z[k]);
+                self.wall_slope[k] = (grad.conj() * g.dz_dxi[k]).re;
+            }
         }
         // Far away the fluid is at rest: ψ = 0 (a constant is the wall's C).
         self.outer.fill(0.0);
-        let constant = self.stream.solve(
+        self.stream.solve(
             &self.source,
             &self.wall_shape,
             &self.wall_slope,
             &self.outer,
             &mut self.psi,
         );
-        let _ = constant;
-        self.wall_vorticity_from_stream();
     }
 
-    /// Thom's wall vorticity (module docs) into the wall ring of `ω`.
-    fn wall_vorticity_from_stream(&mut self) {
+    /// Thom's wall vorticity (module docs) of the current streamfunction
+    /// into `out` (`homogeneous`: with the homogeneous wall conditions of
+    /// the last [`Self::solve_stream`]).
+    fn thom(&mut self, homogeneous: bool, out: &mut [f64]) {
         let g = &self.grid;
-        let nt = g.nt;
         let xi1 = g.xi[1];
-        let wall_shape = std::mem::take(&mut self.wall_shape);
-        let mut curvature = std::mem::take(&mut self.wall_curvature);
-        self.stream.ring_second_derivative(&wall_shape, &mut curvature);
-        for k in 0..nt {
-            let psi_w = self.psi[k];
-            let slope = self.wall_slope[k];
-            let d1 = self.psi[g.at(1, k)] - psi_w - slope * xi1;
-            let psi_xixi = 2.0 * d1 / (xi1 * xi1);
-            self.omega[k] = -(psi_xixi + curvature[k]) / g.jac[k];
+        if homogeneous {
+            self.wall_curvature.fill(0.0);
+        } else {
+            let shape = std::mem::take(&mut self.wall_shape);
+            self.stream
+                .ring_second_derivative(&shape, &mut self.wall_curvature);
+            self.wall_shape = shape;
         }
-        self.wall_shape = wall_shape;
-        self.wall_curvature = curvature;
+        for (k, o) in out.iter_mut().enumerate() {
+            let psi_w = self.psi[k];
+            let d1 = self.psi[g.at(1, k)] - psi_w - self.wall_slope[k] * xi1;
+            let psi_xixi = 2.0 * d1 / (xi1 * xi1);
+            *o = -(psi_xixi + self.wall_curvature[k]) * g.inv_jac[k];
+        }
     }
 
-    /// The explicit part of `dω/dt` (advection and diffusion round the
-    /// section) at the interior nodes into `self.rate` (wall and outer
-    /// rows zero); rows in parallel.
+    /// The explicit parts of `dω/dt` at the interior nodes: advection into
+    /// `self.rate`, diffusion round the section into
+    /// `self.theta_diffusion` (wall and outer rows zero); rows in parallel.
     fn explicit_rate(&mut self) {
         let g = &self.grid;
         let (nt, nr) = (g.nt, g.nr);
@@ -237,12 +268,15 @@ impl<M: Motion> Flow<M> {
         };
         self.rate
             .par_chunks_mut(nt)
+            .zip(self.theta_diffusion.par_chunks_mut(nt))
             .enumerate()
-            .for_each(|(j, out)| {
+            .for_each(|(j, (out, diffusion))| {
                 if j == 0 || j == nr - 1 {
                     out.fill(0.0);
+                    diffusion.fill(0.0);
                 } else {
-                    rows.row(j, w, rel, &g.inv_jac[j * nt..(j + 1) * nt], g.slope[j], out);
+                    let inv_jac = &g.inv_jac[j * nt..(j + 1) * nt];
+                    rows.row(j, w, rel, inv_jac, g.slope[j], (out, diffusion));
                 }
             });
     }
@@ -267,15 +301,16 @@ impl<M: Motion> Flow<M> {
         }
     }
 
-    /// The largest stable time step of the current flow for the scheme:
-    /// advective CFL `courant` and the explicit diffusion limit.
+    /// The largest stable time step of the current flow: the advective
+    /// Courant number `courant` (the diffusion and the wall vorticity are
+    /// implicit; second-order Adams–Bashforth with third-order upwind
+    /// advection is stable to a Courant number of about 0.5).
     #[must_use]
     pub fn stable_dt(&self, courant: f64) -> f64 {
         let g = &self.grid;
         let (nt, nr) = (g.nt, g.nr);
         let (de, dt) = (g.d_eta, g.d_theta);
         let mut worst_adv: f64 = 0.0;
-        let mut worst_diff: f64 = 0.0;
         for j in 1..nr - 1 {
             let gp = g.slope[j];
             for k in 0..nt {
@@ -288,27 +323,30 @@ impl<M: Motion> Flow<M> {
                 let psi_e = (rel(i + nt) - rel(i - nt)) / (2.0 * de);
                 let adv = (psi_t / (jac * gp)).abs() / de + (psi_e / (gp * jac)).abs() / dt;
                 worst_adv = worst_adv.max(adv);
-                let mut diff = self.viscosity / jac * 4.0 / (dt * dt);
-                if j == 1 {
-                    // The lagged wall vorticity: the first cell's diffusion
-                    // number ν dt / Δn² stays below WALL_DIFFUSION_LIMIT.
-                    let wall = self.viscosity / (jac * (g.xi[1] * g.xi[1]));
-                    diff = diff.max(wall * DIFFUSION_LIMIT / WALL_DIFFUSION_LIMIT);
-                }
-                worst_diff = worst_diff.max(diff);
             }
         }
-        let by_adv = if worst_adv > 0.0 { courant / worst_adv } else { f64::INFINITY };
-        by_adv.min(DIFFUSION_LIMIT / worst_diff)
+        if worst_adv > 0.0 {
+            courant / worst_adv
+        } else {
+            f64::INFINITY
+        }
     }
 
-    /// Advance one step of `dt`: Crank–Nicolson in the radial diffusion,
-    /// second-order Adams–Bashforth in the rest (Euler on the first step
-    /// and after a change of `dt`), one streamfunction solve.
+    /// Advance one step of `dt`: second-order Adams–Bashforth advection
+    /// (Euler on the first step and after a change of `dt`), Crank–Nicolson
+    /// diffusion split by Douglas's ADI into radial and ring sweeps, and
+    /// the wall vorticity implicit: the one that Thom's formula gives back
+    /// for the step's own streamfunction, from the wall's influence matrix
+    /// (built for each new `dt`). Two implicit sweeps and two
+    /// streamfunction solves.
     ///
     /// # Errors
     /// [`NsError::Diverged`] when the flow is no longer finite.
     pub fn step(&mut self, dt: f64) -> Result<(), NsError> {
+        let nt = self.grid.nt;
+        if self.influence.as_ref().is_none_or(|w| w.dt != dt) {
+            self.influence = Some(self.wall_influence(dt)?);
+        }
         self.explicit_rate();
         let restart = self.steps == 0 || (dt - self.last_dt).abs() > 1e-12 * dt;
         let (now, before) = if restart { (1.0, 0.0) } else { (1.5, -0.5) };
@@ -317,15 +355,44 @@ impl<M: Motion> Flow<M> {
             *r = now * current + before * *p;
             *p = current;
         }
-        self.radial_crank_nicolson(dt);
+        // Douglas's ADI: the first sweep carries the whole explicit
+        // diffusion round the section, the second takes half of it back
+        // implicitly.
+        for (r, d) in self.rate.iter_mut().zip(&self.theta_diffusion) {
+            *r += d;
+        }
+        let t = self.time + dt;
+        // The step with a zero new wall vorticity, and Thom's of it.
+        self.start.copy_from_slice(&self.omega);
+        let zero = vec![0.0; nt];
+        self.radial_crank_nicolson(dt, &zero);
+        self.ring_implicit(dt);
+        self.omega[..nt].fill(0.0);
         self.outer_condition();
-        self.time += dt;
+        let outer_ring = self.omega[(self.grid.nr - 1) * nt..].to_vec();
+        self.solve_stream(t, false);
+        let mut wall = std::mem::take(&mut self.wall_scratch);
+        self.thom(false, &mut wall);
+        // The wall vorticity that Thom's formula gives back of itself:
+        // (I - M) ω0 = Thom(zero wall).
+        if let Some(influence) = &self.influence {
+            influence.solve(&mut wall);
+        }
+        // The step again with that wall vorticity.
+        self.omega.copy_from_slice(&self.start);
+        self.radial_crank_nicolson(dt, &wall);
+        self.ring_implicit(dt);
+        self.omega[..nt].copy_from_slice(&wall);
+        let outer_start = (self.grid.nr - 1) * nt;
+        self.omega[outer_start..].copy_from_slice(&outer_ring);
+        self.wall_scratch = wall;
+        self.time = t;
         self.steps += 1;
         self.last_dt = dt;
-        self.evaluate(self.time);
+        self.solve_stream(t, false);
         // Every node's vorticity reaches the wall ring through the
         // streamfunction solve: a non-finite value anywhere shows there.
-        if self.omega[..self.grid.nt].iter().any(|w| !w.is_finite()) {
+        if self.omega[..nt].iter().any(|w| !w.is_finite()) || self.psi[nt..2 * nt].iter().any(|p| !p.is_finite()) {
             return Err(NsError::Diverged {
                 time: self.time,
                 step: self.steps,
@@ -335,14 +402,71 @@ impl<M: Motion> Flow<M> {
         Ok(())
     }
 
+    /// The wall's influence matrix for steps of `dt`: column `k` is Thom's
+    /// wall vorticity of the step's response to a unit wall vorticity at
+    /// node `k` (homogeneous conditions, no explicit rate); factored as
+    /// `I - M`. Costs `N_θ` implicit sweeps and streamfunction solves.
+    fn wall_influence(&mut self, dt: f64) -> Result<WallInfluence, NsError> {
+        let nt = self.grid.nt;
+        let saved = (self.omega.clone(), self.psi.clone(), self.rate.clone());
+        let theta = std::mem::replace(&mut self.theta_diffusion, vec![0.0; self.grid.len()]);
+        self.rate.fill(0.0);
+        let mut matrix = nalgebra::DMatrix::<f64>::identity(nt, nt);
+        let mut unit = vec![0.0; nt];
+        let mut column = vec![0.0; nt];
+        for k in 0..nt {
+            unit.fill(0.0);
+            unit[k] = 1.0;
+            self.omega.fill(0.0);
+            self.radial_crank_nicolson(dt, &unit);
+            self.ring_implicit(dt);
+            self.omega[..nt].copy_from_slice(&unit);
+            self.solve_stream(0.0, true);
+            self.thom(true, &mut column);
+            for (i, c) in column.iter().enumerate() {
+                matrix[(i, k)] -= c;
+            }
+        }
+        let (omega, psi, rate) = saved;
+        self.theta_diffusion = theta;
+        self.omega = omega;
+        self.psi = psi;
+        self.rate = rate;
+        let lu = matrix.lu();
+        if !lu.is_invertible() {
+            return Err(NsError::SingularWall { dt });
+        }
+        Ok(WallInfluence { dt, lu })
+    }
+
+    /// The second ADI sweep: `(1 - dt/2 D_θ) ω = ω* - dt/2 D_θ ω_old` on
+    /// every interior ring (periodic tridiagonal systems, rings in
+    /// parallel), `D_θ ω_old` being `self.theta_diffusion`.
+    fn ring_implicit(&mut self, dt: f64) {
+        let g = &self.grid;
+        let (nt, nr) = (g.nt, g.nr);
+        let factor = 0.5 * dt * self.viscosity / (g.d_theta * g.d_theta);
+        self.omega
+            .par_chunks_mut(nt)
+            .zip(self.theta_diffusion.par_chunks(nt))
+            .zip(g.inv_jac.par_chunks(nt))
+            .enumerate()
+            .filter(|(j, _)| *j > 0 && *j < nr - 1)
+            .for_each(|(_, ((ring, old), inv_jac))| {
+                let mut rhs: Vec<f64> = ring.iter().zip(old).map(|(w, d)| w - 0.5 * dt * d).collect();
+                let sigma: Vec<f64> = inv_jac.iter().map(|i| factor * i).collect();
+                solve_periodic(&sigma, &mut rhs);
+                ring.copy_from_slice(&rhs);
+            });
+    }
+
     /// `ω ← (1 - dt/2 D)⁻¹ [(1 + dt/2 D) ω + dt E]` along each radial
     /// line, `D` the radial diffusion `ν/(J g'²)(∂ηη - β ∂η)` and `E` the
-    /// explicit rate in `self.rate`; the wall value (Thom's of the current
-    /// streamfunction, lagged by the step) and the outer value are held.
-    /// The lag limits the wall cell's diffusion number (see
-    /// [`Self::stable_dt`]). The Thomas sweeps run ring by ring over all
+    /// explicit rate in `self.rate`, with the wall vorticity `new_wall` at
+    /// the end of the step (the current one at its start) and the outer
+    /// value held. The Thomas sweeps run ring by ring over all
     /// lines at once (contiguous memory).
-    fn radial_crank_nicolson(&mut self, dt: f64) {
+    fn radial_crank_nicolson(&mut self, dt: f64, new_wall: &[f64]) {
         let g = &self.grid;
         let (nt, nr) = (g.nt, g.nr);
         let h2 = 1.0 / (g.d_eta * g.d_eta);
@@ -369,7 +493,7 @@ impl<M: Motion> Flow<M> {
                     upper = 0.0;
                 }
                 let (prev_upper, prev_rhs) = if j == 1 {
-                    rhs -= lower * old_below;
+                    rhs -= lower * new_wall[k];
                     (0.0, 0.0)
                 } else {
                     (upper_mod[i - nt], solved[i - nt])
@@ -449,17 +573,72 @@ impl<M: Motion> Flow<M> {
     }
 }
 
-/// The diffusion number round the section the explicit (Adams–Bashforth)
-/// part keeps below: AB2 is stable to 1 on the negative real axis.
-const DIFFUSION_LIMIT: f64 = 0.8;
+/// Solve `-σ_k x_{k-1} + (1 + 2σ_k) x_k - σ_k x_{k+1} = b_k` round a ring
+/// (periodic), in place, by the Thomas algorithm with the Sherman–Morrison
+/// correction for the corners. The matrix is diagonally dominant.
+fn solve_periodic(sigma: &[f64], b: &mut [f64]) {
+    let n = b.len();
+    // A = T + u vᵀ with u = (γ, 0, …, 0, -σ_{n-1}), v = (1, 0, …, 0, -σ_0/γ).
+    let gamma = -(1.0 + 2.0 * sigma[0]);
+    let diag = |k: usize| {
+        let d = 1.0 + 2.0 * sigma[k];
+        if k == 0 {
+            d - gamma
+        } else if k == n - 1 {
+            d - sigma[n - 1] * sigma[0] / gamma
+        } else {
+            d
+        }
+    };
+    let mut upper = vec![0.0; n];
+    let mut z = vec![0.0; n];
+    z[0] = gamma;
+    z[n - 1] = -sigma[n - 1];
+    // Forward elimination of T for both right-hand sides.
+    let mut prev_upper = 0.0;
+    for k in 0..n {
+        let lower = if k == 0 { 0.0 } else { -sigma[k] };
+        let inv = 1.0 / (diag(k) - lower * prev_upper);
+        upper[k] = if k + 1 < n { -sigma[k] * inv } else { 0.0 };
+        if k > 0 {
+            b[k] -= lower * b[k - 1];
+            z[k] -= lower * z[k - 1];
+        }
+        b[k] *= inv;
+        z[k] *= inv;
+        prev_upper = upper[k];
+    }
+    for k in (0..n - 1).rev() {
+        b[k] -= upper[k] * b[k + 1];
+        z[k] -= upper[k] * z[k + 1];
+    }
+    let v_last = -sigma[0] / gamma;
+    let factor = (b[0] + v_last * b[n - 1]) / (1.0 + z[0] + v_last * z[n - 1]);
+    for k in 0..n {
+        b[k] -= factor * z[k];
+    }
+}
 
-/// The largest diffusion number `ν dt / Δn²` of the wall cell with the
-/// wall vorticity lagged by one step: measured on the impulsively started
-/// cylinder at Re 550 (stable at 0.45, diverging at 0.9 within 20 steps).
-const WALL_DIFFUSION_LIMIT: f64 = 0.45;
+/// The factored `I - M` of the implicit wall vorticity (see
+/// `Flow::wall_influence`), for one time step.
+struct WallInfluence {
+    dt: f64,
+    lu: nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>,
+}
 
-/// The explicit rate of one ring (advection by third-order upwind
-/// differences, diffusion round the section by central differences).
+impl WallInfluence {
+    /// Solve `(I - M) x = b` in place.
+    fn solve(&self, b: &mut [f64]) {
+        let rhs = nalgebra::DVector::from_column_slice(b);
+        if let Some(x) = self.lu.solve(&rhs) {
+            b.copy_from_slice(x.as_slice());
+        }
+    }
+}
+
+/// The explicit rates of one ring: advection by third-order upwind
+/// differences, and diffusion round the section by central differences
+/// (apart: the step treats it implicitly).
 struct RateRows {
     nt: usize,
     nr: usize,
@@ -472,7 +651,15 @@ impl RateRows {
     /// Ring `j` (`1 <= j < nr - 1`) of `dω/dt` into `out`, from the
     /// vorticity `w`, the relative streamfunction `rel` and the ring's
     /// `1/J` and `g'`.
-    fn row(&self, j: usize, w: &[f64], rel: &[f64], inv_jac: &[f64], slope: f64, out: &mut [f64]) {
+    fn row(
+        &self,
+        j: usize,
+        w: &[f64],
+        rel: &[f64],
+        inv_jac: &[f64],
+        slope: f64,
+        (out, diffusion): (&mut [f64], &mut [f64]),
+    ) {
         let nt = self.nt;
         let ring = |jj: usize| &w[jj * nt..(jj + 1) * nt];
         let (w0, wm, wp) = (ring(j), ring(j - 1), ring(j + 1));
@@ -501,7 +688,8 @@ impl RateRows {
                 None => u_eta * (wp[k] - wm[k]) * half_de,
             };
             let w_tt = (th[3] - 2.0 * th[2] + th[1]) * inv_dt2;
-            out[k] = self.viscosity * inv_jac[k] * w_tt - adv_t - adv_e;
+            diffusion[k] = self.viscosity * inv_jac[k] * w_tt;
+            out[k] = -adv_t - adv_e;
         }
     }
 }

@@ -31,9 +31,11 @@
 #![warn(missing_docs)]
 #![warn(clippy::too_many_lines)]
 
+pub mod cases;
 mod error;
 mod flow;
 mod grid;
+mod history;
 mod motion;
 mod section_map;
 mod stream;
@@ -41,6 +43,7 @@ mod stream;
 pub use error::NsError;
 pub use flow::{Flow, WallLoads};
 pub use grid::{GridSpec, OGrid, RadialStretch};
+pub use history::{ForceHistory, WakeStatistics};
 pub use motion::{FrameState, Motion, RigidField, SteadyStream};
 pub use section_map::SectionMap;
 pub use stream::StreamSolver;
