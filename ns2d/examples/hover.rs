@@ -16,10 +16,37 @@ fn main() {
     };
     let dt = args[4];
     let periods = args[5];
-    let stroke = HoveringStroke::wang_2004();
+    let mut stroke = HoveringStroke::wang_2004();
+    if let Ok(p) = std::env::var("PITCH") {
+        stroke.pitch = p.parse().unwrap();
+    }
+    if let Ok(a) = std::env::var("MEAN") {
+        stroke.mean_angle = a.parse().unwrap();
+    }
+    if let Ok(a) = std::env::var("STROKE") {
+        stroke.stroke = a.parse().unwrap();
+    }
     let map = SectionMap::ellipse(0.5, 0.06, (0.0, 0.0)).unwrap();
-    let probe = Flow::new(&map, grid, stroke, stroke.peak_speed() / 75.0).unwrap();
+    let mut probe = Flow::new(&map, grid, stroke, HoveringStroke::wang_2004().peak_speed() / 75.0).unwrap();
     eprintln!("stable dt at start: {:.3e}", probe.stable_dt(0.5));
+    if std::env::var("TRACE").is_ok() {
+        let mut n = 0;
+        while probe.time() < periods * 4.0 {
+            if let Err(e) = probe.step(dt) {
+                eprintln!("{e}");
+                break;
+            }
+            n += 1;
+            if n % 200 == 0 {
+                let w = probe.vorticity();
+                let nt = grid.around;
+                let (imax, wmax) = w.iter().enumerate().fold((0, 0.0f64), |(bi, bm), (i, v)| if v.abs() > bm { (i, v.abs()) } else { (bi, bm) });
+                eprintln!("t {:.3} stable {:.2e} wmax {:.3e} at j {} k {} CL {:.3}", probe.time(), probe.stable_dt(0.5), wmax, imax / nt, imax % nt, probe.loads().force.im * 2.0 / 4.84);
+                eprintln!("   force {:?} moment {:.4} closure {:.4} p-range {:.3}", probe.loads().force, probe.loads().moment, probe.loads().closure, probe.loads().pressure.iter().fold(0.0f64, |m, p| m.max(p.abs())));
+            }
+        }
+        return;
+    }
     let started = std::time::Instant::now();
     let lift = HoveringEllipse { reynolds: 75.0, periods }
         .run(Resolution { grid, dt })

@@ -87,6 +87,21 @@ pub struct ImpulsiveCylinder {
 }
 
 impl ImpulsiveCylinder {
+    /// The resolution validated at Re 550: 256 nodes round, 192 out to 50
+    /// diameters, first cell 0.001 D, step 0.004 D/U.
+    #[must_use]
+    pub fn validated() -> Resolution {
+        Resolution {
+            grid: GridSpec {
+                around: 256,
+                radial: 192,
+                outer_radius: 100.0,
+                first_cell: 0.002,
+            },
+            dt: 0.004,
+        }
+    }
+
     /// Run the case at `resolution`: `(U t / R, CD)` after every step.
     ///
     /// # Errors
@@ -130,6 +145,8 @@ pub struct HoveringStroke {
     pub frequency: f64,
     /// Pitch amplitude, radians.
     pub pitch: f64,
+    /// Mean angle of the chord to the stroke line, radians.
+    pub mean_angle: f64,
 }
 
 impl HoveringStroke {
@@ -140,6 +157,7 @@ impl HoveringStroke {
             stroke: 2.8,
             frequency: 0.25,
             pitch: std::f64::consts::FRAC_PI_4,
+            mean_angle: std::f64::consts::FRAC_PI_2,
         }
     }
 
@@ -158,7 +176,7 @@ impl Motion for HoveringStroke {
         FrameState {
             velocity: Complex64::new(-half * w * s, 0.0),
             acceleration: Complex64::new(-half * w * w * c, 0.0),
-            angle: std::f64::consts::FRAC_PI_2 + self.pitch * s,
+            angle: self.mean_angle + self.pitch * s,
             rate: self.pitch * w * c,
             angular_acceleration: -self.pitch * w * w * s,
         }

@@ -215,15 +215,10 @@ impl<M: Motion> Flow<M> {
                 self.wall_slope[k] = (grad.conj() * g.dz_dxi[k]).re;
             }
         }
-        // Far away the fluid is at rest: ψ = 0 (a constant is the wall's C).
+        // Far away the fluid is at rest: ψ = 0.
         self.outer.fill(0.0);
-        self.stream.solve(
-            &self.source,
-            &self.wall_shape,
-            &self.wall_slope,
-            &self.outer,
-            &mut self.psi,
-        );
+        self.stream
+            .solve(&self.source, &self.wall_shape, &self.outer, &mut self.psi);
     }
 
     /// Thom's wall vorticity (module docs) of the current streamfunction

@@ -8,12 +8,13 @@
 //! (second-order differences in the stretched `η`), factored once when the
 //! solver is built. A solve costs `O(N_θ N_r log N_θ)`.
 //!
-//! Boundary conditions: Dirichlet at the outer ring; at the wall, Dirichlet
-//! on the non-uniform part of `ψ` (the wall's motion) and, for the mean
-//! (mode 0), the wall's mean normal derivative `ψ_ξ` (its circulation) with
-//! the free constant `C` of the wall's streamfunction as the unknown (the
-//! no-slip condition in the mean, which fixes the circulation round the
-//! section; Thom's second-order Taylor row with the wall's `J ω`).
+//! Boundary conditions: Dirichlet at the wall (the wall's motion; its
+//! constant is a gauge, zero) and at the outer ring for every mode but
+//! the mean, whose outer condition is Kelvin's: no circulation round the
+//! far boundary (`ψ_ξ = 0` there, second-order one-sided). The circulation
+//! round the section then follows from the vorticity, and the no-slip
+//! condition (which sets the section's circulation) is the wall
+//! vorticity's job ([`crate::Flow`]).
 
 use std::sync::Arc;
 
@@ -65,16 +66,6 @@ impl ModeFactors {
     }
 }
 
-/// Weights of `ψ(0), ψ(ξ1), ψ(ξ2)` in the second-order one-sided `ψ_ξ(0)`
-/// (the derivative of the quadratic through the three).
-fn wall_slope_weights(xi1: f64, xi2: f64) -> [f64; 3] {
-    [
-        -(xi1 + xi2) / (xi1 * xi2),
-        xi2 / (xi1 * (xi2 - xi1)),
-        -xi1 / (xi2 * (xi2 - xi1)),
-    ]
-}
-
 /// The factored Poisson solver of one grid (module docs).
 pub struct StreamSolver {
     nt: usize,
@@ -87,8 +78,6 @@ pub struct StreamSolver {
     /// (the same in all rows: the stretching is exponential).
     lower_coefficient: f64,
     upper_coefficient: f64,
-    /// The wall-slope weights of `ψ0, ψ1, ψ2` (mode 0's wall row).
-    wall_weights: [f64; 3],
     /// `g'²` per radial node.
     slope2: Vec<f64>,
     spectrum: Vec<Complex64>,
@@ -125,18 +114,17 @@ impl StreamSolver {
         for m in 0..modes {
             let k2 = (m * m) as f64;
             if m == 0 {
-                // Unknowns j = 0..nr-2: the wall row is the Neumann row.
+                // Unknowns j = 1..nr-1: the outer row is Kelvin's
+                // condition, no circulation round the far boundary
+                // (3ψ_N - 4ψ_{N-1} + ψ_{N-2} = 0), with ψ_{N-2} eliminated
+                // by row N-1 to stay tridiagonal.
                 let n = nr - 1;
                 let mut lower = vec![a; n];
-                let mut diag: Vec<f64> = (0..n).map(|j| -2.0 * h2 - k2 * slope2[j]).collect();
+                let mut diag = vec![-2.0 * h2; n];
                 let mut upper = vec![c; n];
-                // Row 0: the second-order one-sided ψ_ξ at the wall
-                // (a quadratic through ψ0, ψ1, ψ2), with ψ2 eliminated by
-                // row 1 to stay tridiagonal.
-                let w = wall_slope_weights(grid.xi[1], grid.xi[2]);
                 lower[0] = 0.0;
-                diag[0] = w[0] - w[2] * a / c;
-                upper[0] = w[1] - w[2] * diag[1] / c;
+                lower[n - 1] = -4.0 - diag[n - 2] / a;
+                diag[n - 1] = 3.0 - c / a;
                 upper[n - 1] = 0.0;
                 factors.push(ModeFactors::new(lower, &diag, &upper));
             } else {
@@ -165,7 +153,6 @@ impl StreamSolver {
             factors,
             lower_coefficient: a,
             upper_coefficient: c,
-            wall_weights: wall_slope_weights(grid.xi[1], grid.xi[2]),
             slope2,
             spectrum: vec![Complex64::new(0.0, 0.0); modes * nr],
             column: vec![Complex64::new(0.0, 0.0); nr],
@@ -185,19 +172,10 @@ impl StreamSolver {
             .process_with_scratch(&mut self.ring, dst, &mut self.fft_scratch);
     }
 
-    /// Solve for `psi` (all nodes) given the source `s = J ω` at all nodes
-    /// (the wall ring's only enters the mean wall row), the wall's
-    /// streamfunction up to a constant, its normal derivative `ψ_ξ` and the
-    /// outer ring's streamfunction. Returns the wall constant `C` (the wall
-    /// ring of `psi` is `wall_shape + C`).
-    pub fn solve(
-        &mut self,
-        source: &[f64],
-        wall_shape: &[f64],
-        wall_slope: &[f64],
-        outer: &[f64],
-        psi: &mut [f64],
-    ) -> f64 {
+    /// Solve for `psi` (all nodes) given the source `s = J ω` at all
+    /// nodes, the wall's streamfunction and the outer ring's (its mean
+    /// replaced by Kelvin's condition, module docs).
+    pub fn solve(&mut self, source: &[f64], wall_shape: &[f64], outer: &[f64], psi: &mut [f64]) {
         let (nt, nr, modes) = (self.nt, self.nr, self.modes);
         for j in 0..nr {
             self.ring_modes(&source[j * nt..(j + 1) * nt], j);
@@ -210,25 +188,22 @@ impl StreamSolver {
             }
         }
         let wall = self.modes_of(wall_shape);
-        let slope_mean = self.modes_of(wall_slope)[0];
         let outer_modes = self.modes_of(outer);
-        let mut constant = 0.0;
         for m in 0..modes {
             if m == 0 {
-                // Row 0 (see `new`): ψ_ξ = the mean wall slope, less row
-                // 1's right-hand side times the eliminated weight.
+                // Rows j = 1..nr-2, then Kelvin's row (see `new`) less row
+                // N-1's right-hand side over its eliminated coefficient.
                 let n = nr - 1;
-                self.column[0] = slope_mean - self.spectrum[modes] * (self.wall_weights[2] / self.upper_coefficient);
-                for j in 1..n {
-                    self.column[j] = self.spectrum[j * modes];
+                for i in 0..n - 1 {
+                    self.column[i] = self.spectrum[(i + 1) * modes];
                 }
-                self.column[n - 1] -= outer_modes[0] * self.upper_coefficient;
+                self.column[0] -= wall[0] * self.lower_coefficient;
+                self.column[n - 1] = -self.column[n - 2] / self.lower_coefficient;
                 self.factors[0].solve(&mut self.column[..n]);
-                for j in 0..n {
-                    self.spectrum[j * modes] = self.column[j];
+                for i in 0..n {
+                    self.spectrum[(i + 1) * modes] = self.column[i];
                 }
-                self.spectrum[(nr - 1) * modes] = outer_modes[0];
-                constant = (self.column[0].re - wall[0].re) / nt as f64;
+                self.spectrum[0] = wall[0];
             } else {
                 let n = nr - 2;
                 for j in 0..n {
@@ -258,7 +233,6 @@ impl StreamSolver {
                 *v *= scale;
             }
         }
-        constant
     }
 
     /// Fourier modes of a ring (unnormalized), into a fresh vector.
