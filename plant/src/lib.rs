@@ -274,8 +274,7 @@ impl Plant {
         Electrical {
             f,
             e0: f * self.battery_v * c.inv_inductance,
-            e1: (self.p.resistance_ohm + f * f * self.p.internal_resistance_ohm)
-                * c.inv_inductance,
+            e1: (self.p.resistance_ohm + f * f * self.p.internal_resistance_ohm) * c.inv_inductance,
             e2: c.kt_n * c.inv_inductance,
         }
     }

@@ -28,8 +28,8 @@ const REDUCED_LIMIT: f32 = 200.0;
 
 /// `(sin x, cos x)`, `x` in radians (see the module docs for accuracy).
 pub fn sincos(x: f32) -> (f32, f32) {
-    // `!(a <= b)` also sends NaN to libm.
-    if !(libm::fabsf(x) <= REDUCED_LIMIT) {
+    // NaN and infinities fail `is_finite`; both go to libm.
+    if !x.is_finite() || libm::fabsf(x) > REDUCED_LIMIT {
         return libm::sincosf(x);
     }
     let k = libm::roundf(x * FRAC_2_PI);
