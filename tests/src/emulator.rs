@@ -12,7 +12,7 @@
 
 use std::collections::BTreeMap;
 use std::fs::File;
-use std::io::{BufRead, BufReader};
+use std::io::{BufRead, BufReader, Write};
 use std::os::unix::fs::OpenOptionsExt;
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, ExitStatus, Stdio};
@@ -150,8 +150,10 @@ pub struct Emulator {
     ports: Vec<String>,
     /// Each pty kept open here, so QEMU always sees it connected: when the
     /// last client closes a pty QEMU polls it only once a second, and the
-    /// next client's first request would wait for that.
-    _holders: Vec<File>,
+    /// next client's first request would wait for that. Also how raw bytes
+    /// are written ([`Emulator::write`]) while `fwav`, which opens a port
+    /// for itself alone, holds it.
+    holders: Vec<File>,
     output: Arc<Mutex<Vec<String>>>,
     reader: Option<JoinHandle<()>>,
 }
@@ -196,12 +198,12 @@ impl Emulator {
         let mut emulator = Emulator {
             child,
             ports: Vec::new(),
-            _holders: Vec::new(),
+            holders: Vec::new(),
             output,
             reader,
         };
         emulator.ports = emulator.wait_for_ports(serial_ports);
-        emulator._holders = emulator.ports.iter().map(|p| hold(p)).collect();
+        emulator.holders = emulator.ports.iter().map(|p| hold(p)).collect();
         emulator
     }
 
@@ -236,6 +238,15 @@ impl Emulator {
     /// The pty of UART `k`.
     pub fn port(&self, k: usize) -> &str {
         &self.ports[k]
+    }
+
+    /// Writes `bytes` into UART `k`'s pty as a client would, blocking while
+    /// QEMU takes them (a byte at a time: 10-20 KB/s).
+    pub fn write(&mut self, k: usize, bytes: &[u8]) {
+        let pty = &self.ports[k];
+        self.holders[k]
+            .write_all(bytes)
+            .unwrap_or_else(|e| panic!("writing {pty}: {e}"));
     }
 
     /// Everything QEMU and the firmware printed so far (both streams).
