@@ -96,6 +96,10 @@ impl StepCost {
                 share(2.0)
             );
         }
+        out +=
+            "(control_step is the budgeted work; a frame is decoded, handled and answered at the \
+                link's priority, below the control step; plant_period is the emulator's plant, \
+                not firmware)\n";
         out += &format!(
             "wing amplitude over the last 0.1 s: {:.3} deg; stack high-water mark {} bytes",
             self.amplitude_deg, self.stack_used

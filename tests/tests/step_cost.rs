@@ -1,10 +1,12 @@
-//! The step-cost benchmark's quick form (`fwav_e2e::step_cost`): 1.5 s of
-//! 10 kHz control steps of the unchanged flight-controller core flying the
-//! shipped initial design on QEMU's emulated Cortex-M4F, counted in
-//! instructions. It fails when a control step, on average or at its
-//! longest, would take more than 30% of the STM32F405's 16,800 cycles a
-//! period at the assumed 1.25 cycles per instruction. The full form (a
-//! whole profile pass) is `cargo bench -p fwav-e2e --bench step_cost`.
+//! The step-cost benchmark (`fwav_e2e::step_cost`): 10 kHz control steps of
+//! the unchanged flight-controller core flying the shipped initial design
+//! on QEMU's emulated Cortex-M4F, counted in instructions. It fails when a
+//! control step, on average or at its longest, would take more than 30% of
+//! the STM32F405's 16,800 cycles a period at the assumed 1.25 cycles per
+//! instruction. The quick form (1.5 s: the ramp and half a second at 11 Hz,
+//! about 2 s of wall time) runs in CI; the full form (a whole pass of the
+//! profile, 21.5 s, about 30 s of wall time) is
+//! `cargo test -p fwav-e2e --test step_cost -- --ignored --nocapture`.
 //! Skipped, saying so, only where `qemu-system-arm` is not installed.
 
 use fwav_e2e::emulator::{find_qemu, firmware};
@@ -12,15 +14,28 @@ use fwav_e2e::step_cost::{self, Measured, BUDGET_SHARE_LIMIT, CYCLES_PER_INSTRUC
 
 #[test]
 fn a_control_step_takes_under_30_percent_of_the_period_on_the_cortex_m4() {
+    within_budget(1.5);
+}
+
+#[test]
+#[ignore = "the full form: a whole profile pass, about 30 s; CI runs the quick form above"]
+fn a_whole_profile_pass_stays_under_30_percent_of_the_period() {
+    within_budget(21.5);
+}
+
+/// Flies `seconds` of control steps and checks the budget, the closed
+/// loop and that every frame kind was measured.
+fn within_budget(seconds: f64) {
     let qemu = match find_qemu() {
         Ok(qemu) => qemu,
         Err(why) => return eprintln!("{why}"),
     };
-    let cost = step_cost::run(&qemu, &firmware("step-cost"), 1.5);
+    let cost = step_cost::run(&qemu, &firmware("step-cost"), seconds);
     println!("{}", cost.table());
 
     let step = cost.get("control_step");
-    assert_eq!(step.count, 15_000, "one measurement per control step");
+    let steps = (seconds * 10_000.0).round() as u64;
+    assert_eq!(step.count, steps, "one measurement per control step");
     for (what, instructions) in [("mean", step.mean), ("longest", step.max)] {
         let share = Measured::budget_share(instructions, CYCLES_PER_INSTRUCTION);
         assert!(
