@@ -2,13 +2,13 @@
 //! parameters in flash and restores them at boot; here the store is RAM
 //! (lost when QEMU ends), and it starts out as a board configured for its
 //! vehicle: a record holding the controller's model of the shipped plant
-//! ([`vehicle::CONTROLLER_MODEL`](crate::vehicle::CONTROLLER_MODEL)),
+//! ([`shipped::CONTROLLER_MODEL`](crate::shipped::CONTROLLER_MODEL)),
 //! which the flight controller restores at boot through the same
 //! `StoredState` path the STM32 takes.
 
 use fwav_fc_core::storage::{StoredState, MAX_RECORD_LEN};
 
-use crate::vehicle::CONTROLLER_MODEL;
+use crate::shipped::CONTROLLER_MODEL;
 
 /// The stored record.
 pub struct Flash {

@@ -20,7 +20,8 @@
 //!
 //! Modules (built for the microcontroller only): `board` (the machine's
 //! memory map, interrupts and clocks), `uart` and `counter` (the CMSDK UART
-//! and timer), `vehicle` (the plant and its sensors), `flash` (the
+//! and timer), `vehicle` (the plant and its sensors), `shipped` (the
+//! shipped plant and profile as constants), `flash` (the
 //! parameter store), `cost` (timing statistics), `stack` (painted-stack
 //! high-water mark), `report` and `command_line` (semihosting output and
 //! input).
@@ -44,6 +45,9 @@ pub mod counter;
 pub mod flash;
 #[cfg(target_os = "none")]
 pub mod report;
+#[cfg(target_os = "none")]
+#[rustfmt::skip] // generated (tests/tests/firmware_constants.rs)
+pub mod shipped;
 #[cfg(target_os = "none")]
 pub mod stack;
 #[cfg(target_os = "none")]

@@ -1,5 +1,5 @@
 //! The vehicle the emulated board flies: the shipped plant
-//! (`actuator/plant.toml`, turned into constants by `build.rs`) integrated
+//! (`actuator/plant.toml`, as the constants of [`crate::shipped`]) integrated
 //! by `fwav-plant` — the equations and RK4 steps hil-sim integrates — and
 //! the sensors the flight controller reads.
 //!
@@ -23,15 +23,13 @@
 //! the control interrupt, outside the measured control step.
 
 use fwav_fc_core::controller::Measurement;
-use fwav_plant::{Drive, Physics, Plant, PwmModel};
-use fwav_protocol::{ParamId, ParamValue};
+use fwav_plant::{Drive, Plant};
 
 use crate::board;
+use crate::shipped::{CURRENT_OFFSET_A, ENCODER_COUNTS_PER_REV, PHYSICS, PLANT_CONTROL_HZ};
 
 /// RK4 steps of the plant per control period (see the module docs).
 pub const SUBSTEPS: u32 = 4;
-
-include!(concat!(env!("OUT_DIR"), "/vehicle.rs"));
 
 const _: () = assert!(
     PLANT_CONTROL_HZ == board::CONTROL_HZ as f64,

@@ -37,10 +37,9 @@ mod firmware {
     use fwav_fc_qemu::board;
     use fwav_fc_qemu::cost::Cost;
     use fwav_fc_qemu::flash::Flash;
+    use fwav_fc_qemu::shipped::UPLOAD_INITIAL_DESIGN;
     use fwav_fc_qemu::vehicle::Vehicle;
     use fwav_fc_qemu::{command_line, counter, report, stack};
-
-    include!(concat!(env!("OUT_DIR"), "/profile.rs"));
 
     /// Simulated seconds flown without `seconds=` on the command line.
     const DEFAULT_SECONDS: f32 = 1.5;
