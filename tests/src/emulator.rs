@@ -241,7 +241,7 @@ impl Emulator {
     }
 
     /// Writes `bytes` into UART `k`'s pty as a client would, blocking while
-    /// QEMU takes them (a byte at a time: 10-20 KB/s).
+    /// QEMU takes them (a byte at a time: 5-15 KB/s measured).
     pub fn write(&mut self, k: usize, bytes: &[u8]) {
         let pty = &self.ports[k];
         self.holders[k]

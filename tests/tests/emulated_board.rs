@@ -12,7 +12,7 @@
 //!
 //! Skipped, saying so, only where `qemu-system-arm` is not installed (on CI
 //! `.ci/run` installs it, and there a missing QEMU fails the test). About
-//! 15 s.
+//! 10-20 s.
 
 use std::io::{BufRead, BufReader};
 use std::process::{Child, Command, Output, Stdio};
