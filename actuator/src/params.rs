@@ -19,17 +19,8 @@ pub enum ConfigError {
     OutOfRange(#[from] SettingError),
 }
 
-/// The H-bridge model.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum PwmModel {
-    /// Average voltage over a PWM period (fast).
-    #[default]
-    Averaged,
-    /// Resolve each PWM period's switching (needs substeps well below the
-    /// PWM period).
-    Switching,
-}
+/// The H-bridge model (declared with the equations that use it).
+pub use fwav_plant::PwmModel;
 
 /// DC motor.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -3,11 +3,16 @@
 //! The tests in `tests/tests/` drive the real code paths of several crates
 //! together: the host's profile file → protocol frames → the flight
 //! controller's portable core running in hil-sim's virtual flight controller
-//! → reply frames → the host.
+//! → reply frames → the host; and the same core compiled for the
+//! microcontroller, running on QEMU's emulated Cortex-M4F ([`emulator`],
+//! [`step_cost`]).
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::thread::JoinHandle;
+
+pub mod emulator;
+pub mod step_cost;
 
 use fwav_actuator::params::PlantParams;
 use fwav_hil_sim::serve::Server;

@@ -21,6 +21,7 @@ use fwav_protocol::ParamId;
 use crate::estimator::{FrequencyEstimator, RateObserver, StrokeEstimate, StrokeEstimator};
 use crate::params::ParamSet;
 use crate::reference::{Reference, Waveform};
+use crate::trig;
 
 /// What the sensors say at one control step.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -130,7 +131,7 @@ impl FlappingController {
         let cycle_done = target.phase < self.last_phase;
         self.last_phase = target.phase;
         let (theta, _) = Waveform::theta(target.phase, target.kin.downstroke_fraction);
-        let sin_cos = libm::sincosf(theta);
+        let sin_cos = trig::sincos(theta);
         let mean = target.kin.mean_rad;
         let reference = mean + target.kin.amplitude_rad * sin_cos.0;
         let stroke = self

@@ -11,7 +11,8 @@
 //! over-current); the profile's [`reference`](mod@reference) generator; the flapping
 //! [`controller`] (angle and current loops) and the rate [`estimator`];
 //! telemetry summaries ([`monitor`]); the device [`params`]; and the
-//! [`storage`] record of profile and parameters. It may import only
+//! [`storage`] record of profile and parameters; single-precision
+//! [`trig`] for the control step. It may import only
 //! `fwav-protocol` and no_std crates: no embassy, no PAC, no std.
 
 #![cfg_attr(not(test), no_std)]
@@ -26,6 +27,7 @@ pub mod params;
 pub mod reference;
 pub mod session;
 pub mod storage;
+pub mod trig;
 
 /// Firmware name and version reported in the handshake.
 pub const FIRMWARE_NAME: &str = concat!("fwav-fc ", env!("CARGO_PKG_VERSION"));

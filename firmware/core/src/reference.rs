@@ -157,7 +157,7 @@ impl Waveform {
     /// amplitude multiplied by `amplitude_scale`.
     pub fn evaluate(&self, phase_shift: f32, amplitude_scale: f32) -> Reference {
         let (theta, w, w_dot) = self.theta_with_rates(wrap(self.phase + phase_shift));
-        let (s, c) = libm::sincosf(theta);
+        let (s, c) = crate::trig::sincos(theta);
         let a = self.kin.amplitude_rad * amplitude_scale;
         let a_dot = self.kin_rate.amplitude_rad * amplitude_scale;
         let a_ddot = self.kin_accel.amplitude_rad * amplitude_scale;
