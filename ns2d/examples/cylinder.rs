@@ -6,9 +6,18 @@
 use fwav_ns2d::{Flow, GridSpec, SectionMap, SteadyStream};
 
 fn main() {
-    let args: Vec<f64> = std::env::args().skip(1).map(|a| a.parse().unwrap()).collect();
-    let (re, around, radial, outer_d, first, t_end) =
-        (args[0], args[1] as usize, args[2] as usize, args[3], args[4], args[5]);
+    let args: Vec<f64> = std::env::args()
+        .skip(1)
+        .map(|a| a.parse().unwrap())
+        .collect();
+    let (re, around, radial, outer_d, first, t_end) = (
+        args[0],
+        args[1] as usize,
+        args[2] as usize,
+        args[3],
+        args[4],
+        args[5],
+    );
     let fixed_dt = args.get(6).copied().unwrap_or(0.01);
     let map = SectionMap::circle(0.5).unwrap();
     let spec = GridSpec {
@@ -30,7 +39,10 @@ fn main() {
         if history.len() % 200 == 0 {
             let limit = flow.stable_dt(0.5);
             if limit < fixed_dt {
-                eprintln!("t {:.2}: dt {fixed_dt} above the limit {limit:.2e}", flow.time());
+                eprintln!(
+                    "t {:.2}: dt {fixed_dt} above the limit {limit:.2e}",
+                    flow.time()
+                );
             }
         }
         dt = fixed_dt;
@@ -39,21 +51,51 @@ fn main() {
         history.push((flow.time(), loads.force.re * 2.0, loads.force.im * 2.0));
         if std::env::var("WHERE").is_ok() {
             let w = flow.vorticity();
-            let (imax, _) = w.iter().enumerate().fold((0, 0.0f64), |(bi, bm), (i, v)| if v.abs() > bm { (i, v.abs()) } else { (bi, bm) });
-            eprintln!("step {} wmax at j {} k {} = {:.3e}; wall mean {:.3e}", history.len(), imax / around, imax % around, w[imax], w[..around].iter().sum::<f64>() / around as f64);
+            let (imax, _) = w.iter().enumerate().fold((0, 0.0f64), |(bi, bm), (i, v)| {
+                if v.abs() > bm {
+                    (i, v.abs())
+                } else {
+                    (bi, bm)
+                }
+            });
+            eprintln!(
+                "step {} wmax at j {} k {} = {:.3e}; wall mean {:.3e}",
+                history.len(),
+                imax / around,
+                imax % around,
+                w[imax],
+                w[..around].iter().sum::<f64>() / around as f64
+            );
         }
         if std::env::var("CLOSURE").is_ok() && history.len() % 100 == 0 {
             let p = &loads.pressure;
-            let range = p.iter().fold(f64::MIN, |m, v| m.max(*v)) - p.iter().fold(f64::MAX, |m, v| m.min(*v));
-            eprintln!("t {:.2} closure {:.4} range {:.4} CL {:.4}", flow.time(), loads.closure, range, loads.force.im * 2.0);
+            let range = p.iter().fold(f64::MIN, |m, v| m.max(*v))
+                - p.iter().fold(f64::MAX, |m, v| m.min(*v));
+            eprintln!(
+                "t {:.2} closure {:.4} range {:.4} CL {:.4}",
+                flow.time(),
+                loads.closure,
+                range,
+                loads.force.im * 2.0
+            );
         }
         if history.len() % 500 == 0 || history.len() < 40 {
-            eprintln!("t {:.4} dt {:.2e} wmax {:.3e} CD {:.4} CL {:.4}", flow.time(), dt, flow.vorticity().iter().fold(0.0f64, |m, w| m.max(w.abs())), loads.force.re * 2.0, loads.force.im * 2.0);
+            eprintln!(
+                "t {:.4} dt {:.2e} wmax {:.3e} CD {:.4} CL {:.4}",
+                flow.time(),
+                dt,
+                flow.vorticity().iter().fold(0.0f64, |m, w| m.max(w.abs())),
+                loads.force.re * 2.0,
+                loads.force.im * 2.0
+            );
         }
     }
     let wall = started.elapsed().as_secs_f64();
     if let Ok(path) = std::env::var("HISTORY") {
-        let text: String = history.iter().map(|h| format!("{} {} {}\n", h.0, h.1, h.2)).collect();
+        let text: String = history
+            .iter()
+            .map(|h| format!("{} {} {}\n", h.0, h.1, h.2))
+            .collect();
         std::fs::write(path, text).unwrap();
     }
     // Last third: mean CD, CL amplitude, period from upward zero crossings.

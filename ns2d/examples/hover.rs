@@ -7,7 +7,10 @@ use fwav_ns2d::cases::{HoveringEllipse, HoveringStroke, Resolution};
 use fwav_ns2d::{Flow, GridSpec, SectionMap};
 
 fn main() {
-    let args: Vec<f64> = std::env::args().skip(1).map(|a| a.parse().unwrap()).collect();
+    let args: Vec<f64> = std::env::args()
+        .skip(1)
+        .map(|a| a.parse().unwrap())
+        .collect();
     let grid = GridSpec {
         around: args[0] as usize,
         radial: args[1] as usize,
@@ -27,7 +30,13 @@ fn main() {
         stroke.stroke = a.parse().unwrap();
     }
     let map = SectionMap::ellipse(0.5, 0.06, (0.0, 0.0)).unwrap();
-    let mut probe = Flow::new(&map, grid, stroke, HoveringStroke::wang_2004().peak_speed() / 75.0).unwrap();
+    let mut probe = Flow::new(
+        &map,
+        grid,
+        stroke,
+        HoveringStroke::wang_2004().peak_speed() / 75.0,
+    )
+    .unwrap();
     eprintln!("stable dt at start: {:.3e}", probe.stable_dt(0.5));
     if std::env::var("TRACE").is_ok() {
         let mut n = 0;
@@ -40,18 +49,49 @@ fn main() {
             if n % 200 == 0 {
                 let w = probe.vorticity();
                 let nt = grid.around;
-                let (imax, wmax) = w.iter().enumerate().fold((0, 0.0f64), |(bi, bm), (i, v)| if v.abs() > bm { (i, v.abs()) } else { (bi, bm) });
-                eprintln!("t {:.3} stable {:.2e} wmax {:.3e} at j {} k {} CL {:.3}", probe.time(), probe.stable_dt(0.5), wmax, imax / nt, imax % nt, probe.loads().force.im * 2.0 / 4.84);
-                eprintln!("   force {:?} moment {:.4} closure {:.4} p-range {:.3}", probe.loads().force, probe.loads().moment, probe.loads().closure, probe.loads().pressure.iter().fold(0.0f64, |m, p| m.max(p.abs())));
+                let (imax, wmax) = w.iter().enumerate().fold((0, 0.0f64), |(bi, bm), (i, v)| {
+                    if v.abs() > bm {
+                        (i, v.abs())
+                    } else {
+                        (bi, bm)
+                    }
+                });
+                eprintln!(
+                    "t {:.3} stable {:.2e} wmax {:.3e} at j {} k {} CL {:.3}",
+                    probe.time(),
+                    probe.stable_dt(0.5),
+                    wmax,
+                    imax / nt,
+                    imax % nt,
+                    probe.loads().force.im * 2.0 / 4.84
+                );
+                eprintln!(
+                    "   force {:?} moment {:.4} closure {:.4} p-range {:.3}",
+                    probe.loads().force,
+                    probe.loads().moment,
+                    probe.loads().closure,
+                    probe
+                        .loads()
+                        .pressure
+                        .iter()
+                        .fold(0.0f64, |m, p| m.max(p.abs()))
+                );
             }
         }
         return;
     }
     let started = std::time::Instant::now();
-    let lift = HoveringEllipse { reynolds: 75.0, periods }
-        .run(Resolution { grid, dt })
-        .unwrap();
+    let lift = HoveringEllipse {
+        reynolds: 75.0,
+        periods,
+    }
+    .run(Resolution { grid, dt })
+    .unwrap();
     let text: String = lift.iter().map(|(t, cl)| format!("{t} {cl}\n")).collect();
     std::fs::write("/tmp/hover_lift.txt", text).unwrap();
-    println!("{} steps in {:.1} s", lift.len(), started.elapsed().as_secs_f64());
+    println!(
+        "{} steps in {:.1} s",
+        lift.len(),
+        started.elapsed().as_secs_f64()
+    );
 }

@@ -40,7 +40,7 @@ pub struct CylinderWake {
 
 impl CylinderWake {
     /// The grid and step validated for the wake at Re 100–200: 256 nodes
-    /// round, 192 out to 50 diameters, first cell 0.005 D.
+    /// round, 192 out to 50 diameters, first cell 0.005 D, dt = 0.005 D/U.
     #[must_use]
     pub fn validated() -> Resolution {
         Resolution {
@@ -50,7 +50,7 @@ impl CylinderWake {
                 outer_radius: 100.0,
                 first_cell: 0.01,
             },
-            dt: 0.0025,
+            dt: 0.005,
         }
     }
 
@@ -184,6 +184,21 @@ impl Motion for HoveringStroke {
 }
 
 impl HoveringEllipse {
+    /// The resolution validated for the hovering ellipse: 192 nodes round,
+    /// 128 out to 28 chords, first cell 0.01 in ξ, step 0.00025 c/U.
+    #[must_use]
+    pub fn validated() -> Resolution {
+        Resolution {
+            grid: GridSpec {
+                around: 192,
+                radial: 128,
+                outer_radius: 100.0,
+                first_cell: 0.01,
+            },
+            dt: 0.00025,
+        }
+    }
+
     /// Run the case at `resolution`: `(t / T, CL)` after every step, the
     /// lift being the force across the stroke over `½ ρ U_max² c`.
     ///

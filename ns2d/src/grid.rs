@@ -31,7 +31,7 @@ impl RadialStretch {
     pub fn new(xi_max: f64, first_cell: f64, cells: usize) -> Result<Self, NsError> {
         let uniform = xi_max / cells as f64;
         let ratio = uniform / first_cell;
-        if !(ratio > 1.0 + 1e-9) {
+        if ratio.is_nan() || ratio <= 1.0 + 1e-9 {
             return Err(NsError::NoStretching {
                 first: first_cell,
                 uniform,

@@ -57,7 +57,8 @@ impl ForceHistory {
         }
         let (start, end) = (crossings[0], crossings[crossings.len() - 1]);
         let periods = crossings.len() - 1;
-        let whole: Vec<&&(f64, Complex64)> = tail.iter().filter(|s| s.0 >= start && s.0 <= end).collect();
+        let whole: Vec<&&(f64, Complex64)> =
+            tail.iter().filter(|s| s.0 >= start && s.0 <= end).collect();
         // Trapezoidal mean over the whole periods.
         let mut area = 0.0;
         for pair in whole.windows(2) {
@@ -89,7 +90,10 @@ mod tests {
         for n in 0..20_000 {
             let t = n as f64 * 0.005;
             let w = std::f64::consts::TAU * f * t;
-            h.push(t, Complex64::new(1.3 + 0.01 * (2.0 * w).cos(), 0.3 * w.sin() + 1e-9));
+            h.push(
+                t,
+                Complex64::new(1.3 + 0.01 * (2.0 * w).cos(), 0.3 * w.sin() + 1e-9),
+            );
         }
         let s = h.wake_statistics(20.0);
         assert!((s.strouhal - f).abs() < 1e-6, "{s:?}");

@@ -58,7 +58,10 @@ impl SectionMap {
     /// # Errors
     /// [`NsError::BadSection`] when an axis is not a positive number.
     pub fn ellipse(semi_x: f64, semi_y: f64, centre: (f64, f64)) -> Result<Self, NsError> {
-        for (what, value) in [("ellipse semi-axis x", semi_x), ("ellipse semi-axis y", semi_y)] {
+        for (what, value) in [
+            ("ellipse semi-axis x", semi_x),
+            ("ellipse semi-axis y", semi_y),
+        ] {
             if !(value.is_finite() && value > 0.0) {
                 return Err(NsError::BadSection { what, value });
             }

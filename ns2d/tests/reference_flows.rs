@@ -3,7 +3,7 @@
 //! (`data/`, each file names its source); the heavy cases run in
 //! `fwav validate` and are `#[ignore]`d here with their cost.
 
-use fwav_ns2d::cases::{CylinderWake, ImpulsiveCylinder, Resolution};
+use fwav_ns2d::cases::{CylinderWake, HoveringEllipse, ImpulsiveCylinder, Resolution};
 use fwav_ns2d::GridSpec;
 
 /// `(x, y)` rows of a reference file (`#` comments).
@@ -28,7 +28,11 @@ fn at(curve: &[(f64, f64)], x: f64) -> f64 {
 
 /// The largest relative error of `computed` against the reference points
 /// with `x` in `range`, and where.
-fn worst_relative(computed: &[(f64, f64)], reference: &[(f64, f64)], range: (f64, f64)) -> (f64, f64) {
+fn worst_relative(
+    computed: &[(f64, f64)],
+    reference: &[(f64, f64)],
+    range: (f64, f64),
+) -> (f64, f64) {
     reference
         .iter()
         .filter(|p| p.0 >= range.0 && p.0 <= range.1)
@@ -48,6 +52,119 @@ fn the_impulsively_started_cylinder_at_re_550_drags_as_koumoutsakos_and_leonard_
     }
     .run(ImpulsiveCylinder::validated())
     .unwrap();
-    let (error, x) = worst_relative(&drag, &reference("koumoutsakos_leonard_1995_re550.dat"), (0.5, 3.0));
-    assert!(error < 0.05, "CD off by {:.1}% at U t/R = {x:.2}", 100.0 * error);
+    let (error, x) = worst_relative(
+        &drag,
+        &reference("koumoutsakos_leonard_1995_re550.dat"),
+        (0.5, 3.0),
+    );
+    assert!(
+        error < 0.05,
+        "CD off by {:.1}% at U t/R = {x:.2}",
+        100.0 * error
+    );
+}
+
+/// The wake statistics against a band widened by `margin` (issue 23).
+fn assert_in_band(what: &str, value: f64, (low, high): (f64, f64), margin: f64) {
+    assert!(
+        value >= low * (1.0 - margin) && value <= high * (1.0 + margin),
+        "{what} = {value:.4}, band {low}..{high} +-{:.0}%",
+        100.0 * margin
+    );
+}
+
+/// Cylinder at Re 100 (Liu, Zheng & Sung 1998; Park, Kwon & Choi 1998):
+/// Strouhal 0.164–0.165, mean CD 1.33–1.35, CL amplitude 0.33–0.34, each
+/// within 3% of its band.
+#[test]
+#[ignore = "fails, and heavy (about 4 min): on 256 x 192, dt = 0.005, St = 0.1665 and CD = 1.333 \
+            pass but the CL amplitude is 0.389 (+0.407/-0.371), 14% above 0.34; it falls with the \
+            wall and round resolution (0.42 on 128 x 128) and barely with the outer radius \
+            (0.423/0.418/0.416 at 25/50/100 D): not yet resolved; `fwav validate --only ns2d/`"]
+fn the_cylinder_wake_at_re_100_sheds_as_published() {
+    let s = CylinderWake {
+        reynolds: 100.0,
+        duration: 150.0,
+        averaged: 0.4,
+    }
+    .run(CylinderWake::validated())
+    .unwrap();
+    assert_in_band("St", s.strouhal, (0.164, 0.165), 0.03);
+    assert_in_band("CD", s.drag, (1.33, 1.35), 0.03);
+    assert_in_band("CL amplitude", s.lift_amplitude, (0.33, 0.34), 0.03);
+}
+
+/// Cylinder at Re 200 (Braza, Chassaing & Ha Minh 1986): CD 1.40 +- 0.05,
+/// CL +-0.75, Strouhal 0.20, within 5%.
+#[test]
+#[ignore = "heavy (about 4 min); `fwav validate --only ns2d/cylinder-re200` runs it"]
+fn the_cylinder_wake_at_re_200_sheds_as_braza_found() {
+    let s = CylinderWake {
+        reynolds: 200.0,
+        duration: 150.0,
+        averaged: 0.4,
+    }
+    .run(CylinderWake::validated())
+    .unwrap();
+    assert_in_band("St", s.strouhal, (0.20, 0.20), 0.05);
+    assert_in_band("CD", s.drag, (1.35, 1.45), 0.05);
+    assert_in_band("CL amplitude", s.lift_amplitude, (0.75, 0.75), 0.05);
+}
+
+/// Koumoutsakos & Leonard (1995) at Re 3000: CD within 5% over U t/R in
+/// [0.5, 3].
+#[test]
+#[ignore = "fails, and heavy (about 2 min): 6.0% at U t/R = 2.95 on 512 x 320 (8.5% on \
+            384 x 256, 13% on 256 x 192: converging with the grid, within 2% up to U t/R = 2.4)"]
+fn the_impulsively_started_cylinder_at_re_3000_drags_as_koumoutsakos_and_leonard_found() {
+    let resolution = Resolution {
+        grid: GridSpec {
+            around: 512,
+            radial: 320,
+            outer_radius: 100.0,
+            first_cell: 0.0007,
+        },
+        dt: 0.0007,
+    };
+    let drag = ImpulsiveCylinder {
+        reynolds: 3000.0,
+        until: 3.05,
+    }
+    .run(resolution)
+    .unwrap();
+    let (error, x) = worst_relative(
+        &drag,
+        &reference("koumoutsakos_leonard_1995_re3000.dat"),
+        (0.5, 3.0),
+    );
+    assert!(
+        error < 0.05,
+        "CD off by {:.1}% at U t/R = {x:.2}",
+        100.0 * error
+    );
+}
+
+/// Wang, Birch & Dickinson (2004), the hovering ellipse at Re 75: CL over
+/// the fourth period within 10% of the reference's peak.
+#[test]
+#[ignore = "fails, and heavy (about 5 min): on 192 x 128, dt = 0.00025, the first half-stroke \
+            follows within 15% of the peak but the second's peak is 1.51 against 0.97 (worst 54% \
+            at t/T = 3.80): the two half-strokes, mirror images, come out unequal"]
+fn the_hovering_ellipse_lifts_as_wang_birch_and_dickinson_computed() {
+    let lift = HoveringEllipse {
+        reynolds: 75.0,
+        periods: 4.0,
+    }
+    .run(HoveringEllipse::validated())
+    .unwrap();
+    let reference = reference("wang_birch_dickinson_2004_lift_re75.dat");
+    let peak = reference.iter().map(|p| p.1.abs()).fold(0.0, f64::max);
+    for (t, cl) in reference.iter().filter(|p| p.0 >= 3.0 && p.0 <= 4.0) {
+        let error = (at(&lift, *t) - cl).abs() / peak;
+        assert!(
+            error < 0.10,
+            "t/T = {t:.3}: CL {:.3} against {cl:.3}",
+            at(&lift, *t)
+        );
+    }
 }

@@ -34,6 +34,7 @@ use serde::Serialize;
 
 pub mod aero2d;
 pub mod karman_trefftz;
+pub mod ns2d;
 pub mod optimizers;
 pub mod shell;
 pub mod uvlm;
@@ -52,6 +53,8 @@ pub enum Solver {
     /// Design of experiments, response surfaces and NSGA-II
     /// ([`crate::optimize`]).
     Optimizers,
+    /// The laminar Navier–Stokes section solver (`fwav-ns2d`).
+    Ns2d,
 }
 
 impl Solver {
@@ -63,6 +66,7 @@ impl Solver {
             Solver::Shell => "shell",
             Solver::Uvlm => "uvlm",
             Solver::Optimizers => "optimizers",
+            Solver::Ns2d => "ns2d",
         }
     }
 }
@@ -269,12 +273,13 @@ impl Validation {
 }
 
 /// Every validation case, family by family (aero2d, shell, uvlm,
-/// optimizers).
+/// optimizers, ns2d).
 pub fn all() -> Vec<Validation> {
     let mut cases = aero2d::cases();
     cases.extend(shell::cases());
     cases.extend(uvlm::cases());
     cases.extend(optimizers::cases());
+    cases.extend(ns2d::cases());
     cases
 }
 
