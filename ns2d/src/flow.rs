@@ -11,8 +11,8 @@
 //! `ψr = ψ - ψ_frame` that of the velocity relative to the moving grid
 //! (the rigid motion has a streamfunction, [`crate::FrameState`]). The
 //! wall condition is no-slip: `ψ` equals the wall's streamfunction, and
-//! the wall vorticity is Thom's, `ω_0 = -(2(ψ_1 - ψ_0 - ξ_1 ψ_ξ,wall)/ξ_1²
-//! + ψ_θθ)/J` (Roache, *Fundamentals of Computational Fluid Dynamics*,
+//! the wall vorticity is Thom's,
+//! `ω_0 = -(2(ψ_1 - ψ_0 - ξ_1 ψ_ξ,wall)/ξ_1² + ψ_θθ)/J` (Roache, *Fundamentals of Computational Fluid Dynamics*,
 //! 1998, §3.3; second-order accurate in the flow, Huang & Wetton 1996),
 //! satisfied implicitly at the end of each step: the step is linear in
 //! the wall vorticity, so the wall's influence matrix (one column per wall

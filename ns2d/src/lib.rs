@@ -57,6 +57,6 @@ pub use error::NsError;
 pub use flow::{Flow, WallLoads};
 pub use grid::{GridSpec, OGrid, RadialStretch};
 pub use history::{ForceHistory, WakeStatistics};
-pub use motion::{FrameState, Motion, RigidField, SteadyStream};
+pub use motion::{FrameState, Motion, PlungePitch, RigidField, SteadyStream};
 pub use section_map::SectionMap;
 pub use stream::StreamSolver;

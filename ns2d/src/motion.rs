@@ -131,3 +131,39 @@ impl Motion for SteadyStream {
         state
     }
 }
+
+/// A section in a stream of speed `speed` along +x that plunges
+/// `h = h0 sin(ωt)` across it and pitches nose-up `α = α0 + α1 sin(ωt + φ)`
+/// about its origin (the pivot; place the section relative to it with
+/// the map's centre). The chord lies along body +x, leading edge
+/// upstream, so a nose-up pitch is a clockwise rotation of the frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PlungePitch {
+    /// Free-stream speed.
+    pub speed: f64,
+    /// Angular frequency `ω`.
+    pub omega: f64,
+    /// Plunge amplitude `h0`.
+    pub plunge: f64,
+    /// Mean pitch `α0`, radians.
+    pub mean_pitch: f64,
+    /// Pitch amplitude `α1`, radians.
+    pub pitch: f64,
+    /// Pitch lead over the plunge `φ`, radians.
+    pub phase: f64,
+}
+
+impl Motion for PlungePitch {
+    fn state(&self, t: f64) -> FrameState {
+        let w = self.omega;
+        let (s, c) = (w * t).sin_cos();
+        let (sp, cp) = (w * t + self.phase).sin_cos();
+        FrameState {
+            velocity: Complex64::new(-self.speed, self.plunge * w * c),
+            acceleration: Complex64::new(0.0, -self.plunge * w * w * s),
+            angle: -(self.mean_pitch + self.pitch * sp),
+            rate: -self.pitch * w * cp,
+            angular_acceleration: self.pitch * w * w * sp,
+        }
+    }
+}
