@@ -19,10 +19,12 @@
 //! node, LU once per time step) gives the wall vorticity that Thom's
 //! formula returns of itself. Lagged by a step instead, the wall condition
 //! limited the wall cell's diffusion number to about 0.5 (7e-6 c/U at the
-//! tips of Wang's 12% ellipse). Far away `ψ = 0` for every Fourier mode
-//! but the mean, whose condition is Kelvin's (no circulation round the far
-//! boundary), and the vorticity is zero where the flow enters and
-//! extrapolated where it leaves.
+//! tips of Wang's 12% ellipse). The mean of the wall vorticity is not
+//! Thom's (the streamfunction's mean no-slip row already holds the
+//! section's circulation) but Kelvin's theorem: the fluid's circulation
+//! is minus the section's own (`2ΩA`) and minus what the flow has carried
+//! out through the far boundary. Far away `ψ = 0`, and the vorticity is
+//! zero where the flow enters and extrapolated where it leaves.
 //!
 //! Space: third-order upwind differences for the advection (the
 //! fourth-order central difference with a fourth-difference dissipation of
@@ -97,6 +99,10 @@ pub struct Flow<M: Motion> {
     start: Vec<f64>,
     wall_scratch: Vec<f64>,
     influence: Option<WallInfluence>,
+    /// The section's area (for its own circulation `2ΩA`) and the
+    /// circulation carried out through the far boundary so far.
+    area: f64,
+    exited: f64,
     frame: FrameState,
     /// The explicit rate of the previous step (Adams–Bashforth) and its
     /// time step.
@@ -156,6 +162,8 @@ impl<M: Motion> Flow<M> {
             start: vec![0.0; n],
             wall_scratch: vec![0.0; nt],
             influence: None,
+            area: map.area(),
+            exited: 0.0,
             previous_rate: vec![0.0; n],
             last_dt: 0.0,
             sweep_upper: vec![0.0; n],
@@ -234,8 +242,14 @@ impl<M: Motion> Flow<M> {
         }
         // Far away the fluid is at rest: ψ = 0.
         self.outer.fill(0.0);
-        self.stream
-            .solve(&self.source, &self.wall_shape, &self.outer, &mut self.psi);
+        let slope_mean = self.wall_slope.iter().sum::<f64>() / nt as f64;
+        self.stream.solve(
+            &self.source,
+            &self.wall_shape,
+            slope_mean,
+            &self.outer,
+            &mut self.psi,
+        );
     }
 
     /// Thom's wall vorticity (module docs) of the current streamfunction
@@ -385,8 +399,17 @@ impl<M: Motion> Flow<M> {
         self.solve_stream(t, false);
         let mut wall = std::mem::take(&mut self.wall_scratch);
         self.thom(false, &mut wall);
-        // The wall vorticity that Thom's formula gives back of itself:
-        // (I - M) ω0 = Thom(zero wall).
+        // The wall vorticity that Thom's formula gives back of itself,
+        // (I - M) ω0 = Thom(zero wall), in all but the mean; the mean
+        // keeps the fluid's circulation what Kelvin's theorem says:
+        // minus the section's own (2ΩA of its rotation) and minus what
+        // has left through the far boundary.
+        let target = -2.0 * self.frame.rate * self.area - self.exited;
+        let free = self.circulation();
+        let mean = wall.iter().sum::<f64>() / nt as f64;
+        for w in wall.iter_mut() {
+            *w += (target - free) / nt as f64 - mean;
+        }
         if let Some(influence) = &self.influence {
             influence.solve(&mut wall);
         }
@@ -398,6 +421,7 @@ impl<M: Motion> Flow<M> {
         let outer_start = (self.grid.nr - 1) * nt;
         self.omega[outer_start..].copy_from_slice(&outer_ring);
         self.wall_scratch = wall;
+        self.exited += dt * self.outflow();
         self.time = t;
         self.steps += 1;
         self.last_dt = dt;
@@ -416,6 +440,46 @@ impl<M: Motion> Flow<M> {
         Ok(())
     }
 
+    /// The fluid's circulation, `∫ ω dA` over the grid (trapezoidal in
+    /// `ξ`, the wall ring included).
+    #[must_use]
+    pub fn circulation(&self) -> f64 {
+        let g = &self.grid;
+        let (nt, nr) = (g.nt, g.nr);
+        let mut total = 0.0;
+        for j in 0..nr {
+            let below = if j == 0 { g.xi[0] } else { g.xi[j - 1] };
+            let above = if j + 1 == nr { g.xi[j] } else { g.xi[j + 1] };
+            let weight = 0.5 * (above - below) * g.d_theta;
+            let ring: f64 = (0..nt)
+                .map(|k| g.jac[j * nt + k] * self.omega[j * nt + k])
+                .sum();
+            total += weight * ring;
+        }
+        total
+    }
+
+    /// The circulation carried out through the far boundary so far.
+    #[must_use]
+    pub fn exited_circulation(&self) -> f64 {
+        self.exited
+    }
+
+    /// The circulation the flow carries out through the far boundary per
+    /// unit time, `∮ ω u·n ds = Σ ω ∂ψr/∂θ Δθ` on the outer ring.
+    fn outflow(&self) -> f64 {
+        let g = &self.grid;
+        let (nt, nr) = (g.nt, g.nr);
+        let j = nr - 1;
+        let rel = |k: usize| self.psi[j * nt + k] - self.frame_psi[j * nt + k];
+        (0..nt)
+            .map(|k| {
+                let (kp, km) = ((k + 1) % nt, (k + nt - 1) % nt);
+                self.omega[j * nt + k] * 0.5 * (rel(kp) - rel(km))
+            })
+            .sum()
+    }
+
     /// The wall's influence matrix for steps of `dt`: column `k` is Thom's
     /// wall vorticity of the step's response to a unit wall vorticity at
     /// node `k` (homogeneous conditions, no explicit rate); factored as
@@ -428,6 +492,7 @@ impl<M: Motion> Flow<M> {
         let mut matrix = nalgebra::DMatrix::<f64>::identity(nt, nt);
         let mut unit = vec![0.0; nt];
         let mut column = vec![0.0; nt];
+        let inv_n = 1.0 / nt as f64;
         for k in 0..nt {
             unit.fill(0.0);
             unit[k] = 1.0;
@@ -435,10 +500,18 @@ impl<M: Motion> Flow<M> {
             self.radial_crank_nicolson(dt, &unit);
             self.ring_implicit(dt);
             self.omega[..nt].copy_from_slice(&unit);
+            let circulation = self.circulation();
             self.solve_stream(0.0, true);
             self.thom(true, &mut column);
             for (i, c) in column.iter().enumerate() {
                 matrix[(i, k)] -= c;
+            }
+            // Thom's equations less their mean (the streamfunction's mean
+            // no-slip row already holds it), plus Kelvin's: the step's
+            // circulation (see `step`).
+            let mean = (0..nt).map(|i| matrix[(i, k)]).sum::<f64>() * inv_n;
+            for i in 0..nt {
+                matrix[(i, k)] += circulation * inv_n - mean;
             }
         }
         let (omega, psi, rate) = saved;

@@ -8,13 +8,13 @@
 //! (second-order differences in the stretched `η`), factored once when the
 //! solver is built. A solve costs `O(N_θ N_r log N_θ)`.
 //!
-//! Boundary conditions: Dirichlet at the wall (the wall's motion; its
-//! constant is a gauge, zero) and at the outer ring for every mode but
-//! the mean, whose outer condition is Kelvin's: no circulation round the
-//! far boundary (`ψ_ξ = 0` there, second-order one-sided). The circulation
-//! round the section then follows from the vorticity, and the no-slip
-//! condition (which sets the section's circulation) is the wall
-//! vorticity's job ([`crate::Flow`]).
+//! Boundary conditions: Dirichlet at the outer ring; at the wall,
+//! Dirichlet on the wall's motion for every Fourier mode but the mean,
+//! whose condition is the mean no-slip one: the wall's mean `ψ_ξ` (the
+//! circulation round the section, `2ΩA` for a rigid one) with the wall's
+//! free constant as the unknown (second-order one-sided `ψ_ξ`). The
+//! fluid's total circulation is then the wall vorticity's business
+//! (Kelvin's theorem, [`crate::Flow`]).
 
 use std::sync::Arc;
 
@@ -67,6 +67,16 @@ impl ModeFactors {
     }
 }
 
+/// Weights of `ψ(0), ψ(ξ1), ψ(ξ2)` in the second-order one-sided `ψ_ξ(0)`
+/// (the derivative of the quadratic through the three).
+fn wall_slope_weights(xi1: f64, xi2: f64) -> [f64; 3] {
+    [
+        -(xi1 + xi2) / (xi1 * xi2),
+        xi2 / (xi1 * (xi2 - xi1)),
+        -xi1 / (xi2 * (xi2 - xi1)),
+    ]
+}
+
 /// The factored Poisson solver of one grid (module docs).
 pub struct StreamSolver {
     nt: usize,
@@ -78,6 +88,8 @@ pub struct StreamSolver {
     /// The radial coefficients of `ψ_{j-1}` and `ψ_{j+1}` in every row
     /// (the same in all rows: the stretching is exponential).
     lower_coefficient: f64,
+    /// The wall-slope weights of `ψ0, ψ1, ψ2` (mode 0's wall row).
+    wall_weights: [f64; 3],
     upper_coefficient: f64,
     /// `g'²` per radial node.
     slope2: Vec<f64>,
@@ -115,17 +127,18 @@ impl StreamSolver {
         for m in 0..modes {
             let k2 = (m * m) as f64;
             if m == 0 {
-                // Unknowns j = 1..nr-1: the outer row is Kelvin's
-                // condition, no circulation round the far boundary
-                // (3ψ_N - 4ψ_{N-1} + ψ_{N-2} = 0), with ψ_{N-2} eliminated
-                // by row N-1 to stay tridiagonal.
+                // Unknowns j = 0..nr-2: the wall row is the mean no-slip
+                // condition, the second-order one-sided ψ_ξ at the wall
+                // (a quadratic through ψ0, ψ1, ψ2) equal to the wall's,
+                // with ψ2 eliminated by row 1 to stay tridiagonal.
                 let n = nr - 1;
                 let mut lower = vec![a; n];
                 let mut diag = vec![-2.0 * h2; n];
                 let mut upper = vec![c; n];
+                let w = wall_slope_weights(grid.xi[1], grid.xi[2]);
                 lower[0] = 0.0;
-                lower[n - 1] = -4.0 - diag[n - 2] / a;
-                diag[n - 1] = 3.0 - c / a;
+                diag[0] = w[0] - w[2] * a / c;
+                upper[0] = w[1] - w[2] * diag[1] / c;
                 upper[n - 1] = 0.0;
                 factors.push(ModeFactors::new(lower, &diag, &upper));
             } else {
@@ -153,6 +166,7 @@ impl StreamSolver {
             inverse,
             factors,
             lower_coefficient: a,
+            wall_weights: wall_slope_weights(grid.xi[1], grid.xi[2]),
             upper_coefficient: c,
             slope2,
             spectrum: vec![Complex64::new(0.0, 0.0); modes * nr],
@@ -174,9 +188,16 @@ impl StreamSolver {
     }
 
     /// Solve for `psi` (all nodes) given the source `s = J ω` at all
-    /// nodes, the wall's streamfunction and the outer ring's (its mean
-    /// replaced by Kelvin's condition, module docs).
-    pub fn solve(&mut self, source: &[f64], wall_shape: &[f64], outer: &[f64], psi: &mut [f64]) {
+    /// nodes, the wall's streamfunction up to a constant, the wall's mean
+    /// `ψ_ξ` and the outer ring's streamfunction (module docs).
+    pub fn solve(
+        &mut self,
+        source: &[f64],
+        wall_shape: &[f64],
+        wall_slope_mean: f64,
+        outer: &[f64],
+        psi: &mut [f64],
+    ) {
         let (nt, nr, modes) = (self.nt, self.nr, self.modes);
         for j in 0..nr {
             self.ring_modes(&source[j * nt..(j + 1) * nt], j);
@@ -192,19 +213,21 @@ impl StreamSolver {
         let outer_modes = self.modes_of(outer);
         for m in 0..modes {
             if m == 0 {
-                // Rows j = 1..nr-2, then Kelvin's row (see `new`) less row
-                // N-1's right-hand side over its eliminated coefficient.
+                // The wall row (see `new`) less row 1's right-hand side
+                // times the eliminated weight; rows 1..nr-2; the outer
+                // value given.
                 let n = nr - 1;
-                for i in 0..n - 1 {
-                    self.column[i] = self.spectrum[(i + 1) * modes];
+                for j in 0..n {
+                    self.column[j] = self.spectrum[j * modes];
                 }
-                self.column[0] -= wall[0] * self.lower_coefficient;
-                self.column[n - 1] = -self.column[n - 2] / self.lower_coefficient;
+                self.column[0] = wall_slope_mean * nt as f64
+                    - self.column[1] * (self.wall_weights[2] / self.upper_coefficient);
+                self.column[n - 1] -= outer_modes[0] * self.upper_coefficient;
                 self.factors[0].solve(&mut self.column[..n]);
-                for i in 0..n {
-                    self.spectrum[(i + 1) * modes] = self.column[i];
+                for j in 0..n {
+                    self.spectrum[j * modes] = self.column[j];
                 }
-                self.spectrum[0] = wall[0];
+                self.spectrum[(nr - 1) * modes] = outer_modes[0];
             } else {
                 let n = nr - 2;
                 for j in 0..n {
@@ -291,7 +314,7 @@ mod tests {
                 let mut solver = StreamSolver::new(&grid);
                 let wall: Vec<f64> = grid.z[..32].iter().map(|z| v * z.im).collect();
                 let mut psi = vec![0.0; grid.len()];
-                solver.solve(&vec![0.0; grid.len()], &wall, &[0.0; 32], &mut psi);
+                solver.solve(&vec![0.0; grid.len()], &wall, 0.0, &[0.0; 32], &mut psi);
                 let c2 = v * a * a / (1.0 - a * a / (r_out * r_out));
                 let c1 = -c2 / (r_out * r_out);
                 grid.z
@@ -308,11 +331,11 @@ mod tests {
         assert!(errors[0] / errors[1] > 3.0, "not second order: {errors:?}");
     }
 
-    /// Kelvin's condition: a vortex patch's streamfunction has no
-    /// circulation round the outer ring (its outer slope is zero) while the
-    /// wall keeps its value.
+    /// The mean no-slip row: with a vortex patch in the flow, the mean
+    /// of `ψ_ξ` at the wall (second-order one-sided) is the one asked for,
+    /// and the outer ring keeps its value.
     #[test]
-    fn a_vortex_patch_leaves_no_circulation_round_the_far_boundary() {
+    fn the_mean_wall_slope_is_the_one_asked_for() {
         let map = SectionMap::circle(0.5).unwrap();
         let spec = GridSpec {
             around: 32,
@@ -329,15 +352,12 @@ mod tests {
             .map(|(z, j)| j * (-((z - Complex64::new(2.0, 0.5)).norm_sqr()) / 0.1).exp())
             .collect();
         let mut psi = vec![0.0; grid.len()];
-        solver.solve(&source, &[0.0; 32], &[0.0; 32], &mut psi);
+        let slope = 0.37;
+        solver.solve(&source, &[0.0; 32], slope, &[0.0; 32], &mut psi);
         let ring = |j: usize| psi[j * 32..(j + 1) * 32].iter().sum::<f64>() / 32.0;
-        let n = grid.nr - 1;
-        let outer_slope = (3.0 * ring(n) - 4.0 * ring(n - 1) + ring(n - 2)) / (2.0 * grid.d_eta);
-        let inner_slope = (ring(2) - ring(0)) / (2.0 * grid.d_eta);
-        assert!(ring(0).abs() < 1e-14, "wall value {}", ring(0));
-        assert!(
-            outer_slope.abs() < 1e-9 * inner_slope.abs(),
-            "{outer_slope} vs {inner_slope}"
-        );
+        let w = wall_slope_weights(grid.xi[1], grid.xi[2]);
+        let wall_slope = w[0] * ring(0) + w[1] * ring(1) + w[2] * ring(2);
+        assert!((wall_slope - slope).abs() < 1e-10, "{wall_slope}");
+        assert!(ring(grid.nr - 1).abs() < 1e-14);
     }
 }
