@@ -34,6 +34,7 @@ pub mod output;
 pub mod port;
 pub mod profile_file;
 pub mod shell;
+pub mod study;
 pub mod topology;
 pub mod uvlm;
 pub mod validation;
