@@ -245,7 +245,10 @@ fn local_study(dir: &Path) -> PathBuf {
 /// (`scancel`) once its run has finished its first stage; the follower
 /// ends with that case failed, `fwav study resume` submits it alone, and
 /// the case goes on from its own `state.json` (its first stage is not
-/// redone). Returns the study's directory.
+/// redone). The resume's follower is killed after submitting: a resume
+/// meanwhile is refused naming the job, and one after the job has ended
+/// settles the study from the case's files. Returns the study's
+/// directory.
 fn slurm_study(dir: &Path, cluster: &Cluster) -> PathBuf {
     let out = dir.join("slurm");
     let conf = cluster.conf();
@@ -277,6 +280,17 @@ fn slurm_study(dir: &Path, cluster: &Cluster) -> PathBuf {
         .status()
         .unwrap();
     assert!(cancelled.success());
+    // While the follower runs, the study is its own: a resume is refused
+    // (its lock), the status is read.
+    let busy = fwav(&["study", "resume", out.to_str().unwrap()], Some(conf));
+    assert_eq!(busy.status.code(), Some(1), "{}", text(&busy));
+    assert!(
+        String::from_utf8_lossy(&busy.stderr).contains("is in use"),
+        "{}",
+        text(&busy)
+    );
+    let running = fwav(&["study", "status", out.to_str().unwrap()], Some(conf));
+    assert!(running.status.success(), "{}", text(&running));
     let ended = follower.wait_with_output().unwrap();
     println!(
         "slurm study until the cancelled case: {:.1} s",
@@ -331,20 +345,70 @@ fn slurm_study(dir: &Path, cluster: &Cluster) -> PathBuf {
         "{listing}"
     );
 
-    let resumed = fwav(
-        &["study", "resume", out.to_str().unwrap(), "--poll", "1"],
-        Some(conf),
+    // The resume's follower is killed once it has submitted: its job
+    // runs on, a second resume is refused while the job holds the case,
+    // and once the job has ended a resume settles the study from the
+    // case's files alone.
+    let mut follower = Command::new(env!("CARGO_BIN_EXE_fwav"))
+        .args(["study", "resume"])
+        .arg(&out)
+        .args(["--poll", "1"])
+        .env("SLURM_CONF", conf)
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    wait_until("the resume's submission", Duration::from_secs(60), || {
+        std::fs::read_to_string(out.join("study.json"))
+            .ok()
+            .and_then(|t| serde_json::from_str::<serde_json::Value>(&t).ok())
+            .is_some_and(|s| s["submissions"][1]["job_id"].is_string())
+    });
+    follower.kill().unwrap();
+    follower.wait().unwrap();
+    let state = json(&out.join("study.json"));
+    let second = &state["submissions"][1];
+    assert_eq!(second["executor"], "slurm");
+    assert_eq!(second["cases"], serde_json::json!([2]));
+    let job2 = second["job_id"].as_str().unwrap().to_string();
+    assert_ne!(job2, job);
+    let refused = fwav(&["study", "resume", out.to_str().unwrap()], Some(conf));
+    assert_eq!(refused.status.code(), Some(1), "{}", text(&refused));
+    let refusal = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        refusal.contains(&format!(
+            "Slurm job {job2} still holds case(s) 2 (pending or running)"
+        )),
+        "{refusal}"
     );
-    assert!(resumed.status.success(), "{}", text(&resumed));
+    wait_until("the resumed case's task", Duration::from_secs(180), || {
+        let active = cluster
+            .command("squeue")
+            .args([
+                "--noheader",
+                "--jobs",
+                &job2,
+                "--states=PENDING,RUNNING,COMPLETING",
+            ])
+            .output()
+            .unwrap();
+        active.status.success() && active.stdout.is_empty()
+    });
+    let settled = fwav(&["study", "resume", out.to_str().unwrap()], Some(conf));
+    assert!(settled.status.success(), "{}", text(&settled));
+    assert!(
+        String::from_utf8_lossy(&settled.stderr).contains("nothing to run"),
+        "{}",
+        text(&settled)
+    );
     println!(
         "slurm study with its resume: {:.1} s",
         clock.elapsed().as_secs_f64()
     );
     let state = json(&out.join("study.json"));
-    let second = &state["submissions"][1];
-    assert_eq!(second["executor"], "slurm");
-    assert_eq!(second["cases"], serde_json::json!([2]));
-    assert_ne!(second["job_id"], state["submissions"][0]["job_id"]);
+    assert_eq!(state["submissions"].as_array().unwrap().len(), 2);
+    assert_eq!(state["cases"][1]["status"], "finished");
     // The resumed case kept the stage it had finished before the cancel.
     assert_eq!(run_of(&case2, 1, Stage::System), Some(1));
     assert_eq!(run_of(&case2, 2, Stage::System), Some(2));

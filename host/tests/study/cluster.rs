@@ -1,6 +1,7 @@
 //! A real single-node Slurm cluster on this machine, for the tests of
 //! `fwav study --executor slurm`: Debian's `slurm-wlm` and `munge`
-//! (installed with apt-get when missing, which needs root), a `munged`
+//! (installed with apt-get when missing, without the recommended plugin
+//! packages; that needs root), a `munged`
 //! with its own key and socket, and `slurmctld` and `slurmd` with a
 //! generated `slurm.conf` for this host's CPUs and memory (as `slurmd -C`
 //! reports them), on free ports, every state, spool, log and pid file in
@@ -76,7 +77,14 @@ fn install() -> Result<(), String> {
             .output()
     };
     eprintln!("installing slurm-wlm and munge (apt-get) for the Slurm test");
-    let packages = ["install", "-y", "-q", "slurm-wlm", "munge"];
+    let packages = [
+        "install",
+        "-y",
+        "-q",
+        "--no-install-recommends",
+        "slurm-wlm",
+        "munge",
+    ];
     let first = apt_get(&packages).map_err(|e| format!("apt-get: {e}"))?;
     if !first.status.success() {
         // A fresh machine's package lists may be missing or stale.
