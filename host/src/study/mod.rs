@@ -3,7 +3,7 @@
 //! cases — run on a local pool or as one Slurm job array, followed,
 //! resumed, and reported as `results.csv`, plots and `report.md`.
 //!
-//! - [`file`]: the study file (TOML) and its checks.
+//! - [`file`](mod@file): the study file (TOML) and its checks.
 //! - [`cases`]: the cases it makes, each configuration checked whole
 //!   before anything is written or submitted.
 //! - [`directory`]: the study's directory (`study.json`, `cases/NNN/`,
