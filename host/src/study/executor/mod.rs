@@ -46,11 +46,43 @@ impl Launch {
 /// display).
 pub type Observer<'a> = &'a dyn Fn(&StudyState);
 
-/// The error a design run printed last (`error: ...`) in its log.
+/// The error a design run printed last (`error: ...`) in its log,
+/// without the `design run in DIR: ` it starts with (the case is known;
+/// its directory's path depends on how the study was started).
 pub fn error_in_log(log: &Path) -> Option<String> {
     let text = std::fs::read_to_string(log).ok()?;
-    text.lines()
-        .rev()
-        .find_map(|l| l.strip_prefix("error: "))
-        .map(|e| e.trim().to_string())
+    let error = text.lines().rev().find_map(|l| l.strip_prefix("error: "))?;
+    let error = error
+        .strip_prefix("design run in ")
+        .and_then(|rest| rest.split_once(": ").map(|(_, e)| e))
+        .unwrap_or(error);
+    Some(error.trim().to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The last error line, without the run directory's context.
+    #[test]
+    fn the_last_error_is_read_from_a_log() {
+        let dir = std::env::temp_dir().join(format!("fwav-study-log-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let log = dir.join("001.log");
+        std::fs::write(
+            &log,
+            "warning: x\nerror: design run in /s/cases/001: the initial design cannot be \
+             flown\n",
+        )
+        .unwrap();
+        assert_eq!(
+            error_in_log(&log).as_deref(),
+            Some("the initial design cannot be flown")
+        );
+        std::fs::write(&log, "error: cannot read x\n").unwrap();
+        assert_eq!(error_in_log(&log).as_deref(), Some("cannot read x"));
+        std::fs::write(&log, "all well\n").unwrap();
+        assert_eq!(error_in_log(&log), None);
+        std::fs::remove_dir_all(&dir).ok();
+    }
 }

@@ -22,7 +22,7 @@ fn numeric(value: &toml::Value) -> Option<f64> {
         .or_else(|| value.as_integer().map(|n| n as f64))
 }
 
-/// A padded range over the values (a unit range around a single one).
+/// A padded range over the values (`0..1` without any).
 fn span(values: impl IntoIterator<Item = f64>) -> Range<f64> {
     let (lo, hi) = values
         .into_iter()
@@ -33,7 +33,12 @@ fn span(values: impl IntoIterator<Item = f64>) -> Range<f64> {
     if !(lo.is_finite() && hi.is_finite()) {
         return 0.0..1.0;
     }
-    let pad = 0.08 * (hi - lo).max(1e-3 * hi.abs().max(1e-9));
+    // A constant is shown in a band of 5% of its size either side.
+    let pad = if hi - lo > 1e-9 * hi.abs().max(1e-12) {
+        0.08 * (hi - lo)
+    } else {
+        0.05 * hi.abs().max(1e-9)
+    };
     (lo - pad)..(hi + pad)
 }
 
