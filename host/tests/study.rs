@@ -106,7 +106,9 @@ fn results(dir: &Path) -> Vec<Vec<String>> {
 }
 
 /// A study whose cases have a bad key or value fails before anything is
-/// written (no directory is made), naming the case and the key.
+/// written (no directory is made), naming the case and the key; so does
+/// one with a case far beyond the built-in design's cost, without
+/// `--yes`.
 #[test]
 fn bad_keys_are_refused_before_anything_is_written() {
     let dir = study_files(
@@ -122,6 +124,11 @@ fn bad_keys_are_refused_before_anything_is_written() {
                 "[[case]]\nwing.semi_span_m = 0.14\n[[case]]\nflight.speed = 3.0\n",
             ),
             ("cross.toml", "[[case]]\ntopology.sample_every = 400\n"),
+            (
+                "costly.toml",
+                "[[case]]\nwing.semi_span_m = 0.15\n[[case]]\nwing.span_elements = 400\n\
+                 wing.chord_elements = 100\n",
+            ),
         ],
     );
     let out_dir = dir.join("out");
@@ -158,6 +165,16 @@ fn bad_keys_are_refused_before_anything_is_written() {
     let e = run("cross.toml");
     assert!(
         e.contains("case 001 (topology.sample_every = 400): topology.sample_every = 400 is more than analysis.steps_per_cycle"),
+        "{e}"
+    );
+    // A case far beyond the built-in design's cost needs --yes, as `fwav
+    // design` does.
+    let e = run("costly.toml");
+    assert!(
+        e.contains(
+            "1 case(s) far beyond the built-in design's cost, case 002 the largest: it needs about"
+        ) && e.contains("40000 shell elements")
+            && e.contains("Pass --yes"),
         "{e}"
     );
     std::fs::remove_dir_all(&dir).ok();

@@ -33,12 +33,10 @@ fn span(values: impl IntoIterator<Item = f64>) -> Range<f64> {
     if !(lo.is_finite() && hi.is_finite()) {
         return 0.0..1.0;
     }
-    // A constant is shown in a band of 5% of its size either side.
-    let pad = if hi - lo > 1e-9 * hi.abs().max(1e-12) {
-        0.08 * (hi - lo)
-    } else {
-        0.05 * hi.abs().max(1e-9)
-    };
+    // At least 0.5% of the values' size either side: differences in the
+    // optimizer's last digits (10 Hz and 10.0000015 Hz) draw flat.
+    let size = hi.abs().max(lo.abs()).max(1e-12);
+    let pad = (0.08 * (hi - lo)).max(0.005 * size);
     (lo - pad)..(hi + pad)
 }
 
