@@ -1,7 +1,8 @@
 //! `report.md`: the study for a person — how many cases finished, failed
 //! or wait, a table of every case (varied keys, status, the final
 //! design's 3D CT, CP, efficiency, wing mass, kinematics, convergence,
-//! time), the best finished case for each plotted output, the pictures,
+//! time), the finished case with the highest value of each plotted
+//! output, the pictures,
 //! and each failed case's error and log.
 
 use std::fmt::Write as _;
@@ -150,7 +151,7 @@ fn best(s: &mut String, state: &StudyState, results: &[CaseResult]) {
                 .map(|(k, v)| format!("{k} = {}", cell(v)))
                 .collect();
             lines.push(format!(
-                "- highest {}: {v:.4}, case {} ({})",
+                "- {}: {v:.4}, case {} ({})",
                 o.name(),
                 r.name,
                 values.join(", ")
@@ -158,6 +159,10 @@ fn best(s: &mut String, state: &StudyState, results: &[CaseResult]) {
         }
     }
     if !lines.is_empty() {
-        let _ = writeln!(s, "## Best finished cases\n\n{}\n", lines.join("\n"));
+        let _ = writeln!(
+            s,
+            "## Highest value of each plotted output\n\n{}\n",
+            lines.join("\n")
+        );
     }
 }
