@@ -8,8 +8,10 @@
 //! [`config`]; the pictures and ParaView files of the results in
 //! [`output`], which no solver imports; the designed wing on the design's
 //! actuator, as the plant the feasibility check judges and hil-sim flies,
-//! in [`vehicle`]) and the link side: the kinematics profile file that `fwav
-//! design` writes and `fwav upload` sends ([`profile_file`]), serial ports
+//! in [`vehicle`]; many design runs of one base configuration, on a local
+//! pool or a Slurm job array, in [`study`]) and the link side: the
+//! kinematics profile file that `fwav design` writes and `fwav upload`
+//! sends ([`profile_file`]), serial ports
 //! ([`port`]), the framed request/response client with retries ([`link`])
 //! and the operations on a connected flight controller ([`device`]).
 //!
@@ -34,6 +36,7 @@ pub mod output;
 pub mod port;
 pub mod profile_file;
 pub mod shell;
+pub mod study;
 pub mod topology;
 pub mod uvlm;
 pub mod validation;

@@ -16,6 +16,7 @@ mod cli {
     pub mod design;
     pub mod fly;
     pub mod kinematics;
+    pub mod study;
     pub mod system;
     pub mod topology;
     pub mod validate;
@@ -44,6 +45,11 @@ enum Command {
     /// Write the built-in FWAV's configuration as a commented TOML file to
     /// start from.
     Init(cli::design::InitArgs),
+    /// Design studies: many design runs of one base configuration with
+    /// keys varied (grid, Latin hypercube, list), on a local pool or a
+    /// Slurm job array; results.csv, plots and report.md.
+    #[command(subcommand)]
+    Study(cli::study::StudyCommand),
     /// Kinematics profiles: the file `fwav design` writes and the flight
     /// controller flies.
     #[command(subcommand)]
@@ -170,6 +176,7 @@ fn main() -> ExitCode {
         }
         Command::Design(args) => cli::design::run_command(&args),
         Command::Init(args) => cli::design::init(&args),
+        Command::Study(command) => cli::study::run_command(&command),
         Command::Aero2d(args) => cli::aero::run(&args),
         Command::SystemAnalysis(args) => cli::system::run_command(&args),
         Command::Kinematics(args) => cli::kinematics::run_command(&args),

@@ -28,10 +28,13 @@
 //! - [`template`]: the commented file (`fwav init`, a run's
 //!   `config.toml`).
 //! - [`cost`]: a design run's memory and time, estimated before it starts.
+//! - [`keys`]: every declared key by its qualified name (`wing.semi_span_m`),
+//!   for files that name design keys from outside (a study's variations).
 //!
 //! This room sits above the solvers: it may import [`crate::aeroelastic`],
 //! [`crate::shell`], [`crate::discipline`], [`crate::topology`] and
-//! [`crate::vehicle`] (their settings types), and only [`crate::mdois`] and the program import it;
+//! [`crate::vehicle`] (their settings types), and only [`crate::mdois`],
+//! [`crate::study`] and the program import it;
 //! no solver module imports from here.
 
 pub mod actuator;
@@ -39,6 +42,7 @@ pub mod analysis;
 pub mod cost;
 pub mod design;
 pub mod flight;
+pub mod keys;
 pub mod kinematics;
 pub mod mdois;
 pub mod template;

@@ -6,8 +6,11 @@
 //! `--out`, or `--force` to delete its contents and start over (a run of
 //! the same configuration too). `--force` never deletes an input of the
 //! run (the configuration file read) or the directory the program runs
-//! in. Every check of the configuration
-//! runs before the directory is made, and the directory is locked
+//! in. A directory holding only `config.toml`, the very file the run
+//! reads as its configuration (`--config DIR/config.toml --out DIR`, as
+//! `fwav study` prepares each case), counts as empty: the run writes its
+//! resolved configuration, the same one, over it. Every check of the
+//! configuration runs before the directory is made, and the directory is locked
 //! ([`super::lock`]) before anything is written or deleted in it.
 
 use std::path::{Path, PathBuf};
@@ -108,6 +111,7 @@ impl RunDir {
         let occupied = match contents(dir)? {
             Contents::Missing | Contents::Empty => None,
             Contents::Run => Some(same_configuration(config, dir).err()),
+            Contents::Other(names) if holds_only_its_configuration(dir, &names, replace) => None,
             Contents::Other(names) => Some(Some(DesignError::NotARun {
                 dir: dir.to_path_buf(),
                 names,
@@ -193,6 +197,24 @@ fn same_configuration(config: &SystemConfig, dir: &Path) -> Result<(), DesignErr
         given,
         stored,
     })
+}
+
+/// Whether `dir` holds nothing but `config.toml` and that file is the
+/// configuration this run reads (`--config DIR/config.toml --out DIR`,
+/// as `fwav study` prepares each case): the run starts there and writes
+/// its resolved configuration, the same one, over it.
+fn holds_only_its_configuration(dir: &Path, names: &[String], replace: &Replace) -> bool {
+    let [name] = names else { return false };
+    if name != super::driver::CONFIG_FILE {
+        return false;
+    }
+    let Ok(own) = std::fs::canonicalize(dir.join(name)) else {
+        return false;
+    };
+    replace
+        .inputs
+        .iter()
+        .any(|input| std::fs::canonicalize(input).is_ok_and(|i| i == own))
 }
 
 /// Refuses to delete `dir` if it holds one of the `inputs` or the working
