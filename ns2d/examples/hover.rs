@@ -63,7 +63,7 @@ fn main() {
                     wmax,
                     imax / nt,
                     imax % nt,
-                    probe.loads().force.im * 2.0 / 4.84
+                    probe.loads().force.im * 2.0 / HoveringStroke::wang_2004().peak_speed().powi(2)
                 );
                 eprintln!(
                     "   force {:?} moment {:.4} closure {:.4} p-range {:.3}",
