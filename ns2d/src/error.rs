@@ -37,6 +37,9 @@ pub enum NsError {
     /// The Reynolds number is not a positive number.
     #[error("the Reynolds number is {0}: give a positive, finite number")]
     BadReynolds(f64),
+    /// A reference curve's row that is not two numbers (or too few rows).
+    #[error("reference curve: {0:?} is not a row of two numbers (x y)")]
+    BadReferenceRow(String),
     /// The wall's influence matrix is singular for this time step.
     #[error(
         "the wall vorticity condition has no unique solution for the time step {dt:.3e}: \

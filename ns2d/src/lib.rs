@@ -50,6 +50,7 @@ mod flow;
 mod grid;
 mod history;
 mod motion;
+mod reference_curve;
 mod section_map;
 mod stream;
 
@@ -58,5 +59,6 @@ pub use flow::{Flow, WallLoads};
 pub use grid::{GridSpec, OGrid, RadialStretch};
 pub use history::{ForceHistory, WakeStatistics};
 pub use motion::{FrameState, Motion, PlungePitch, RigidField, SteadyStream};
+pub use reference_curve::{interpolate, ReferenceCurve};
 pub use section_map::SectionMap;
 pub use stream::StreamSolver;

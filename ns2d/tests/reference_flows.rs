@@ -4,40 +4,13 @@
 //! `fwav validate` and are `#[ignore]`d here with their cost.
 
 use fwav_ns2d::cases::{CylinderWake, HoveringEllipse, ImpulsiveCylinder, Resolution};
-use fwav_ns2d::GridSpec;
+use fwav_ns2d::{interpolate, GridSpec, ReferenceCurve};
 
-/// `(x, y)` rows of a reference file (`#` comments).
-fn reference(name: &str) -> Vec<(f64, f64)> {
+/// A reference curve of `tests/data`.
+fn reference(name: &str) -> ReferenceCurve {
     let path = format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    text.lines()
-        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
-        .map(|l| {
-            let mut v = l.split_whitespace().map(|x| x.parse::<f64>().unwrap());
-            (v.next().unwrap(), v.next().unwrap())
-        })
-        .collect()
-}
-
-/// Linear interpolation of a sampled curve.
-fn at(curve: &[(f64, f64)], x: f64) -> f64 {
-    let i = curve.partition_point(|p| p.0 < x).clamp(1, curve.len() - 1);
-    let (a, b) = (curve[i - 1], curve[i]);
-    a.1 + (b.1 - a.1) * (x - a.0) / (b.0 - a.0)
-}
-
-/// The largest relative error of `computed` against the reference points
-/// with `x` in `range`, and where.
-fn worst_relative(
-    computed: &[(f64, f64)],
-    reference: &[(f64, f64)],
-    range: (f64, f64),
-) -> (f64, f64) {
-    reference
-        .iter()
-        .filter(|p| p.0 >= range.0 && p.0 <= range.1)
-        .map(|p| ((at(computed, p.0) - p.1).abs() / p.1, p.0))
-        .fold((0.0, 0.0), |w, e| if e.0 > w.0 { e } else { w })
+    ReferenceCurve::parse(&text).unwrap()
 }
 
 /// Koumoutsakos & Leonard (1995), J. Fluid Mech. 296, fig. 18: the drag
@@ -52,10 +25,10 @@ fn the_impulsively_started_cylinder_at_re_550_drags_as_koumoutsakos_and_leonard_
     }
     .run(ImpulsiveCylinder::validated())
     .unwrap();
-    let (error, x) = worst_relative(
+    let (error, x) = reference("koumoutsakos_leonard_1995_re550.dat").worst_deviation(
         &drag,
-        &reference("koumoutsakos_leonard_1995_re550.dat"),
         (0.5, 3.0),
+        f64::abs,
     );
     assert!(
         error < 0.05,
@@ -131,10 +104,10 @@ fn the_impulsively_started_cylinder_at_re_3000_drags_as_koumoutsakos_and_leonard
     }
     .run(resolution)
     .unwrap();
-    let (error, x) = worst_relative(
+    let (error, x) = reference("koumoutsakos_leonard_1995_re3000.dat").worst_deviation(
         &drag,
-        &reference("koumoutsakos_leonard_1995_re3000.dat"),
         (0.5, 3.0),
+        f64::abs,
     );
     assert!(
         error < 0.05,
@@ -157,13 +130,17 @@ fn the_hovering_ellipse_lifts_as_wang_birch_and_dickinson_computed() {
     .run(HoveringEllipse::validated())
     .unwrap();
     let reference = reference("wang_birch_dickinson_2004_lift_re75.dat");
-    let peak = reference.iter().map(|p| p.1.abs()).fold(0.0, f64::max);
-    for (t, cl) in reference.iter().filter(|p| p.0 >= 3.0 && p.0 <= 4.0) {
-        let error = (at(&lift, *t) - cl).abs() / peak;
+    let peak = reference.peak();
+    for (t, cl) in reference
+        .points()
+        .iter()
+        .filter(|p| p.0 >= 3.0 && p.0 <= 4.0)
+    {
+        let error = (interpolate(&lift, *t) - cl).abs() / peak;
         assert!(
             error < 0.10,
             "t/T = {t:.3}: CL {:.3} against {cl:.3}",
-            at(&lift, *t)
+            interpolate(&lift, *t)
         );
     }
 }

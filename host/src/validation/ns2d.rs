@@ -10,7 +10,7 @@
 //! times); the crate's tests run the quick ones.
 
 use fwav_ns2d::cases::{CylinderWake, HoveringEllipse, ImpulsiveCylinder, Resolution};
-use fwav_ns2d::{GridSpec, NsError, WakeStatistics};
+use fwav_ns2d::{GridSpec, NsError, ReferenceCurve, WakeStatistics};
 
 use super::{
     missing, shared, ErrorKind, Measured, Memo, Solver, Spec, Validation, ValidationError,
@@ -176,33 +176,6 @@ fn wake(reynolds: u32, quantity: WakeQuantity) -> Validation {
     }
 }
 
-/// `(x, y)` rows of a reference curve (`#` comments).
-fn curve(text: &str, name: &str) -> Result<Vec<(f64, f64)>, ValidationError> {
-    text.lines()
-        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
-        .map(|l| {
-            let v: Vec<f64> = l
-                .split_whitespace()
-                .map(str::parse)
-                .collect::<Result<_, _>>()
-                .map_err(|e| missing(format!("{name}: {l:?}: {e}")))?;
-            match v[..] {
-                [x, y, ..] => Ok((x, y)),
-                _ => Err(missing(format!("{name}: {l:?}: two columns expected"))),
-            }
-        })
-        .collect()
-}
-
-/// Linear interpolation of a sampled curve (`x` increasing).
-fn at(samples: &[(f64, f64)], x: f64) -> f64 {
-    let i = samples
-        .partition_point(|p| p.0 < x)
-        .clamp(1, samples.len() - 1);
-    let (a, b) = (samples[i - 1], samples[i]);
-    a.1 + (b.1 - a.1) * (x - a.0) / (b.0 - a.0)
-}
-
 /// Impulsively started cylinder: the worst relative drag error over
 /// U t / R in [0.5, 3], within 5% (issue 23).
 fn impulsive(reynolds: u32) -> Validation {
@@ -225,20 +198,16 @@ fn impulsive(reynolds: u32) -> Validation {
                 },
                 reference: || 0.0,
                 compute: || {
-                    let reference = curve(
-                        include_str!(concat!("../../../ns2d/tests/data/", $file)),
-                        $file,
-                    )?;
+                    let reference = ReferenceCurve::parse(include_str!(concat!(
+                        "../../../ns2d/tests/data/",
+                        $file
+                    )))?;
                     let drag = ImpulsiveCylinder {
                         reynolds: f64::from($re),
                         until: 3.05,
                     }
                     .run($resolution)?;
-                    let (error, x) = reference
-                        .iter()
-                        .filter(|p| p.0 >= 0.5 && p.0 <= 3.0)
-                        .map(|p| ((at(&drag, p.0) - p.1).abs() / p.1, p.0))
-                        .fold((0.0, 0.0), |w, e| if e.0 > w.0 { e } else { w });
+                    let (error, x) = reference.worst_deviation(&drag, (0.5, 3.0), f64::abs);
                     Ok(Measured {
                         value: error,
                         note: Some(format!("worst at U t/R = {x:.2}")),
@@ -298,21 +267,16 @@ fn hovering_lift() -> Validation {
         },
         reference: || 0.0,
         compute: || {
-            let reference = curve(
-                include_str!("../../../ns2d/tests/data/wang_birch_dickinson_2004_lift_re75.dat"),
-                "wang_birch_dickinson_2004_lift_re75.dat",
-            )?;
+            let reference = ReferenceCurve::parse(include_str!(
+                "../../../ns2d/tests/data/wang_birch_dickinson_2004_lift_re75.dat"
+            ))?;
             let lift = HoveringEllipse {
                 reynolds: 75.0,
                 periods: 4.0,
             }
             .run(HoveringEllipse::validated())?;
-            let peak = reference.iter().map(|p| p.1.abs()).fold(0.0, f64::max);
-            let (error, x) = reference
-                .iter()
-                .filter(|p| p.0 >= 3.0 && p.0 <= 4.0)
-                .map(|p| ((at(&lift, p.0) - p.1).abs() / peak, p.0))
-                .fold((0.0, 0.0), |w, e| if e.0 > w.0 { e } else { w });
+            let peak = reference.peak();
+            let (error, x) = reference.worst_deviation(&lift, (3.0, 4.0), |_| peak);
             Ok(Measured {
                 value: error,
                 note: Some(format!("worst at t/T = {x:.3}")),
