@@ -76,6 +76,10 @@ pub struct Flow<M: Motion> {
     /// factored influence matrix of the current time step.
     start: Vec<f64>,
     wall_scratch: Vec<f64>,
+    /// A ring of zeros (the first pass's wall) and the first pass's outer
+    /// ring, kept for the second.
+    zero_ring: Vec<f64>,
+    outer_ring: Vec<f64>,
     influence: Option<WallInfluence>,
     /// The section's area (for its own circulation `2ΩA`) and the
     /// circulation carried out through the far boundary so far.
@@ -139,6 +143,8 @@ impl<M: Motion> Flow<M> {
             theta_diffusion: vec![0.0; n],
             start: vec![0.0; n],
             wall_scratch: vec![0.0; nt],
+            zero_ring: vec![0.0; nt],
+            outer_ring: vec![0.0; nt],
             influence: None,
             area: map.area(),
             exited: 0.0,
@@ -335,12 +341,14 @@ impl<M: Motion> Flow<M> {
         let t = self.time + dt;
         // The step with a zero new wall vorticity, and Thom's of it.
         self.start.copy_from_slice(&self.omega);
-        let zero = vec![0.0; nt];
+        let zero = std::mem::take(&mut self.zero_ring);
         self.radial_crank_nicolson(dt, &zero);
+        self.zero_ring = zero;
         self.ring_implicit(dt);
         self.omega[..nt].fill(0.0);
         self.outer_condition();
-        let outer_ring = self.omega[(self.grid.nr - 1) * nt..].to_vec();
+        let mut outer_ring = std::mem::take(&mut self.outer_ring);
+        outer_ring.copy_from_slice(&self.omega[(self.grid.nr - 1) * nt..]);
         self.solve_stream(t, false);
         let mut wall = std::mem::take(&mut self.wall_scratch);
         self.thom(false, &mut wall);
@@ -365,6 +373,7 @@ impl<M: Motion> Flow<M> {
         self.omega[..nt].copy_from_slice(&wall);
         let outer_start = (self.grid.nr - 1) * nt;
         self.omega[outer_start..].copy_from_slice(&outer_ring);
+        self.outer_ring = outer_ring;
         self.wall_scratch = wall;
         self.exited += dt * self.outflow();
         self.time = t;

@@ -55,16 +55,22 @@ impl<M: Motion> Flow<M> {
             .zip(g.inv_jac.par_chunks(nt))
             .enumerate()
             .filter(|(j, _)| *j > 0 && *j < nr - 1)
-            .for_each(|(_, ((ring, old), inv_jac))| {
-                let mut rhs: Vec<f64> = ring
-                    .iter()
-                    .zip(old)
-                    .map(|(w, d)| w - 0.5 * dt * d)
-                    .collect();
-                let sigma: Vec<f64> = inv_jac.iter().map(|i| factor * i).collect();
-                solve_periodic(&sigma, &mut rhs);
-                ring.copy_from_slice(&rhs);
-            });
+            .for_each_init(
+                || vec![0.0; 3 * nt],
+                |scratch, (_, ((ring, old), inv_jac))| {
+                    let (sigma, rest) = scratch.split_at_mut(nt);
+                    let (upper, corner) = rest.split_at_mut(nt);
+                    for ((s, w), (d, i)) in sigma
+                        .iter_mut()
+                        .zip(ring.iter_mut())
+                        .zip(old.iter().zip(inv_jac))
+                    {
+                        *s = factor * i;
+                        *w -= 0.5 * dt * d;
+                    }
+                    solve_periodic(sigma, ring, upper, corner);
+                },
+            );
     }
 
     /// `ω ← (1 - dt/2 D)⁻¹ [(1 + dt/2 D) ω + dt E]` along each radial
@@ -131,7 +137,9 @@ impl<M: Motion> Flow<M> {
 /// Solve `-σ_k x_{k-1} + (1 + 2σ_k) x_k - σ_k x_{k+1} = b_k` round a ring
 /// (periodic), in place, by the Thomas algorithm with the Sherman–Morrison
 /// correction for the corners. The matrix is diagonally dominant.
-fn solve_periodic(sigma: &[f64], b: &mut [f64]) {
+/// `upper` and `z` are work rings of the same length (no allocation: the
+/// step calls this for every ring).
+fn solve_periodic(sigma: &[f64], b: &mut [f64], upper: &mut [f64], z: &mut [f64]) {
     let n = b.len();
     // A = T + u vᵀ with u = (γ, 0, …, 0, -σ_{n-1}), v = (1, 0, …, 0, -σ_0/γ).
     let gamma = -(1.0 + 2.0 * sigma[0]);
@@ -145,8 +153,7 @@ fn solve_periodic(sigma: &[f64], b: &mut [f64]) {
             d
         }
     };
-    let mut upper = vec![0.0; n];
-    let mut z = vec![0.0; n];
+    z.fill(0.0);
     z[0] = gamma;
     z[n - 1] = -sigma[n - 1];
     // Forward elimination of T for both right-hand sides.
@@ -257,7 +264,7 @@ mod tests {
             .collect();
         let b: Vec<f64> = (0..9).map(|k| f64::from(k).cos()).collect();
         let mut x = b.clone();
-        solve_periodic(&sigma, &mut x);
+        solve_periodic(&sigma, &mut x, &mut [0.0; 9], &mut [0.0; 9]);
         let n = 9;
         for k in 0..n {
             let (km, kp) = ((k + n - 1) % n, (k + 1) % n);
