@@ -22,6 +22,7 @@ use super::panel::{
     PanelError, PanelSettings, PanelSolver, SectionShape, ShapeError, ShapeHistory,
 };
 use super::theory::garrick_plunge;
+use super::viscous::{ViscousError, ViscousSection};
 
 /// Fewest chord stations a thin section's deformation is resampled onto.
 const MIN_CAMBER_STATIONS: usize = 21;
@@ -79,6 +80,8 @@ pub enum SectionModel {
     Flat,
     /// A closed contour: the panel method.
     Thick(SectionShape),
+    /// Laminar Navier–Stokes ([`super::viscous`]).
+    Viscous(ViscousSection),
 }
 
 /// Why a case cannot be set up or run.
@@ -108,9 +111,13 @@ pub enum CaseError {
     /// The panel solver refused the section, settings or deformation.
     #[error(transparent)]
     Panel(#[from] PanelError),
-    /// Leading-edge vortex shedding asked of the panel method.
+    /// Leading-edge vortex shedding asked of the panel method or the
+    /// viscous model.
     #[error("leading-edge vortex shedding (a critical LESP) applies to the thin-line model only")]
     LespOnThick,
+    /// The viscous model refused the case or failed.
+    #[error(transparent)]
+    Viscous(#[from] ViscousError),
     /// A NACA section thicker than the panel method can take (the
     /// message leaves the name to the caller, who gave it).
     #[error(
@@ -311,7 +318,9 @@ pub struct CaseRun {
     pub history: History,
     /// The period, chords travelled.
     pub period: f64,
-    /// The time step, chords travelled.
+    /// The interval of the history's samples, chords travelled: the time
+    /// step of the inviscid models; the viscous model samples its loads
+    /// at this interval between its own (smaller, varying) steps.
     pub dt: f64,
     /// Trailing-edge (thin line) or wake (panel) vortices shed.
     pub wake_vortices: usize,
@@ -372,6 +381,7 @@ impl Case {
         let run = match &self.section {
             SectionModel::Flat => self.run_thin(),
             SectionModel::Thick(shape) => self.run_thick(shape),
+            SectionModel::Viscous(section) => self.run_viscous(section),
         }?;
         self.check_result(&run)?;
         Ok(run)
@@ -505,6 +515,26 @@ impl Case {
             leading_edge_vortices: 0,
             vortices: solver.wake().to_vec(),
             body: self.body_at(settings.duration, solver.surface_pressure().0),
+        })
+    }
+
+    fn run_viscous(&self, section: &ViscousSection) -> Result<CaseRun, CaseError> {
+        if self.lesp_critical.is_some() {
+            return Err(CaseError::LespOnThick);
+        }
+        if self.deformation.is_some() {
+            return Err(ViscousError::Deforming.into());
+        }
+        let duration = self.settings().duration;
+        let run = section.run(&self.motion, self.reynolds, duration)?;
+        Ok(CaseRun {
+            history: run.history,
+            period: self.period(),
+            dt: run.sample,
+            wake_vortices: 0,
+            leading_edge_vortices: 0,
+            vortices: run.vorticity,
+            body: run.body,
         })
     }
 

@@ -11,6 +11,8 @@
 //! - [`history`]: load histories and cycle means; [`friction`]: the laminar
 //!   skin-friction estimate for net thrust.
 //! - [`theory`]: Theodorsen, Garrick and Wagner, the references.
+//! - [`viscous`]: laminar Navier–Stokes of the section (`fwav-ns2d`),
+//!   the viscous model behind the same case.
 //! - [`case`]: one analysis as `fwav aero2d` runs it: the solver chosen by
 //!   the section, the last cycle's means and periodicity.
 //!
@@ -26,3 +28,4 @@ pub mod motion;
 pub mod naca;
 pub mod panel;
 pub mod theory;
+pub mod viscous;

@@ -7,12 +7,31 @@ use anyhow::{bail, Context, Result};
 use fwav::aero2d::case::{Case, SectionModel, PERIODIC_CHANGE};
 use fwav::aero2d::friction::FWAV_REYNOLDS;
 use fwav::aero2d::motion::Motion;
+use fwav::aero2d::viscous::ViscousSection;
 use fwav::aeroelastic::handoff::SectionFile;
+use fwav::output::history_csv::write_history_csv;
 use fwav::output::section_plot::draw;
 
 /// The command's options.
 #[derive(clap::Args)]
 pub struct Aero2dArgs {
+    /// The flow model: `inviscid` (the section chooses: LDVM for `flat`,
+    /// the panel method for a contour) or `ns` (laminar Navier–Stokes at
+    /// `--reynolds`; `flat` is a thin plate of `--ns-thickness`).
+    #[arg(long, value_enum, default_value_t = FlowModel::Inviscid)]
+    pub model: FlowModel,
+    /// Thickness of the plate that models a `flat` section in the
+    /// Navier–Stokes model, chords (elliptic edges).
+    #[arg(long, default_value_t = ViscousSection::DEFAULT_THICKNESS)]
+    pub ns_thickness: f64,
+    /// Grid nodes round the section in the Navier–Stokes model (even, 16
+    /// to 8192; default 256).
+    #[arg(long)]
+    pub ns_around: Option<usize>,
+    /// Grid nodes from the wall to the outer boundary in the Navier–Stokes
+    /// model (8 to 8192; default 160).
+    #[arg(long)]
+    pub ns_radial: Option<usize>,
     /// Section: `flat` (thin line, LDVM), a NACA 4-digit name such as
     /// `naca0012` (thick section, panel method), or a file of x y points
     /// (Selig order or clockwise from the trailing edge, chords).
@@ -43,8 +62,9 @@ pub struct Aero2dArgs {
     /// beyond it (LDVM). Off when not given.
     #[arg(long)]
     pub lesp_critical: Option<f64>,
-    /// Chord Reynolds number for the laminar skin-friction estimate
-    /// (default: the built-in FWAV, 3 m/s, 0.075 m chord, sea-level air).
+    /// Chord Reynolds number: of the laminar skin-friction estimate of the
+    /// inviscid models, of the flow in the Navier–Stokes model (default:
+    /// the built-in FWAV, 3 m/s, 0.075 m chord, sea-level air).
     #[arg(long, default_value_t = FWAV_REYNOLDS)]
     pub reynolds: f64,
     /// Deformation history of the section over one period: a
@@ -57,12 +77,26 @@ pub struct Aero2dArgs {
     /// as many points as the section has, in its order.
     #[arg(long)]
     pub deformation: Option<PathBuf>,
-    /// Draw the wake and the force histories to this PNG.
+    /// Draw the wake (the vorticity, for `ns`) and the force histories to
+    /// this PNG.
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// Write the load histories to this CSV (time in chords travelled,
+    /// CL, CT, CP; a file that exists is refused).
+    #[arg(long)]
+    pub history: Option<PathBuf>,
     /// Machine-readable output.
     #[arg(long)]
     pub json: bool,
+}
+
+/// The flow model of `--model`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum FlowModel {
+    /// LDVM for a thin section, the panel method for a contour.
+    Inviscid,
+    /// Laminar Navier–Stokes.
+    Ns,
 }
 
 /// The efficiency of a section that does no work.
@@ -75,8 +109,22 @@ const UNDEFINED_EFFICIENCY: &str = "undefined (no input power)";
 pub struct Doubtful(pub String);
 
 fn check(a: &Aero2dArgs) -> Result<()> {
-    if a.section != "flat" && a.lesp_critical.is_some() {
-        bail!("--lesp-critical applies to the thin-line (`--section flat`) model only");
+    if (a.section != "flat" || a.model == FlowModel::Ns) && a.lesp_critical.is_some() {
+        bail!("--lesp-critical applies to the inviscid thin-line model (`--section flat`) only");
+    }
+    let ns_options = a.ns_around.is_some()
+        || a.ns_radial.is_some()
+        || a.ns_thickness != ViscousSection::DEFAULT_THICKNESS;
+    if a.model != FlowModel::Ns && ns_options {
+        bail!("--ns-thickness, --ns-around and --ns-radial apply to --model ns only");
+    }
+    if a.model == FlowModel::Ns && a.section != "flat" {
+        bail!(
+            "--model ns takes `--section flat` (a thin plate of --ns-thickness) only for now: \
+             NACA sections and point files need the solver's numerical conformal map, which \
+             is not built yet; use the inviscid model for {}",
+            a.section
+        );
     }
     if !(a.reduced_frequency > 0.0 && a.reduced_frequency <= 20.0) {
         bail!(
@@ -117,8 +165,19 @@ fn check(a: &Aero2dArgs) -> Result<()> {
 
 /// The case the arguments describe.
 fn case(a: &Aero2dArgs) -> Result<Case> {
-    let section =
-        SectionModel::named(&a.section).with_context(|| format!("--section {}", a.section))?;
+    let section = match a.model {
+        FlowModel::Ns => {
+            let plate = ViscousSection::plate(a.ns_thickness);
+            SectionModel::Viscous(ViscousSection {
+                around: a.ns_around.unwrap_or(plate.around),
+                radial: a.ns_radial.unwrap_or(plate.radial),
+                ..plate
+            })
+        }
+        FlowModel::Inviscid => {
+            SectionModel::named(&a.section).with_context(|| format!("--section {}", a.section))?
+        }
+    };
     let deformation = match &a.deformation {
         Some(path) => Some(SectionFile::read(path)?.points()),
         None => None,
@@ -140,6 +199,15 @@ fn case(a: &Aero2dArgs) -> Result<Case> {
     })
 }
 
+/// What the JSON output calls the model that ran.
+fn model_name(section: &SectionModel) -> &'static str {
+    match section {
+        SectionModel::Flat => "thin line (LDVM)",
+        SectionModel::Thick(_) => "thick section (panel)",
+        SectionModel::Viscous(_) => "laminar Navier-Stokes (ns2d)",
+    }
+}
+
 /// Runs the command.
 pub fn run(a: &Aero2dArgs) -> Result<()> {
     check(a)?;
@@ -159,6 +227,15 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         )
         .with_context(|| format!("--plot {}", png.display()))?;
     }
+    if let Some(csv) = &a.history {
+        write_history_csv(&run.history, csv).with_context(|| {
+            format!(
+                "--history {}: not written (an existing file is never overwritten; \
+                 choose a new name)",
+                csv.display()
+            )
+        })?;
+    }
     let m = run.means();
     let doubt = (!m.is_periodic()).then(|| {
         format!(
@@ -173,7 +250,6 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
     let k = a.reduced_frequency;
     let (wake_count, lev_count) = (run.wake_vortices, run.leading_edge_vortices);
     let garrick = case.garrick();
-    let flat = case.section.is_flat();
     if a.json {
         let mut v = serde_json::json!({
             "section": a.section,
@@ -200,7 +276,7 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
             "warnings": doubt.iter().collect::<Vec<_>>(),
             "wake_vortices": wake_count,
             "leading_edge_vortices": lev_count,
-            "model": if flat { "thin line (LDVM)" } else { "thick section (panel)" },
+            "model": model_name(&case.section),
         });
         if let Some((gct, gcp, geta)) = garrick {
             let geta = (gcp != 0.0).then_some(geta);
@@ -209,8 +285,9 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         println!("{v:#}");
     } else {
         println!(
-            "{} section, k = {k}, h0 = {} c, pitch {} +- {} deg, {} cycles (dt {:.4} c/U){}",
+            "{} section ({}), k = {k}, h0 = {} c, pitch {} +- {} deg, {} cycles (dt {:.4} c/U){}",
             a.section,
+            model_name(&case.section),
             a.plunge_amplitude,
             a.mean_pitch_deg,
             a.pitch_amplitude_deg,

@@ -3,7 +3,8 @@
 //!
 //! - [`drawing`]: the one drawing error and what every picture shares.
 //! - [`section_plot`]: one 2D section run ([`crate::aero2d`]): the wake
-//!   and the section, and the force histories.
+//!   and the section, and the force histories; [`history_csv`]: the
+//!   histories as CSV.
 //! - [`discipline_plot`]: the aerodynamic discipline
 //!   ([`crate::discipline`]): main effects and the CT–efficiency plane
 //!   with the Pareto front.
@@ -25,6 +26,7 @@
 
 pub mod discipline_plot;
 pub mod drawing;
+pub mod history_csv;
 pub mod layout_picture;
 pub mod section_plot;
 pub mod vtu;

@@ -1,0 +1,206 @@
+//! The Navier–Stokes section model behind `fwav aero2d --model ns`
+//! (`fwav::aero2d::viscous`): its conventions, not its accuracy, which
+//! is `fwav-ns2d`'s to show against published flows (`ns2d/tests/`,
+//! `fwav validate --only ns2d/`). A plunging plate on a coarse grid
+//! (a few seconds): the loads come back in the inviscid models' axes
+//! and scales, and what the physics fixes exactly holds.
+
+use std::f64::consts::PI;
+
+use fwav::aero2d::case::{Case, SectionModel};
+use fwav::aero2d::motion::Motion;
+use fwav::aero2d::viscous::{ViscousError, ViscousSection};
+
+/// A 12 % plate on 64 x 64 nodes out to 15 chords.
+fn coarse_plate() -> ViscousSection {
+    ViscousSection {
+        thickness: 0.12,
+        around: 64,
+        radial: 64,
+        outer_chords: 15.0,
+        first_cell_layers: 0.2,
+    }
+}
+
+fn case(section: SectionModel, motion: Motion, reynolds: f64) -> Case {
+    Case {
+        section,
+        motion,
+        cycles: 2,
+        lesp_critical: None,
+        reynolds,
+        deformation: None,
+    }
+}
+
+/// A symmetric plate plunging `h = 0.05 sin(2t)` (k = 1) at Re 1000:
+/// - the loads are sampled uniformly, 200 a period, so the cycle means of
+///   the inviscid models apply;
+/// - lift opposes the plunge velocity (a plate rising sees the air come
+///   from above): correlation of CL with `-dh/dt` over the last period
+///   above 0.5 (Theodorsen's lift at k = 1 has 80 % of its amplitude in
+///   that phase; measured: see the output);
+/// - the section works on the air: mean CP > 0;
+/// - at this amplitude Garrick's thrust (CT 0.0095) is smaller than the
+///   laminar friction of two faces (Blasius, 2 x 1.328 / sqrt(Re) =
+///   0.084), so the mean CT is a drag: negative;
+/// - the mirror image (the plunge of opposite sign) has the mirrored loads
+///   at every sample: the lift reversed, the thrust and power the same, to
+///   1e-3 of the lift's amplitude (the start-up transient gives the
+///   second period a mean lift: measured +0.046 of an amplitude 0.34, so
+///   a zero mean is no test; mirroring is exact, transient included).
+#[test]
+fn plunging_plate_loads_keep_the_inviscid_models_conventions() {
+    let (k, h0) = (1.0, 0.05);
+    let section = SectionModel::Viscous(coarse_plate());
+    let clock = std::time::Instant::now();
+    let run = case(section, Motion::plunge(k, h0), 1000.0).run().unwrap();
+    let h = &run.history;
+    let period = PI / k;
+    assert!((run.dt - period / 200.0).abs() < 1e-12);
+    assert_eq!(h.time.len(), 400);
+    assert!((h.time[399] - 2.0 * period).abs() < 1e-9);
+    let last = 200..400;
+    let cl = &h.cl[last.clone()];
+    let rate: Vec<f64> = h.time[last.clone()]
+        .iter()
+        .map(|&t| -Motion::plunge(k, h0).at(t).1)
+        .collect();
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let (mcl, mrate) = (mean(cl), mean(&rate));
+    let cov: f64 = cl
+        .iter()
+        .zip(&rate)
+        .map(|(a, b)| (a - mcl) * (b - mrate))
+        .sum();
+    let var = |v: &[f64], m: f64| v.iter().map(|a| (a - m).powi(2)).sum::<f64>();
+    let correlation = cov / (var(cl, mcl) * var(&rate, mrate)).sqrt();
+    let swing = 0.5
+        * (cl.iter().copied().fold(f64::MIN, f64::max)
+            - cl.iter().copied().fold(f64::MAX, f64::min));
+    let m = run.means();
+    println!(
+        "{:.1} s: CL amplitude {swing:.4}, mean {mcl:+.4}, correlation with -dh/dt {correlation:.3}; \
+         mean CT {:+.4}, CP {:.4}",
+        clock.elapsed().as_secs_f64(),
+        m.ct,
+        m.cp
+    );
+    assert!(correlation > 0.5, "{correlation}");
+    assert!(m.cp > 0.0, "{m:?}");
+    assert!(m.ct < 0.0, "{m:?}");
+    let mirror = case(
+        SectionModel::Viscous(coarse_plate()),
+        Motion::plunge(k, -h0),
+        1000.0,
+    )
+    .run()
+    .unwrap();
+    let g = &mirror.history;
+    let worst = (0..400)
+        .map(|i| {
+            (h.cl[i] + g.cl[i])
+                .abs()
+                .max((h.ct[i] - g.ct[i]).abs())
+                .max((h.cp[i] - g.cp[i]).abs())
+        })
+        .fold(0.0, f64::max);
+    println!("mirror: worst difference {worst:.2e} (lift amplitude {swing:.3})");
+    assert!(worst < 1e-3 * swing, "{worst}");
+    assert!(run.vortices.len() > 100 && run.body.len() == 64);
+}
+
+/// What the viscous model cannot take yet is refused, saying what to do.
+#[test]
+fn viscous_model_refuses_what_it_cannot_take() {
+    let plate = SectionModel::Viscous(coarse_plate());
+    let mut deforming = case(plate.clone(), Motion::plunge(1.0, 0.05), 1000.0);
+    deforming.deformation = Some(vec![vec![(0.0, 0.0), (1.0, 0.0)]; 4]);
+    let e = deforming.run().unwrap_err();
+    assert!(e.to_string().contains("deformation"), "{e}");
+    let thin = SectionModel::Viscous(ViscousSection {
+        thickness: 0.001,
+        ..coarse_plate()
+    });
+    let e = case(thin, Motion::plunge(1.0, 0.05), 1000.0)
+        .run()
+        .unwrap_err();
+    assert!(
+        matches!(
+            e,
+            fwav::aero2d::case::CaseError::Viscous(ViscousError::Thickness(t)) if t == 0.001
+        ),
+        "{e}"
+    );
+}
+
+fn fwav(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_fwav"))
+        .args(args)
+        .output()
+        .expect("the fwav binary runs")
+}
+
+/// `fwav aero2d --model ns` on a coarse grid: JSON names the model, the
+/// history CSV has a row a sample and is never overwritten; options the
+/// model cannot take are refused naming them.
+#[test]
+fn aero2d_runs_the_viscous_model() {
+    let dir = std::env::temp_dir().join(format!("fwav-viscous-cli-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = dir.join("history.csv");
+    let args = [
+        "aero2d",
+        "--model",
+        "ns",
+        "--ns-thickness",
+        "0.12",
+        "--ns-around",
+        "64",
+        "--ns-radial",
+        "64",
+        "--reynolds",
+        "1000",
+        "--cycles",
+        "2",
+        "--json",
+        "--history",
+        csv.to_str().unwrap(),
+    ];
+    let out = fwav(&args);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    // Two cycles from rest are not periodic: printed, then flagged (exit 2).
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON on stdout");
+    assert_eq!(v["model"], "laminar Navier-Stokes (ns2d)", "{stderr}");
+    assert!(v["mean_cp"].as_f64().unwrap() > 0.0);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "time,cl,ct,cp");
+    assert_eq!(lines.len(), 401);
+    assert!(lines[1..].iter().all(|l| l
+        .split(',')
+        .all(|x| x.parse::<f64>().is_ok_and(f64::is_finite))));
+    let again = fwav(&args);
+    assert!(!again.status.success());
+    let e = String::from_utf8_lossy(&again.stderr);
+    assert!(
+        e.contains("--history") && e.contains("never overwritten"),
+        "{e}"
+    );
+    assert_eq!(std::fs::read_to_string(&csv).unwrap(), text);
+    for (bad, says) in [
+        (&["--section", "naca0012"][..], "numerical conformal map"),
+        (&["--lesp-critical", "0.2"][..], "--lesp-critical"),
+        (&["--ns-thickness", "0.001"][..], "0.005 to 0.3"),
+    ] {
+        let mut argv = vec!["aero2d", "--model", "ns", "--ns-around", "64"];
+        argv.extend_from_slice(bad);
+        let out = fwav(&argv);
+        let e = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success() && e.contains(says), "{bad:?}: {e}");
+    }
+    let out = fwav(&["aero2d", "--ns-around", "64"]);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("apply to --model ns only"));
+    std::fs::remove_dir_all(&dir).ok();
+}
