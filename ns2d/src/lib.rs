@@ -59,6 +59,9 @@ pub use flow::{Flow, WallLoads};
 pub use grid::{GridSpec, OGrid, RadialStretch};
 pub use history::{ForceHistory, WakeStatistics};
 pub use motion::{FrameState, Motion, PlungePitch, RigidField, SteadyStream};
+/// The complex numbers of the solver's interface (positions, velocities
+/// and forces as `x + i y`).
+pub use realfft::num_complex::Complex64;
 pub use reference_curve::{interpolate, ReferenceCurve};
 pub use section_map::SectionMap;
 pub use stream::StreamSolver;

@@ -22,7 +22,7 @@ use super::panel::{
     PanelError, PanelSettings, PanelSolver, SectionShape, ShapeError, ShapeHistory,
 };
 use super::theory::garrick_plunge;
-use super::viscous::{ViscousError, ViscousSection};
+use super::viscous::{SectionPath, ViscousError, ViscousSection};
 
 /// Fewest chord stations a thin section's deformation is resampled onto.
 const MIN_CAMBER_STATIONS: usize = 21;
@@ -526,7 +526,7 @@ impl Case {
             return Err(ViscousError::Deforming.into());
         }
         let duration = self.settings().duration;
-        let run = section.run(&self.motion, self.reynolds, duration)?;
+        let run = section.run(SectionPath::Harmonic(self.motion), self.reynolds, duration)?;
         Ok(CaseRun {
             history: run.history,
             period: self.period(),

@@ -93,6 +93,18 @@ impl SectionFlapping {
         let (sb, cb) = self.stroke_plane.sin_cos();
         (-sweep * cb, -sweep_dot * cb, sweep * sb, sweep_dot * sb)
     }
+
+    /// `(x'', h'')`: the accelerations of the surge and the plunge of
+    /// [`Self::at`] at time `t`.
+    pub fn acceleration(&self, t: f64) -> (f64, f64) {
+        let w = 2.0 * self.reduced_frequency;
+        let (s, c) = (w * t).sin_cos();
+        let phi = self.mean_angle + self.amplitude * c;
+        let (phi_dot, phi_ddot) = (-self.amplitude * w * s, -self.amplitude * w * w * c);
+        let sweep_ddot = self.radius * (phi.cos() * phi_ddot - phi.sin() * phi_dot * phi_dot);
+        let (sb, cb) = self.stroke_plane.sin_cos();
+        (-sweep_ddot * cb, sweep_ddot * sb)
+    }
 }
 
 /// Eldredge's canonical pitch-up, hold, pitch-down manoeuvre (Eldredge, Wang

@@ -22,11 +22,11 @@
 //! at a fixed interval by linear interpolation between steps, so the
 //! cycle means of [`super::history`] see uniform samples.
 
-use fwav_ns2d::{Flow, GridSpec, NsError, PlungePitch, SectionMap};
+use fwav_ns2d::{Complex64, Flow, FrameState, GridSpec, NsError, SectionMap};
 
 use super::history::History;
 use super::ldvm::FreeVortex;
-use super::motion::Motion;
+use super::motion::{Motion, SectionFlapping};
 
 /// Largest Courant number of the explicit advection the step is chosen
 /// for (AB2 with third-order upwind is stable to about 0.5).
@@ -167,7 +167,7 @@ fn coefficients<M: fwav_ns2d::Motion>(flow: &Flow<M>) -> [f64; 3] {
 }
 
 impl ViscousSection {
-    /// Runs `motion` at `reynolds` for `duration` chords travelled,
+    /// Runs `path` at `reynolds` for `duration` chords travelled,
     /// sampling the loads every `period / 200` (or `duration / 2000`
     /// without a period).
     ///
@@ -179,30 +179,23 @@ impl ViscousSection {
     /// keeps falling.
     pub fn run(
         &self,
-        motion: &Motion,
+        path: SectionPath,
         reynolds: f64,
         duration: f64,
     ) -> Result<ViscousRun, ViscousError> {
         if !(0.005..=0.3).contains(&self.thickness) {
             return Err(ViscousError::Thickness(self.thickness));
         }
-        let map = self.map(motion.pivot)?;
+        let map = self.map(path.pivot())?;
         let spec = self.grid(&map, reynolds);
-        let frame = PlungePitch {
-            speed: 1.0,
-            omega: 2.0 * motion.reduced_frequency,
-            plunge: motion.plunge_amplitude,
-            mean_pitch: motion.mean_pitch,
-            pitch: motion.pitch_amplitude,
-            phase: motion.pitch_phase,
-        };
-        let mut flow = Flow::new(&map, spec, frame, 1.0 / reynolds)?;
-        let sample = if motion.reduced_frequency > 0.0 {
-            std::f64::consts::PI / motion.reduced_frequency / SAMPLES_PER_PERIOD
+        let mut flow = Flow::new(&map, spec, path, 1.0 / reynolds)?;
+        let k = path.reduced_frequency();
+        let sample = if k > 0.0 {
+            std::f64::consts::PI / k / SAMPLES_PER_PERIOD
         } else {
             duration / 2000.0
         };
-        let mut dt = (COURANT * flow.stable_dt(1.0) / peak_speed_ratio(motion)).min(sample);
+        let mut dt = (COURANT * flow.stable_dt(1.0) / path.peak_speed_ratio()).min(sample);
         let mut history = History::default();
         let mut before = (0.0, coefficients(&flow));
         let mut steps = 0;
@@ -238,7 +231,7 @@ impl ViscousSection {
             }
             before = now;
         }
-        let (vorticity, body) = picture(&flow, motion);
+        let (vorticity, body) = picture(&flow, &path);
         Ok(ViscousRun {
             history,
             sample,
@@ -250,30 +243,112 @@ impl ViscousSection {
     }
 }
 
-/// The largest speed of the section's motion relative to the stream
-/// over the one at the start (the first step is chosen at the start).
-fn peak_speed_ratio(motion: &Motion) -> f64 {
-    let w = 2.0 * motion.reduced_frequency;
-    let plunge = motion.plunge_amplitude.abs() * w;
-    // The edges' speed from the pitch rate, about the farther end.
-    let pivot = motion.pivot.max(1.0 - motion.pivot);
-    let pitch = motion.pitch_amplitude.abs() * w * pivot;
-    let start = motion.at(0.0).1.abs() + 1.0;
-    (1.0 + plunge + pitch) / start
+/// How the section moves, in chords and chords travelled (`c = U = 1`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SectionPath {
+    /// Harmonic plunge and pitch about a pivot (`fwav aero2d`'s).
+    Harmonic(Motion),
+    /// A wing section flapping about the root axis: plunge and the surge
+    /// of an inclined stroke plane, no pitch (the aerodynamic
+    /// discipline's); the frame's origin is at mid-chord.
+    Flapping(SectionFlapping),
+}
+
+impl SectionPath {
+    /// The frame's origin, chords from the leading edge.
+    fn pivot(&self) -> f64 {
+        match self {
+            Self::Harmonic(m) => m.pivot,
+            Self::Flapping(_) => 0.5,
+        }
+    }
+
+    fn reduced_frequency(&self) -> f64 {
+        match self {
+            Self::Harmonic(m) => m.reduced_frequency,
+            Self::Flapping(f) => f.reduced_frequency,
+        }
+    }
+
+    /// `(x, h, alpha)`: downstream surge and plunge of the pivot, chords,
+    /// and the nose-up pitch, at `t`.
+    fn pose(&self, t: f64) -> (f64, f64, f64) {
+        match self {
+            Self::Harmonic(m) => {
+                let (h, _, alpha, _) = m.at(t);
+                (0.0, h, alpha)
+            }
+            Self::Flapping(f) => {
+                let (x, _, h, _) = f.at(t);
+                (x, h, 0.0)
+            }
+        }
+    }
+
+    /// The largest speed of the section's edges relative to the stream
+    /// over the one at the start (the first step is chosen at the start).
+    fn peak_speed_ratio(&self) -> f64 {
+        let (peak, start) = match self {
+            Self::Harmonic(m) => {
+                let w = 2.0 * m.reduced_frequency;
+                let plunge = m.plunge_amplitude.abs() * w;
+                // The edges' speed from the pitch rate, about the farther end.
+                let arm = m.pivot.max(1.0 - m.pivot);
+                let pitch = m.pitch_amplitude.abs() * w * arm;
+                (1.0 + plunge + pitch, m.at(0.0).1.abs() + 1.0)
+            }
+            Self::Flapping(f) => {
+                let w = 2.0 * f.reduced_frequency;
+                let (_, dx, _, dh) = f.at(0.0);
+                (1.0 + f.radius * f.amplitude.abs() * w, (1.0 - dx).hypot(dh))
+            }
+        };
+        peak / start
+    }
+}
+
+impl fwav_ns2d::Motion for SectionPath {
+    fn state(&self, t: f64) -> FrameState {
+        match self {
+            Self::Harmonic(m) => {
+                // Nose-up pitch turns the body axes clockwise.
+                let w = 2.0 * m.reduced_frequency;
+                let (h, dh, alpha, dalpha) = m.at(t);
+                let ddh = -w * w * h;
+                let ddalpha = -w * w * (alpha - m.mean_pitch);
+                FrameState {
+                    velocity: Complex64::new(-1.0, dh),
+                    acceleration: Complex64::new(0.0, ddh),
+                    angle: -alpha,
+                    rate: -dalpha,
+                    angular_acceleration: -ddalpha,
+                }
+            }
+            Self::Flapping(f) => {
+                // The frame moves at -U through the air, plus its surge
+                // (downstream) and plunge.
+                let (_, dx, _, dh) = f.at(t);
+                let (ddx, ddh) = f.acceleration(t);
+                FrameState {
+                    velocity: Complex64::new(dx - 1.0, dh),
+                    acceleration: Complex64::new(ddx, ddh),
+                    ..FrameState::default()
+                }
+            }
+        }
+    }
 }
 
 /// The cells within [`PICTURE_RADIUS`] as point vortices and the wall,
-/// in the global frame of [`super::case`] (pivot at `x = pivot`,
-/// plunged by `h`).
-fn picture<M: fwav_ns2d::Motion>(
-    flow: &Flow<M>,
-    motion: &Motion,
-) -> (Vec<FreeVortex>, Vec<(f64, f64)>) {
+/// in the global frame of [`super::case`] (the pivot at `x = pivot` plus
+/// the surge, plunged by `h`).
+fn picture(flow: &Flow<SectionPath>, path: &SectionPath) -> (Vec<FreeVortex>, Vec<(f64, f64)>) {
     let g = flow.grid();
-    let (h, _, alpha, _) = motion.at(flow.time());
+    let (x0, h, alpha) = path.pose(flow.time());
+    let pivot = path.pivot() + x0;
     // The body axes are turned by -alpha (a nose-up pitch is clockwise).
     let (s, c) = alpha.sin_cos();
-    let place = |x: f64, y: f64| (motion.pivot + x * c + y * s, h - x * s + y * c);
+    let place = |x: f64, y: f64| (pivot + x * c + y * s, h - x * s + y * c);
     let omega = flow.vorticity();
     let mut cells: Vec<FreeVortex> = (1..g.nr - 1)
         .flat_map(|j| (0..g.nt).map(move |k| (j, k)))
