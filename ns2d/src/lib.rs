@@ -45,6 +45,8 @@
 #![warn(clippy::too_many_lines)]
 
 pub mod cases;
+mod contour;
+mod correspondence;
 mod error;
 mod flow;
 mod grid;
@@ -52,8 +54,10 @@ mod history;
 mod motion;
 mod reference_curve;
 mod section_map;
+mod spline;
 mod stream;
 
+pub use contour::Contour;
 pub use error::NsError;
 pub use flow::{Flow, WallLoads};
 pub use grid::{GridSpec, OGrid, RadialStretch};
