@@ -58,6 +58,11 @@ pub(crate) trait ClosedCurve {
     fn period(&self) -> f64;
     /// The point and its derivative by the parameter at `s`.
     fn eval(&self, s: f64) -> (Complex64, Complex64);
+    /// The section's point at `s` (the physical one, where `eval` is a
+    /// pre-mapped curve's).
+    fn boundary(&self, s: f64) -> Complex64 {
+        self.eval(s).0
+    }
 }
 
 impl ClosedCurve for CurveSpline {
@@ -184,13 +189,13 @@ pub(crate) fn solve(contour: &Contour, samples: usize) -> Result<Correspondence,
     let spline = CurveSpline::closed(contour.points());
     // The start's crowding (largest over smallest step in S) asks for
     // about 64 samples per factor of it: a thin section's ends.
-    let probe = ellipse_start(contour.points(), spline.knots(), samples);
+    let premap = Premap::new(&spline, contour.points());
+    let probe = premap.start(samples);
     let steps = probe.windows(2).map(|w| w[1] - w[0]);
     let crowding = steps.clone().fold(0.0, f64::max) / steps.fold(f64::INFINITY, f64::min);
     let mut n = samples.max(((64.0 * crowding) as usize).next_power_of_two());
     loop {
-        let start = ellipse_start(contour.points(), spline.knots(), n);
-        match solve_curve(&spline, start) {
+        match solve_curve(&premap, premap.start(n), -premap.beta) {
             Ok(fit) => return Ok(fit),
             Err(last) if n >= MAX_SAMPLES => {
                 return Err(NsError::MapNotConverged {
@@ -204,66 +209,154 @@ pub(crate) fn solve(contour: &Contour, samples: usize) -> Result<Correspondence,
     }
 }
 
-/// The start `S(t)` of an elongated section (module docs): with `x` along
-/// the principal axis (angle `β`) of the points, the ellipse angle
-/// `φ = acos((x - x_c)/A)` on the part from the far end counterclockwise
-/// to the near end, `2π -` it on the rest, made increasing (a running
-/// maximum blended with 2 % of the arc length), then `S(t)` the arc length
-/// where `φ = t - β` (so that `a` comes out real).
-fn ellipse_start(points: &[Complex64], knots: &[f64], n: usize) -> Vec<f64> {
-    let m = points.len();
-    let length = knots[m];
-    // Vertex moments weighted by the arc each vertex stands for.
-    let weight = |i: usize| 0.5 * (knots[i + 1] - knots[i] + knots[(i + m - 1) % m + 1] - knots[(i + m - 1) % m]);
-    let centre = (0..m).map(|i| points[i] * weight(i)).sum::<Complex64>() / length;
-    let (mut ixx, mut iyy, mut ixy) = (0.0, 0.0, 0.0);
-    for (i, p) in points.iter().enumerate() {
-        let d = p - centre;
-        ixx += weight(i) * d.re * d.re;
-        iyy += weight(i) * d.im * d.im;
-        ixy += weight(i) * d.re * d.im;
-    }
-    let anisotropy = (ixx - iyy).hypot(2.0 * ixy) / (ixx + iyy);
-    let beta = if anisotropy < 1e-6 { 0.0 } else { 0.5 * (2.0 * ixy).atan2(ixx - iyy) };
-    let rotate = Complex64::from_polar(1.0, -beta);
-    let x: Vec<f64> = points.iter().map(|p| ((p - centre) * rotate).re).collect();
-    let (far, _) = x.iter().enumerate().fold((0, f64::NEG_INFINITY), |b, (i, &v)| if v > b.1 { (i, v) } else { b });
-    let (near, _) = x.iter().enumerate().fold((0, f64::INFINITY), |b, (i, &v)| if v < b.1 { (i, v) } else { b });
-    let (xc, half) = (0.5 * (x[far] + x[near]), 0.5 * (x[far] - x[near]));
-    // φ at the vertices from `far` round, and their arc from `far`.
-    let mut phi = Vec::with_capacity(m + 1);
-    let mut arc = Vec::with_capacity(m + 1);
-    let mut upper = true;
-    let mut running: f64 = 0.0;
-    for step in 0..m {
-        let i = (far + step) % m;
-        if i == near {
-            upper = false;
+/// The Joukowski pre-map `z = m + e^{iβ} (w + f²/w)` whose critical
+/// points `m ± 2f e^{iβ}` are the centres of curvature at the contour's two
+/// tips along its principal axis: it opens a thin section into a
+/// near-circle in `w`, where Newton converges from the polar angle (module
+/// docs). A near-circle gets `f = 0` (no pre-map).
+struct Premap<'a> {
+    spline: &'a CurveSpline,
+    centre: Complex64,
+    /// `e^{-iβ}`.
+    unrotate: Complex64,
+    beta: f64,
+    f2: f64,
+    /// The pre-map's circle centre `iκ` in `w` (the arc `J` opens, of
+    /// height `2κ`: a cambered section's).
+    kappa: f64,
+}
+
+impl<'a> Premap<'a> {
+    fn new(spline: &'a CurveSpline, points: &[Complex64]) -> Self {
+        let knots = spline.knots();
+        let m = points.len();
+        let length = knots[m];
+        let weight = |i: usize| 0.5 * (knots[i + 1] - knots[(i + m - 1) % m]).rem_euclid(length);
+        let centroid = (0..m).map(|i| points[i] * weight(i)).sum::<Complex64>() / length;
+        let (mut ixx, mut iyy, mut ixy) = (0.0, 0.0, 0.0);
+        for (i, p) in points.iter().enumerate() {
+            let d = p - centroid;
+            ixx += weight(i) * d.re * d.re;
+            iyy += weight(i) * d.im * d.im;
+            ixy += weight(i) * d.re * d.im;
         }
-        let c = ((x[i] - xc) / half).clamp(-1.0, 1.0).acos();
-        let candidate = if upper { c } else { TAU - c };
-        running = running.max(candidate);
-        let s = (knots[i] - knots[far]).rem_euclid(length);
-        phi.push(0.98 * running + 0.02 * TAU * s / length);
-        arc.push(s);
+        let circle = Self { spline, centre: centroid, unrotate: Complex64::new(1.0, 0.0), beta: 0.0, f2: 0.0, kappa: 0.0 };
+        let anisotropy = (ixx - iyy).hypot(2.0 * ixy) / (ixx + iyy);
+        if anisotropy < 0.05 {
+            return circle;
+        }
+        let axis = Complex64::from_polar(1.0, -0.5 * (2.0 * ixy).atan2(ixx - iyy));
+        let x: Vec<f64> = points.iter().map(|p| ((p - centroid) * axis).re).collect();
+        let pick = |better: fn(f64, f64) -> bool| (0..m).fold(0, |b, i| if better(x[i], x[b]) { i } else { b });
+        let (far, near) = (pick(|a, b| a > b), pick(|a, b| a < b));
+        let curvature_centre = |i: usize| circumcentre(points[(i + m - 1) % m], points[i], points[(i + 1) % m]);
+        let (Some(plus), Some(minus)) = (curvature_centre(far), curvature_centre(near)) else {
+            return circle;
+        };
+        let span = plus - minus;
+        // Both critical points well inside, on the tips' side of the centre.
+        let inside = ((plus - centroid) * axis).re > 0.0 && ((minus - centroid) * axis).re < 0.0;
+        if !inside || span.norm() < 0.1 * (x[far] - x[near]) {
+            return circle;
+        }
+        let beta = span.arg();
+        let (centre, unrotate) = (0.5 * (plus + minus), Complex64::from_polar(1.0, -beta));
+        let f = 0.25 * span.norm();
+        // Camber: the middle of the section's height at mid-chord.
+        let (mut top, mut bottom) = (f64::NEG_INFINITY, f64::INFINITY);
+        for p in points {
+            let q = (p - centre) * unrotate;
+            if q.re.abs() < 0.2 * f {
+                top = top.max(q.im);
+                bottom = bottom.min(q.im);
+            }
+        }
+        let kappa = if top > bottom { 0.25 * (top + bottom) } else { 0.0 };
+        Self {
+            spline,
+            centre,
+            unrotate,
+            beta,
+            f2: f * f,
+            kappa,
+        }
     }
-    phi.push(TAU);
-    arc.push(length);
-    (0..n)
-        .map(|j| {
-            let target = TAU * j as f64 / n as f64 - beta;
-            let turns = (target / TAU).floor();
-            let f = target - turns * TAU;
-            let k = phi.partition_point(|&p| p <= f).clamp(1, m) - 1;
-            let w = (f - phi[k]) / (phi[k + 1] - phi[k]);
-            knots[far] + arc[k] + w * (arc[k + 1] - arc[k]) + turns * length
-        })
-        .collect()
+
+    /// The start `S(t)`: the arc length where the polar angle of `w` is
+    /// `t - β` (made increasing: a running maximum blended with 2 % of
+    /// the arc length), so that `a` comes out real.
+    fn start(&self, n: usize) -> Vec<f64> {
+        let knots = self.spline.knots();
+        let m = knots.len() - 1;
+        let length = knots[m];
+        let ik = Complex64::new(0.0, self.kappa);
+        let w0 = self.eval(0.0).0 - ik;
+        let mut phi = Vec::with_capacity(m + 1);
+        let (mut previous, mut unwrapped, mut running) = (w0.arg(), 0.0_f64, 0.0_f64);
+        for &s in &knots[..m] {
+            let a = (self.eval(s).0 - ik).arg();
+            unwrapped += wrap(a - previous);
+            previous = a;
+            running = running.max(unwrapped);
+            phi.push(0.98 * running + 0.02 * TAU * s / length);
+        }
+        phi.push(TAU);
+        let offset = w0.arg();
+        (0..n)
+            .map(|j| {
+                let target = TAU * j as f64 / n as f64 - self.beta - offset;
+                let turns = (target / TAU).floor();
+                let f = target - turns * TAU;
+                let k = phi.partition_point(|&p| p <= f).clamp(1, m) - 1;
+                let w = ((f - phi[k]) / (phi[k + 1] - phi[k])).clamp(0.0, 1.0);
+                knots[k] + w * (knots[k + 1] - knots[k]) + turns * length
+            })
+            .collect()
+    }
+}
+
+impl ClosedCurve for Premap<'_> {
+    fn period(&self) -> f64 {
+        self.spline.length()
+    }
+    fn boundary(&self, s: f64) -> Complex64 {
+        self.spline.eval(s).0
+    }
+    fn eval(&self, s: f64) -> (Complex64, Complex64) {
+        let (z, dz) = self.spline.eval(s);
+        let (z, dz) = ((z - self.centre) * self.unrotate, dz * self.unrotate);
+        if self.f2 == 0.0 {
+            return (z, dz);
+        }
+        let root = (z * z - 4.0 * self.f2).sqrt();
+        let (w1, w2) = (0.5 * (z + root), 0.5 * (z - root));
+        let ik = Complex64::new(0.0, self.kappa);
+        // The root outside the circle through ±f round iκ (J maps its
+        // outside one-to-one onto the plane less the arc).
+        let outside = (w1 - ik).norm_sqr() >= self.f2 + self.kappa * self.kappa;
+        let w = if outside { w1 } else { w2 };
+        (w, dz / (1.0 - self.f2 / (w * w)))
+    }
+}
+
+/// The centre of the circle through three points (`None` when collinear).
+fn circumcentre(a: Complex64, b: Complex64, c: Complex64) -> Option<Complex64> {
+    let (ab, ac) = (b - a, c - a);
+    let d = 2.0 * (ab.re * ac.im - ab.im * ac.re);
+    if d == 0.0 {
+        return None;
+    }
+    let (nb, nc) = (ab.norm_sqr(), ac.norm_sqr());
+    Some(a + Complex64::new(ac.im * nb - ab.im * nc, ab.re * nc - ac.re * nb) / d)
 }
 
 /// Newton from `start` (module docs); `Err` carries the last correction
 /// over the period when it does not converge.
-fn solve_curve(spline: &impl ClosedCurve, start: Vec<f64>) -> Result<Correspondence, f64> {
+fn solve_curve(
+    spline: &impl ClosedCurve,
+    start: Vec<f64>,
+    rotation: f64,
+) -> Result<Correspondence, f64> {
     let n = start.len();
     let length = spline.period();
     let mut fft = Transforms::new(n);
@@ -275,7 +368,7 @@ fn solve_curve(spline: &impl ClosedCurve, start: Vec<f64>) -> Result<Corresponde
     let mut last = f64::INFINITY;
     let mut best = f64::INFINITY;
     for steps in 0..MAX_STEPS {
-        step.correction(spline, &s, &unit, &mut fft);
+        step.correction(spline, &s, &unit, &mut fft, rotation);
         fft.filter(&mut step.u, FILTER_ORDER);
         let correction = step.u.iter().fold(0.0_f64, |m, u| m.max(u.abs())) / length;
         if correction.is_nan() {
@@ -300,11 +393,8 @@ fn solve_curve(spline: &impl ClosedCurve, start: Vec<f64>) -> Result<Corresponde
         best = best.min(correction);
         s = next;
         let stalled = correction < STALL && correction > 0.7 * last;
-        if std::env::var("FIT_TRACE").is_ok() {
-            println!("step {steps}: correction {correction:.3e} lambda {lambda}");
-        }
         if correction < TOLERANCE || stalled {
-            let values: Vec<Complex64> = s.iter().map(|&x| spline.eval(x).0).collect();
+            let values: Vec<Complex64> = s.iter().map(|&x| spline.boundary(x)).collect();
             return Ok(Correspondence {
                 modes: fft.modes(&values),
                 steps: steps + 1,
@@ -355,6 +445,7 @@ impl NewtonStep {
         s: &[f64],
         unit: &[Complex64],
         fft: &mut Transforms,
+        rotation: f64,
     ) -> f64 {
         let n = s.len();
         for j in 0..n {
@@ -386,7 +477,7 @@ impl NewtonStep {
         }
         fft.conjugate(&self.gamma, &mut self.k_gamma);
         let mean_gamma = self.gamma.iter().sum::<f64>() / n as f64;
-        let c = -mean_gamma * mean_alpha.tan();
+        let c = -mean_gamma * (mean_alpha - rotation).tan();
         let mut largest: f64 = 0.0;
         for j in 0..n {
             let h = Complex64::new(self.gamma[j], self.k_gamma[j] + c);

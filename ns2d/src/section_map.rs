@@ -218,6 +218,21 @@ mod tests {
         assert!((map.area() - exact).abs() < 1e-12 * exact);
     }
 
+    /// `F = ζ + 0.6 ζ⁻²` has `F' = 1 - 1.2 ζ⁻³`, zero at the three cube
+    /// roots of 1.2 (`|ζ| = 1.063 > 1`): not one-to-one, three zeros
+    /// counted; the ellipse's `F'` vanishes only inside (`|ζ|² = b/a`).
+    #[test]
+    fn the_zeros_of_the_derivative_outside_are_counted() {
+        let folded = SectionMap {
+            a: Complex64::new(1.0, 0.0),
+            z0: Complex64::new(0.0, 0.0),
+            b: vec![Complex64::new(0.0, 0.0), Complex64::new(0.6, 0.0)],
+        };
+        assert_eq!(folded.derivative_zeros_outside(), 3);
+        let ellipse = SectionMap::ellipse(1.0, 0.01, (0.0, 0.0)).unwrap();
+        assert_eq!(ellipse.derivative_zeros_outside(), 0);
+    }
+
     /// The derivative is the map's, by central differences.
     #[test]
     fn the_radial_derivative_is_the_maps() {
