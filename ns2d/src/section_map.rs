@@ -84,8 +84,9 @@ impl SectionMap {
     /// `2 terms + 2`, at least 64), the coefficients the FFT modes of the
     /// converged boundary values, then checked one-to-one. `a` is real and
     /// positive (`θ = 0` maps to the contour's point where the correspondence
-    /// puts it). Cost: about 0.3 ms for 256 points (release, measured by
-    /// `examples/fit_timing.rs`), `O(N log N)`.
+    /// puts it). Cost: 2–4 ms for 256 points (release, measured by
+    /// `examples/fit_timing.rs` on this loaded machine), `O(N log N)` a
+    /// Newton step.
     ///
     /// # Errors
     /// [`NsError::BadSection`] for `terms` outside `1..=4096`,

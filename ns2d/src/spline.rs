@@ -102,7 +102,11 @@ impl CurveSpline {
             s.clamp(0.0, len)
         };
         let last = self.knots.len() - 2;
-        let i = self.knots.partition_point(|&k| k <= s).saturating_sub(1).min(last);
+        let i = self
+            .knots
+            .partition_point(|&k| k <= s)
+            .saturating_sub(1)
+            .min(last);
         let (s0, s1) = (self.knots[i], self.knots[i + 1]);
         let h = s1 - s0;
         let (a, b) = (s1 - s, s - s0);

@@ -53,13 +53,19 @@ fn assert_univalent(map: &SectionMap) {
 #[test]
 fn an_ellipse_gives_joukowskis_coefficients() {
     for (semi_x, semi_y, points, bound) in [(2.0, 0.5, 1024, 1e-10), (1.0, 0.04, 1024, 1e-8)] {
-        let contour = Contour::from_points(&ellipse_points(semi_x, semi_y, (0.0, 0.0), points)).unwrap();
+        let contour =
+            Contour::from_points(&ellipse_points(semi_x, semi_y, (0.0, 0.0), points)).unwrap();
         let map = SectionMap::from_contour(&contour, 32).unwrap();
         let (a, z0, b) = map.coefficients();
         let mut worst = (a - 0.5 * (semi_x + semi_y)).norm();
-        worst = worst.max((b[0] - 0.5 * (semi_x - semi_y)).norm()).max(z0.norm());
+        worst = worst
+            .max((b[0] - 0.5 * (semi_x - semi_y)).norm())
+            .max(z0.norm());
         worst = b[1..].iter().map(|x| x.norm()).fold(worst, f64::max);
-        assert!(worst < bound, "{semi_x}:{semi_y}: worst coefficient error {worst:.2e}");
+        assert!(
+            worst < bound,
+            "{semi_x}:{semi_y}: worst coefficient error {worst:.2e}"
+        );
         assert_univalent(&map);
     }
 }
@@ -107,7 +113,10 @@ fn a_rounded_joukowski_airfoil() {
     let n = 512;
     let points: Vec<(f64, f64)> = (0..n)
         .map(|i| {
-            let z = exact(Complex64::from_polar(1.0, TAU * (i as f64 + 0.3) / n as f64));
+            let z = exact(Complex64::from_polar(
+                1.0,
+                TAU * (i as f64 + 0.3) / n as f64,
+            ));
             (z.re, z.im)
         })
         .collect();
@@ -117,16 +126,26 @@ fn a_rounded_joukowski_airfoil() {
     assert!((z0 - mu).norm() < 1e-5, "z0 = {z0}");
     for (k, bk) in b.iter().take(4).enumerate() {
         let exact_b = (-mu).powu(k as u32) / r.powi(k as i32 + 1);
-        assert!((bk - exact_b).norm() < 1e-5, "b_{} = {bk}, exact {exact_b}", k + 1);
+        assert!(
+            (bk - exact_b).norm() < 1e-5,
+            "b_{} = {bk}, exact {exact_b}",
+            k + 1
+        );
     }
     let (mut worst_z, mut worst_d) = (0.0_f64, 0.0_f64);
     for k in 0..1024 {
         let zeta = on_circle(k, 1024, 1.0);
         worst_z = worst_z.max((map.point(zeta) - exact(zeta)).norm());
-        let (d, e) = (map.radial_derivative(zeta).norm(), exact_radial(zeta).norm());
+        let (d, e) = (
+            map.radial_derivative(zeta).norm(),
+            exact_radial(zeta).norm(),
+        );
         worst_d = worst_d.max((d - e).abs() / e);
     }
-    assert!(worst_z < 1e-4 && worst_d < 1e-2, "F off by {worst_z:.2e}, |F'| by {worst_d:.2e}");
+    assert!(
+        worst_z < 1e-4 && worst_d < 1e-2,
+        "F off by {worst_z:.2e}, |F'| by {worst_d:.2e}"
+    );
     assert_univalent(&map);
 }
 
@@ -153,8 +172,16 @@ fn naca_0012_and_a_cambered_plate_are_reproduced() {
         })
         .collect();
     let cases = [
-        ("NACA 0012", Contour::naca4("0012", 256, 0.005), Contour::naca4("0012", 2048, 0.005)),
-        ("cambered plate", Contour::membrane(&camber, 0.02, 256), Contour::membrane(&camber, 0.02, 2048)),
+        (
+            "NACA 0012",
+            Contour::naca4("0012", 256, 0.005),
+            Contour::naca4("0012", 2048, 0.005),
+        ),
+        (
+            "cambered plate",
+            Contour::membrane(&camber, 0.02, 256),
+            Contour::membrane(&camber, 0.02, 2048),
+        ),
     ];
     for (name, contour, reference) in cases {
         let (contour, reference) = (contour.unwrap(), reference.unwrap());
@@ -163,7 +190,10 @@ fn naca_0012_and_a_cambered_plate_are_reproduced() {
             let map = SectionMap::from_contour(&contour, terms).unwrap();
             let distance = boundary_distance(&map, &reference, 1024);
             println!("{name}: {terms} terms: worst distance {distance:.2e} chords");
-            assert!(distance < 0.3 * previous, "{name}: {terms} terms: {distance:.2e}");
+            assert!(
+                distance < 0.3 * previous,
+                "{name}: {terms} terms: {distance:.2e}"
+            );
             previous = distance;
             if terms == 64 {
                 assert!(distance < 4e-5, "{name}: {distance:.2e}");
@@ -183,13 +213,23 @@ fn the_grid_of_a_fitted_map() {
     for t in [0.01, 0.02, 0.04, 0.08] {
         let contour = Contour::flat_plate(1.0, t, 256).unwrap();
         let map = SectionMap::from_contour(&contour, 128).unwrap();
-        let spec = GridSpec { around: 256, radial: 64, outer_radius: 20.0, first_cell: 2e-3 };
+        let spec = GridSpec {
+            around: 256,
+            radial: 64,
+            outer_radius: 20.0,
+            first_cell: 2e-3,
+        };
         let grid = OGrid::new(&map, spec).unwrap();
         assert!(grid.jac.iter().all(|&j| j > 0.0 && j.is_finite()));
         let wall = &grid.z[..grid.nt];
-        let off = wall.iter().map(|&z| contour.distance_to(z)).fold(0.0, f64::max);
+        let off = wall
+            .iter()
+            .map(|&z| contour.distance_to(z))
+            .fold(0.0, f64::max);
         assert!(off < 5e-5, "{t}: wall node {off:.2e} off the contour");
-        let cells: Vec<f64> = (0..grid.nt).map(|k| (wall[(k + 1) % grid.nt] - wall[k]).norm()).collect();
+        let cells: Vec<f64> = (0..grid.nt)
+            .map(|k| (wall[(k + 1) % grid.nt] - wall[k]).norm())
+            .collect();
         let smallest = cells.iter().copied().fold(f64::INFINITY, f64::min);
         let largest = cells.iter().copied().fold(0.0, f64::max);
         println!("plate t = {t}: smallest wall cell {smallest:.3e} c, largest {largest:.3e} c");

@@ -160,7 +160,10 @@ fn cross(p: Complex64, q: Complex64, r: Complex64) -> f64 {
 
 /// Whether `r`, collinear with `p → q`, lies within the segment's box.
 fn within(p: Complex64, q: Complex64, r: Complex64) -> bool {
-    r.re >= p.re.min(q.re) && r.re <= p.re.max(q.re) && r.im >= p.im.min(q.im) && r.im <= p.im.max(q.im)
+    r.re >= p.re.min(q.re)
+        && r.re <= p.re.max(q.re)
+        && r.im >= p.im.min(q.im)
+        && r.im <= p.im.max(q.im)
 }
 
 /// Where segments `p1 p2` and `q1 q2` meet (crossing or touching), if

@@ -46,7 +46,11 @@ impl Naca4 {
             .or_else(|| code_trim.strip_prefix("naca"))
             .unwrap_or(code_trim)
             .trim();
-        let digits: Vec<u32> = code_trim.chars().map(|c| c.to_digit(10)).collect::<Option<_>>().ok_or_else(bad)?;
+        let digits: Vec<u32> = code_trim
+            .chars()
+            .map(|c| c.to_digit(10))
+            .collect::<Option<_>>()
+            .ok_or_else(bad)?;
         let [m, p, t1, t2] = digits[..] else {
             return Err(bad());
         };
@@ -74,7 +78,10 @@ impl Naca4 {
         if m == 0.0 {
             (0.0, 0.0)
         } else if x < p {
-            (m / (p * p) * (2.0 * p * x - x * x), 2.0 * m / (p * p) * (p - x))
+            (
+                m / (p * p) * (2.0 * p * x - x * x),
+                2.0 * m / (p * p) * (p - x),
+            )
         } else {
             let q = (1.0 - p) * (1.0 - p);
             (

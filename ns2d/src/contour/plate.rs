@@ -48,7 +48,11 @@ impl Contour {
     /// not below the mid-line's length, fewer than 32 points, fewer than
     /// two samples or repeated/non-finite ones; the [`Contour::from_points`]
     /// checks (a mid-line bent tighter than `t/2` crosses itself).
-    pub fn membrane(midline: &[(f64, f64)], thickness: f64, points: usize) -> Result<Self, NsError> {
+    pub fn membrane(
+        midline: &[(f64, f64)],
+        thickness: f64,
+        points: usize,
+    ) -> Result<Self, NsError> {
         if midline.len() < 2 {
             return Err(NsError::BadSection {
                 what: "membrane's number of mid-line samples (at least 2)",
@@ -88,7 +92,9 @@ impl Contour {
             let (p, dp) = spline.eval(s);
             p + Complex64::i() * dp / dp.norm() * (side * half)
         };
-        let cosine = |i: usize| length * 0.5 * (1.0 - (std::f64::consts::PI * i as f64 / per_side as f64).cos());
+        let cosine = |i: usize| {
+            length * 0.5 * (1.0 - (std::f64::consts::PI * i as f64 / per_side as f64).cos())
+        };
         let mut z = Vec::with_capacity(points);
         // Upper surface from the trailing end to the leading end, round
         // the leading end, lower surface back, round the trailing end:
@@ -97,12 +103,24 @@ impl Contour {
             z.push(offset(cosine(i), 1.0));
         }
         let (lead, lead_dir) = spline.eval(0.0);
-        push_semicircle(&mut z, lead, Complex64::i() * lead_dir / lead_dir.norm(), half, end);
+        push_semicircle(
+            &mut z,
+            lead,
+            Complex64::i() * lead_dir / lead_dir.norm(),
+            half,
+            end,
+        );
         for i in 0..=per_side {
             z.push(offset(cosine(i), -1.0));
         }
         let (trail, trail_dir) = spline.eval(length);
-        push_semicircle(&mut z, trail, -Complex64::i() * trail_dir / trail_dir.norm(), half, end);
+        push_semicircle(
+            &mut z,
+            trail,
+            -Complex64::i() * trail_dir / trail_dir.norm(),
+            half,
+            end,
+        );
         let xy: Vec<(f64, f64)> = z.iter().map(|p| (p.re, p.im)).collect();
         Contour::from_points(&xy)
     }
@@ -111,7 +129,13 @@ impl Contour {
 /// The `count` interior points of the counterclockwise half circle of
 /// radius `radius` round `centre` that starts in the unit direction
 /// `start`.
-fn push_semicircle(z: &mut Vec<Complex64>, centre: Complex64, start: Complex64, radius: f64, count: usize) {
+fn push_semicircle(
+    z: &mut Vec<Complex64>,
+    centre: Complex64,
+    start: Complex64,
+    radius: f64,
+    count: usize,
+) {
     for i in 1..=count {
         let phi = std::f64::consts::PI * i as f64 / (count + 1) as f64;
         z.push(centre + start * Complex64::from_polar(radius, phi));
@@ -129,7 +153,11 @@ mod tests {
         let (c, t) = (1.0, 0.02);
         let plate = Contour::flat_plate(c, t, 512).unwrap();
         let exact = c * t + std::f64::consts::PI * t * t / 4.0;
-        assert!((plate.area() - exact).abs() < 1e-4 * exact, "{} {exact}", plate.area());
+        assert!(
+            (plate.area() - exact).abs() < 1e-4 * exact,
+            "{} {exact}",
+            plate.area()
+        );
         assert_eq!(plate.len(), 512);
     }
 

@@ -50,7 +50,11 @@ fn a_figure_eight_is_refused_with_its_crossing() {
         .collect();
     let err = Contour::from_points(&points).unwrap_err();
     let NsError::ContourCrossing {
-        first, second, x, y, ..
+        first,
+        second,
+        x,
+        y,
+        ..
     } = err
     else {
         panic!("{err:?}");
@@ -59,7 +63,10 @@ fn a_figure_eight_is_refused_with_its_crossing() {
     // and t = 3π/2 (points 47 and 48).
     assert_eq!((first, second), (15, 47));
     assert!(x.abs() < 1e-12 && y.abs() < 1e-12, "({x}, {y})");
-    assert!(err.to_string().contains("segment 15 (points 15->16)"), "{err}");
+    assert!(
+        err.to_string().contains("segment 15 (points 15->16)"),
+        "{err}"
+    );
 }
 
 /// A bow-tie: four corners in the wrong order.
@@ -78,7 +85,10 @@ fn a_bow_tie_is_refused_with_its_crossing() {
     let NsError::ContourCrossing { x, y, .. } = err else {
         panic!("{err:?}");
     };
-    assert!((x - 0.5).abs() < 1e-12 && (y - 0.5).abs() < 1e-12, "({x}, {y})");
+    assert!(
+        (x - 0.5).abs() < 1e-12 && (y - 0.5).abs() < 1e-12,
+        "({x}, {y})"
+    );
 }
 
 #[test]
@@ -86,7 +96,10 @@ fn a_nan_point_is_refused_by_index() {
     let mut points = square(3);
     points[5].1 = f64::NAN;
     let err = Contour::from_points(&points).unwrap_err();
-    assert!(matches!(err, NsError::ContourPointNotFinite { index: 5, .. }), "{err:?}");
+    assert!(
+        matches!(err, NsError::ContourPointNotFinite { index: 5, .. }),
+        "{err:?}"
+    );
     points[5].1 = f64::INFINITY;
     assert!(Contour::from_points(&points).is_err());
 }
@@ -98,7 +111,17 @@ fn too_few_repeated_and_flat_contours_are_refused() {
     let mut points = square(3);
     points.insert(4, points[4]);
     let err = Contour::from_points(&points).unwrap_err();
-    assert!(matches!(err, NsError::ContourRepeatedPoint { index: 4, next: 5, .. }), "{err:?}");
+    assert!(
+        matches!(
+            err,
+            NsError::ContourRepeatedPoint {
+                index: 4,
+                next: 5,
+                ..
+            }
+        ),
+        "{err:?}"
+    );
     // Out along a line and back: the way back overlaps the way out.
     let line: Vec<(f64, f64)> = (0..5)
         .map(|k| (f64::from(k), 0.0))
@@ -115,7 +138,17 @@ fn a_spike_is_refused() {
     points.insert(2, (1.0 / 3.0, -1.0));
     points.insert(3, (1.0 / 3.0, -0.5));
     let err = Contour::from_points(&points).unwrap_err();
-    assert!(matches!(err, NsError::ContourCrossing { first: 1, second: 2, .. }), "{err:?}");
+    assert!(
+        matches!(
+            err,
+            NsError::ContourCrossing {
+                first: 1,
+                second: 2,
+                ..
+            }
+        ),
+        "{err:?}"
+    );
 }
 
 /// The distance to the polygon is the distance to its nearest segment.
