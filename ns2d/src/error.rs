@@ -11,6 +11,108 @@ pub enum NsError {
         /// The value given.
         value: f64,
     },
+    /// A section contour with too few distinct points.
+    #[error(
+        "the section contour has {count} distinct points: give at least 8 points round the section"
+    )]
+    ContourTooFewPoints {
+        /// The distinct points given (a closing duplicate not counted).
+        count: usize,
+    },
+    /// A contour point that is not a finite number.
+    #[error(
+        "section contour point {index} is ({x}, {y}): every coordinate must be a finite number"
+    )]
+    ContourPointNotFinite {
+        /// The point's index (from 0, in the order given).
+        index: usize,
+        /// Its x.
+        x: f64,
+        /// Its y.
+        y: f64,
+    },
+    /// Two consecutive contour points that coincide.
+    #[error(
+        "section contour points {index} and {next} coincide at ({x}, {y}): remove the repeated point"
+    )]
+    ContourRepeatedPoint {
+        /// The first point's index (in the order given).
+        index: usize,
+        /// The next point's index.
+        next: usize,
+        /// The point's x.
+        x: f64,
+        /// The point's y.
+        y: f64,
+    },
+    /// The contour crosses (or touches) itself.
+    #[error(
+        "the section contour crosses itself: segment {first} (points {first}->{first_end}) meets \
+         segment {second} (points {second}->{second_end}) near ({x:.6}, {y:.6}); the points must go \
+         once round the section without loops (a figure-eight or bow-tie is not a section): \
+         reorder or remove the points there"
+    )]
+    ContourCrossing {
+        /// The first segment (from point `first` to `first_end`, in the order given).
+        first: usize,
+        /// Its end point.
+        first_end: usize,
+        /// The second segment.
+        second: usize,
+        /// Its end point.
+        second_end: usize,
+        /// Where they meet, x.
+        x: f64,
+        /// Where they meet, y.
+        y: f64,
+    },
+    /// A contour that encloses (next to) no area.
+    #[error(
+        "the section contour encloses an area of {area:.3e} for a perimeter of {perimeter:.3e}: \
+         the points lie on a line; give a closed section of finite thickness"
+    )]
+    ContourDegenerate {
+        /// The enclosed area.
+        area: f64,
+        /// The perimeter.
+        perimeter: f64,
+    },
+    /// A NACA designation that is not four digits with a valid camber position.
+    #[error(
+        "{code:?} is not a NACA 4-digit section: give four digits MPTT (camber M %, its position \
+         P tenths of chord, thickness TT %), P from 1 to 9 when M > 0, TT from 01"
+    )]
+    BadNaca {
+        /// The designation given.
+        code: String,
+    },
+    /// The numerical conformal map did not converge.
+    #[error(
+        "the conformal map of the section did not converge in {iterations} Newton steps (last \
+         boundary correction {correction:.3e} of the perimeter): the contour is too thin or too \
+         sharp for its {points} points; give more points where it turns fast, round its corners, \
+         or thicken it"
+    )]
+    MapNotConverged {
+        /// Newton steps taken.
+        iterations: usize,
+        /// The last correction of the boundary correspondence, over the perimeter.
+        correction: f64,
+        /// The contour's points.
+        points: usize,
+    },
+    /// The fitted Laurent series is not one-to-one outside the unit circle.
+    #[error(
+        "the fitted map with {terms} terms is not one-to-one outside the unit circle (its \
+         derivative has {zeros} zeros there): use more terms, or more points where the contour \
+         turns fast"
+    )]
+    MapNotUnivalent {
+        /// The number of Laurent terms `b_k`.
+        terms: usize,
+        /// Zeros of `F'` counted in `|ζ| > 1` (argument principle).
+        zeros: i64,
+    },
     /// A grid setting out of its working range.
     #[error("grid {what} = {value} is outside {min}..={max}")]
     BadGrid {

@@ -35,16 +35,23 @@
 //! [`cases`] and `tests/`, each beside its reference; `fwav validate
 //! --only ns2d/` runs them at their validated resolutions.
 //!
-//! Not yet here (issue 23 goes on): sections other than circles and
-//! ellipses (a numerical conformal map of a point file or a NACA
-//! section), deformation, the flapping section of the design and its
-//! place behind `fwav aero2d --model ns`.
+//! Any simple closed section ([`Contour`]: points, NACA 4-digit with a
+//! rounded trailing edge, a thin plate or cambered membrane of finite
+//! thickness) gets its map from [`SectionMap::from_contour`] (Wegmann's
+//! Newton method after a Joukowski/circular-arc pre-map; about 2-4 ms for
+//! 256 points on this loaded machine, `examples/fit_timing.rs`).
+//!
+//! Not yet here (issue 23 goes on): deformation (the map recomputed each
+//! step, warm-started), the flapping section of the design and its place
+//! behind `fwav aero2d --model ns`.
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 #![warn(clippy::too_many_lines)]
 
 pub mod cases;
+mod contour;
+mod correspondence;
 mod error;
 mod flow;
 mod grid;
@@ -52,8 +59,10 @@ mod history;
 mod motion;
 mod reference_curve;
 mod section_map;
+mod spline;
 mod stream;
 
+pub use contour::Contour;
 pub use error::NsError;
 pub use flow::{Flow, WallLoads};
 pub use grid::{GridSpec, OGrid, RadialStretch};
