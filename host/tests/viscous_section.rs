@@ -9,12 +9,12 @@ use std::f64::consts::PI;
 
 use fwav::aero2d::case::{Case, SectionModel};
 use fwav::aero2d::motion::Motion;
-use fwav::aero2d::viscous::{ViscousError, ViscousSection};
+use fwav::aero2d::viscous::{ViscousError, ViscousSection, ViscousShape};
 
-/// A 12 % plate on 64 x 64 nodes out to 15 chords.
+/// A 12 % plate with semicircular ends on 64 x 64 nodes out to 15 chords.
 fn coarse_plate() -> ViscousSection {
     ViscousSection {
-        thickness: 0.12,
+        shape: ViscousShape::Plate(0.12),
         around: 64,
         radial: 64,
         outer_chords: 15.0,
@@ -119,7 +119,7 @@ fn viscous_model_refuses_what_it_cannot_take() {
     let e = deforming.run().unwrap_err();
     assert!(e.to_string().contains("deformation"), "{e}");
     let thin = SectionModel::Viscous(ViscousSection {
-        thickness: 0.001,
+        shape: ViscousShape::Plate(0.001),
         ..coarse_plate()
     });
     let e = case(thin, Motion::plunge(1.0, 0.05), 1000.0)
@@ -189,8 +189,18 @@ fn aero2d_runs_the_viscous_model() {
         "{e}"
     );
     assert_eq!(std::fs::read_to_string(&csv).unwrap(), text);
+    let crossing = dir.join("bow-tie.dat");
+    std::fs::write(
+        &crossing,
+        "bow tie\n1 0\n0.75 0.25\n0.5 0\n0.25 -0.25\n0 0\n0.25 0.25\n0.5 0\n0.75 -0.25\n1 0\n",
+    )
+    .unwrap();
     for (bad, says) in [
-        (&["--section", "naca0012"][..], "numerical conformal map"),
+        (&["--section", crossing.to_str().unwrap()][..], "cross"),
+        (
+            &["--section", "naca0012", "--ns-thickness", "0.1"][..],
+            "has its own",
+        ),
         (&["--lesp-critical", "0.2"][..], "--lesp-critical"),
         (&["--ns-thickness", "0.001"][..], "0.005 to 0.3"),
     ] {
@@ -203,4 +213,52 @@ fn aero2d_runs_the_viscous_model() {
     let out = fwav(&["aero2d", "--ns-around", "64"]);
     assert!(String::from_utf8_lossy(&out.stderr).contains("apply to --model ns only"));
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The issue's speed target: one 4-cycle evaluation of the default FWAV
+/// mid-span section (the aerodynamic discipline's, Re 12,300: chord 0.06 m
+/// at 3 m/s; 11 Hz, +-30 deg, stroke plane 90 deg), rigid, as a 4 % plate
+/// at the default resolution (256 x 160), under 60 s on this machine.
+/// Ignored: a benchmark of minutes; run with
+/// `cargo test --release -p fwav --test viscous_section -- --ignored --nocapture`
+/// (`FWAV_NS_CYCLES=0.25` runs part of it, to see the step it takes;
+/// `FWAV_NS_THICKNESS` sets the plate's thickness).
+#[test]
+#[ignore = "benchmark (minutes): the default section's 4-cycle viscous evaluation against the issue's 60 s"]
+fn default_section_four_cycles_benchmark() {
+    use fwav::aero2d::motion::SectionFlapping;
+    use fwav::aero2d::viscous::SectionPath;
+    use fwav::discipline::section::{SectionCase, AIR_KINEMATIC_VISCOSITY};
+    let case = SectionCase::fwav_mid_span();
+    let k = case.reduced_frequency(11.0);
+    let flapping = SectionFlapping {
+        reduced_frequency: k,
+        radius: case.radius / case.chord,
+        amplitude: 30f64.to_radians(),
+        mean_angle: 0.0,
+        stroke_plane: 90f64.to_radians(),
+    };
+    let reynolds = case.flight.speed * case.chord / AIR_KINEMATIC_VISCOSITY;
+    let thickness: f64 = std::env::var("FWAV_NS_THICKNESS").map_or(0.04, |v| v.parse().unwrap());
+    let cycles: f64 = std::env::var("FWAV_NS_CYCLES").map_or(4.0, |v| v.parse().unwrap());
+    let section = ViscousSection::plate(thickness);
+    let cells = section.around * section.radial;
+    let clock = std::time::Instant::now();
+    let run = section
+        .run(SectionPath::Flapping(flapping), reynolds, cycles * PI / k)
+        .unwrap();
+    let seconds = clock.elapsed().as_secs_f64();
+    let n = run.history.time.len();
+    let last = n.min(400);
+    let mean = |v: &[f64]| v[n - last..].iter().sum::<f64>() / last as f64;
+    println!(
+        "Re {reynolds:.0}, k {k:.3}, plate {thickness}, {cycles} cycles: {seconds:.1} s, {} steps \
+         (last dt {:.2e}), {:.1} ns per cell per step; last two cycles: CT {:.4}, CP {:.4}",
+        run.steps,
+        run.dt,
+        1e9 * seconds / (cells as f64 * run.steps as f64),
+        mean(&run.history.ct),
+        mean(&run.history.cp)
+    );
+    assert!(seconds < 60.0, "{seconds:.1} s");
 }

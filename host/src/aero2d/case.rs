@@ -22,7 +22,10 @@ use super::panel::{
     PanelError, PanelSettings, PanelSolver, SectionShape, ShapeError, ShapeHistory,
 };
 use super::theory::garrick_plunge;
-use super::viscous::{SectionPath, ViscousError, ViscousSection};
+use super::viscous::{
+    SectionPath, ViscousError, ViscousSection, ViscousShape, NACA_TRAILING_EDGE_RADIUS,
+};
+use fwav_ns2d::Contour;
 
 /// Fewest chord stations a thin section's deformation is resampled onto.
 const MIN_CAMBER_STATIONS: usize = 21;
@@ -239,6 +242,38 @@ impl SectionModel {
             }
         };
         Ok(Self::Thick(SectionShape::new(&points)?))
+    }
+
+    /// The section a name means to the viscous model: `flat` (a plate of
+    /// `plate_thickness` chords with semicircular ends), a NACA 4-digit
+    /// name (its trailing edge rounded by
+    /// [`NACA_TRAILING_EDGE_RADIUS`]), or a point file (any closed
+    /// contour, chords; a sharp corner must be rounded by the file, a
+    /// corner has no conformal map).
+    pub fn named_viscous(name: &str, plate_thickness: f64) -> Result<ViscousShape, CaseError> {
+        if name == "flat" {
+            return Ok(ViscousShape::Plate(plate_thickness));
+        }
+        match name.parse::<Naca4>() {
+            Ok(_) => {
+                let digits: String = name.chars().filter(char::is_ascii_digit).collect();
+                let contour = Contour::naca4(&digits, 512, NACA_TRAILING_EDGE_RADIUS)
+                    .map_err(ViscousError::from)?;
+                Ok(ViscousShape::Contour(
+                    contour.points().iter().map(|z| (z.re, z.im)).collect(),
+                ))
+            }
+            Err(naca) => {
+                let path = Path::new(name);
+                if !path.exists() {
+                    return Err(CaseError::SectionName {
+                        name: name.to_string(),
+                        naca,
+                    });
+                }
+                Ok(ViscousShape::Contour(read_points(path)?.points))
+            }
+        }
     }
 
     /// Whether it is the thin line.

@@ -11,9 +11,10 @@
 //! include the wall's friction: the thrust is net of it, and the run's
 //! friction history is zero (the inviscid models' estimate is not added).
 //!
-//! Sections: `flat` is a thin plate of a chosen thickness with elliptic
-//! ends (the conformal map is exact); other contours wait for the
-//! solver's numerical map (issue 23 goes on).
+//! Sections ([`ViscousShape`]): a thin plate of a chosen thickness with
+//! semicircular ends (the model of a membrane), any closed contour (a
+//! NACA section with its trailing edge rounded, a point file), both by the
+//! solver's numerical conformal map, or an ellipse (exact map).
 //!
 //! The time step is the largest the explicit advection allows
 //! ([`fwav_ns2d::Flow::stable_dt`]), checked as the flow develops and
@@ -22,7 +23,7 @@
 //! at a fixed interval by linear interpolation between steps, so the
 //! cycle means of [`super::history`] see uniform samples.
 
-use fwav_ns2d::{Complex64, Flow, FrameState, GridSpec, NsError, SectionMap};
+use fwav_ns2d::{Complex64, Contour, Flow, FrameState, GridSpec, NsError, SectionMap};
 
 use super::history::History;
 use super::ldvm::FreeVortex;
@@ -47,32 +48,53 @@ const PICTURE_RADIUS: f64 = 6.0;
 /// Steps a run may take before it is refused as beyond this machine.
 pub const MAX_VISCOUS_STEPS: usize = 2_000_000;
 
+/// The section of the viscous model, chords, leading edge at `x = 0`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ViscousShape {
+    /// A thin plate of this thickness (chords) with semicircular ends,
+    /// `x` from 0 to 1 over all: the model of a thin section or membrane.
+    Plate(f64),
+    /// An ellipse of this thickness (chords) along the chord (the exact
+    /// Joukowski map; its ends crowd the grid far more than the plate's).
+    Ellipse(f64),
+    /// A closed contour (a NACA section with its trailing edge rounded, a
+    /// point file), chords.
+    Contour(Vec<(f64, f64)>),
+}
+
 /// The viscous model's section and resolution.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct ViscousSection {
-    /// Thickness of the plate modelling the thin section, chords.
-    pub thickness: f64,
+    /// The section.
+    pub shape: ViscousShape,
     /// Nodes round the section.
     pub around: usize,
     /// Nodes from the wall to the outer boundary.
     pub radial: usize,
     /// Outer boundary, chords from the pivot.
     pub outer_chords: f64,
-    /// First cell at the wall at mid-chord, in boundary-layer thicknesses
+    /// First cell at the wall where the grid is coarsest along it
+    /// (mid-chord of a thin section), in boundary-layer thicknesses
     /// `c / sqrt(Re)`.
     pub first_cell_layers: f64,
 }
+
+/// Radius of the circle that rounds a NACA section's trailing edge for
+/// the viscous model, chords (a corner has no conformal map).
+pub const NACA_TRAILING_EDGE_RADIUS: f64 = 0.005;
+
+/// Points on a NACA section or a plate's contour for the map's fit.
+const CONTOUR_POINTS: usize = 512;
 
 impl ViscousSection {
     /// Default thickness of the thin plate, chords.
     pub const DEFAULT_THICKNESS: f64 = 0.04;
 
-    /// The default resolution round a plate of `thickness` chords: 256
-    /// nodes round, 160 out to 30 chords, first cell a tenth of the
-    /// boundary layer's thickness.
-    pub fn plate(thickness: f64) -> Self {
+    /// The default resolution round `shape`: 256 nodes round, 160 out to
+    /// 30 chords, first cell a tenth of the boundary layer's thickness.
+    pub fn new(shape: ViscousShape) -> Self {
         Self {
-            thickness,
+            shape,
             around: 256,
             radial: 160,
             outer_chords: 30.0,
@@ -80,17 +102,51 @@ impl ViscousSection {
         }
     }
 
+    /// A plate of `thickness` chords at the default resolution.
+    pub fn plate(thickness: f64) -> Self {
+        Self::new(ViscousShape::Plate(thickness))
+    }
+
     /// The conformal map of the section, the pitch axis `pivot` (chords
     /// from the leading edge) at the origin.
-    fn map(&self, pivot: f64) -> Result<SectionMap, NsError> {
-        SectionMap::ellipse(0.5, 0.5 * self.thickness, (0.5 - pivot, 0.0))
+    fn map(&self, pivot: f64) -> Result<SectionMap, ViscousError> {
+        let terms = self.around / 2;
+        let shifted = |points: &[(f64, f64)]| -> Vec<(f64, f64)> {
+            points.iter().map(|&(x, y)| (x - pivot, y)).collect()
+        };
+        let contour = match &self.shape {
+            ViscousShape::Ellipse(t) | ViscousShape::Plate(t) if !(0.005..=0.3).contains(t) => {
+                return Err(ViscousError::Thickness(*t))
+            }
+            ViscousShape::Ellipse(t) => {
+                return Ok(SectionMap::ellipse(0.5, 0.5 * t, (0.5 - pivot, 0.0))?)
+            }
+            ViscousShape::Plate(t) => {
+                let plate = Contour::flat_plate(1.0 - t, *t, CONTOUR_POINTS)?;
+                let points: Vec<(f64, f64)> = plate
+                    .points()
+                    .iter()
+                    .map(|z| (z.re + 0.5 * t, z.im))
+                    .collect();
+                Contour::from_points(&shifted(&points))?
+            }
+            ViscousShape::Contour(points) => Contour::from_points(&shifted(points))?,
+        };
+        Ok(SectionMap::from_contour(&contour, terms)?)
     }
 
     /// The grid of this resolution for the map `map` at `reynolds`.
     fn grid(&self, map: &SectionMap, reynolds: f64) -> GridSpec {
-        // Physical height of the first cell at mid-chord over its height
-        // in ξ is |∂z/∂ξ| there, |a| + |b_1| = 0.5 for the plate.
-        let first = self.first_cell_layers / reynolds.sqrt() / 0.5;
+        // The first cell's physical height over its height in ξ is
+        // |∂z/∂ξ| at the wall: sized where that is largest.
+        let stretch = (0..64)
+            .map(|k| {
+                let theta = f64::from(k) * std::f64::consts::TAU / 64.0;
+                map.radial_derivative(Complex64::from_polar(1.0, theta))
+                    .norm()
+            })
+            .fold(0.0, f64::max);
+        let first = self.first_cell_layers / reynolds.sqrt() / stretch;
         GridSpec {
             around: self.around,
             radial: self.radial,
@@ -122,8 +178,8 @@ pub enum ViscousError {
     #[error(
         "the stable time step fell to {dt:.2e} chords travelled at t = {time:.3} \
          ({steps} steps for the run at that step, more than {max}): the motion is too fast for \
-         this grid's cells at the section's edges; choose a thicker plate (--ns-thickness), \
-         fewer nodes round the section, or a gentler motion"
+         this grid's cells at the section's edges; choose a thicker or blunter section \
+         (--ns-thickness), fewer nodes round it, or a gentler motion"
     )]
     TooManySteps {
         /// The time step reached.
@@ -183,9 +239,6 @@ impl ViscousSection {
         reynolds: f64,
         duration: f64,
     ) -> Result<ViscousRun, ViscousError> {
-        if !(0.005..=0.3).contains(&self.thickness) {
-            return Err(ViscousError::Thickness(self.thickness));
-        }
         let map = self.map(path.pivot())?;
         let spec = self.grid(&map, reynolds);
         let mut flow = Flow::new(&map, spec, path, 1.0 / reynolds)?;

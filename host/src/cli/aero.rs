@@ -17,11 +17,13 @@ use fwav::output::section_plot::draw;
 pub struct Aero2dArgs {
     /// The flow model: `inviscid` (the section chooses: LDVM for `flat`,
     /// the panel method for a contour) or `ns` (laminar Navier–Stokes at
-    /// `--reynolds`; `flat` is a thin plate of `--ns-thickness`).
+    /// `--reynolds`; `flat` is a thin plate of `--ns-thickness`, a NACA
+    /// section has its trailing edge rounded, a point file may be any
+    /// closed contour without corners).
     #[arg(long, value_enum, default_value_t = FlowModel::Inviscid)]
     pub model: FlowModel,
     /// Thickness of the plate that models a `flat` section in the
-    /// Navier–Stokes model, chords (elliptic edges).
+    /// Navier–Stokes model, chords (semicircular edges).
     #[arg(long, default_value_t = ViscousSection::DEFAULT_THICKNESS)]
     pub ns_thickness: f64,
     /// Grid nodes round the section in the Navier–Stokes model (even, 16
@@ -118,11 +120,12 @@ fn check(a: &Aero2dArgs) -> Result<()> {
     if a.model != FlowModel::Ns && ns_options {
         bail!("--ns-thickness, --ns-around and --ns-radial apply to --model ns only");
     }
-    if a.model == FlowModel::Ns && a.section != "flat" {
+    if a.model == FlowModel::Ns
+        && a.section != "flat"
+        && a.ns_thickness != ViscousSection::DEFAULT_THICKNESS
+    {
         bail!(
-            "--model ns takes `--section flat` (a thin plate of --ns-thickness) only for now: \
-             NACA sections and point files need the solver's numerical conformal map, which \
-             is not built yet; use the inviscid model for {}",
+            "--ns-thickness is the thickness of `--section flat`'s plate; {} has its own",
             a.section
         );
     }
@@ -167,7 +170,9 @@ fn check(a: &Aero2dArgs) -> Result<()> {
 fn case(a: &Aero2dArgs) -> Result<Case> {
     let section = match a.model {
         FlowModel::Ns => {
-            let plate = ViscousSection::plate(a.ns_thickness);
+            let shape = SectionModel::named_viscous(&a.section, a.ns_thickness)
+                .with_context(|| format!("--section {}", a.section))?;
+            let plate = ViscousSection::new(shape);
             SectionModel::Viscous(ViscousSection {
                 around: a.ns_around.unwrap_or(plate.around),
                 radial: a.ns_radial.unwrap_or(plate.radial),
@@ -303,14 +308,24 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
             (Some(eta), Some(net)) => format!("{eta:.3} (net {net:.3})"),
             _ => UNDEFINED_EFFICIENCY.to_string(),
         };
+        let viscous = matches!(case.section, SectionModel::Viscous(_));
+        let ct_note = if viscous {
+            format!("friction included, Re {:.0}", a.reynolds)
+        } else {
+            format!("net of friction {net:.5}, Re {:.0}", a.reynolds)
+        };
         println!(
-            "  last cycle: CL {:.4}  CT {:.5} (net of friction {net:.5}, Re {:.0})  CP {:.5}  efficiency {efficiency}",
-            m.cl, m.ct, a.reynolds, m.cp
+            "  last cycle: CL {:.4}  CT {:.5} ({ct_note})  CP {:.5}  efficiency {efficiency}",
+            m.cl, m.ct, m.cp
         );
+        let shed = if viscous {
+            String::new()
+        } else {
+            format!("; {lev_count} leading-edge vortices shed")
+        };
         println!(
-            "  CT change from the cycle before: {:+.2} %; {} leading-edge vortices shed",
-            100.0 * m.periodicity,
-            lev_count
+            "  CT change from the cycle before: {:+.2} %{shed}",
+            100.0 * m.periodicity
         );
         if let Some((gct, gcp, geta)) = garrick {
             let geta = if gcp == 0.0 {
