@@ -151,7 +151,11 @@ impl<M: Motion> Flow<M> {
         let widths = (0..nr)
             .map(|j| {
                 let below = if j == 0 { grid.xi[0] } else { grid.xi[j - 1] };
-                let above = if j + 1 == nr { grid.xi[j] } else { grid.xi[j + 1] };
+                let above = if j + 1 == nr {
+                    grid.xi[j]
+                } else {
+                    grid.xi[j + 1]
+                };
                 0.5 * (above - below)
             })
             .collect();
