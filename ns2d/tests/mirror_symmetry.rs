@@ -56,9 +56,9 @@ fn forces<M: Motion>(motion: M, until: f64) -> Vec<(f64, Complex64)> {
 }
 
 /// Wang's hovering stroke and its mirror image over two periods (64 x 48,
-/// dt = 0.002 c/U: about 3 s): the mirrored run's force is the mirror
-/// image of the first's at every step, `Fx -> -Fx`, `Fy -> Fy` (measured:
-/// 3.5e-11 of the peak). And the second period's half-strokes differ:
+/// dt = 0.002 c/U: 4 s): the mirrored run's force is the mirror image of
+/// the first's at every step, `Fx -> -Fx`, `Fy -> Fy` (measured: 4.4e-11
+/// ½ρU²c at worst over two periods, the peak being about 2.3). And the second period's half-strokes differ:
 /// the one against the first stroke's direction lifts about half as much
 /// again (measured 1.45 against 0.93 in units of ½ρU²c; Eldredge 2007:
 /// 1.30 against 0.87 and Li et al. 2015: 1.32 against 0.80, in units of
