@@ -88,8 +88,9 @@ fn the_cylinder_wake_at_re_200_sheds_as_braza_found() {
 /// Koumoutsakos & Leonard (1995) at Re 3000: CD within 5% over U t/R in
 /// [0.5, 3].
 #[test]
-#[ignore = "fails, and heavy (about 2 min): 6.0% at U t/R = 2.95 on 512 x 320 (8.5% on \
-            384 x 256, 13% on 256 x 192: converging with the grid, within 2% up to U t/R = 2.4)"]
+#[ignore = "heavy (about 70 s); passes: 3.9% at U t/R = 0.61 on 512 x 320 (6.0% at 2.95 before the \
+            advection was conservative); 3.1% on 384 x 256, dt = 0.001, and on 256 x 192, \
+            dt = 0.002 (13.3% there before; dt = 0.004 diverges on that grid, then and now)"]
 fn the_impulsively_started_cylinder_at_re_3000_drags_as_koumoutsakos_and_leonard_found() {
     let resolution = Resolution {
         grid: GridSpec {
