@@ -199,8 +199,17 @@ impl HoveringEllipse {
         }
     }
 
+    /// The peak of the quasi-steady lift the published curves are
+    /// normalized by, over `½ ρ U_max² c`: Dickinson's fit
+    /// `CL = 1.2 sin 2α` at `α = 45°` and `U_max`, which is mid-stroke
+    /// (Wang, Birch & Dickinson 2004; the normalization of the curves of
+    /// Eldredge 2007 and Li et al. 2015 as distributed with PetIBM).
+    pub const QUASI_STEADY_PEAK_LIFT: f64 = 1.2;
+
     /// Run the case at `resolution`: `(t / T, CL)` after every step, the
-    /// lift being the force across the stroke over `½ ρ U_max² c`.
+    /// lift being the force across the stroke over the quasi-steady peak
+    /// lift `1.2 · ½ ρ U_max² c` ([`Self::QUASI_STEADY_PEAK_LIFT`]), as in
+    /// the published curves.
     ///
     /// # Errors
     /// The solver's.
@@ -210,7 +219,7 @@ impl HoveringEllipse {
         let speed = stroke.peak_speed();
         let mut flow = Flow::new(&map, resolution.grid, stroke, speed / self.reynolds)?;
         let period = 1.0 / stroke.frequency;
-        let scale = 2.0 / (speed * speed);
+        let scale = 2.0 / (speed * speed * Self::QUASI_STEADY_PEAK_LIFT);
         let mut lift = Vec::new();
         while flow.time() < self.periods * period {
             flow.step(resolution.dt)?;

@@ -15,6 +15,8 @@ pub struct WakeStatistics {
     pub drag: f64,
     /// Lift amplitude, half the peak-to-peak.
     pub lift_amplitude: f64,
+    /// Mean lift coefficient (zero for a wake symmetric on average).
+    pub lift_mean: f64,
     /// Shedding frequency times the reference length over the speed
     /// (from the lift's upward zero crossings).
     pub strouhal: f64,
@@ -51,6 +53,7 @@ impl ForceHistory {
             return WakeStatistics {
                 drag: f64::NAN,
                 lift_amplitude: f64::NAN,
+                lift_mean: f64::NAN,
                 strouhal: f64::NAN,
                 periods: 0,
             };
@@ -60,17 +63,18 @@ impl ForceHistory {
         let whole: Vec<&&(f64, Complex64)> =
             tail.iter().filter(|s| s.0 >= start && s.0 <= end).collect();
         // Trapezoidal mean over the whole periods.
-        let mut area = 0.0;
+        let mut area = Complex64::new(0.0, 0.0);
         for pair in whole.windows(2) {
-            area += 0.5 * (pair[0].1.re + pair[1].1.re) * (pair[1].0 - pair[0].0);
+            area += 0.5 * (pair[0].1 + pair[1].1) * (pair[1].0 - pair[0].0);
         }
         let (high, low) = whole.iter().fold((f64::MIN, f64::MAX), |(h, l), s| {
             (h.max(s.1.im), l.min(s.1.im))
         });
         let span = whole[whole.len() - 1].0 - whole[0].0;
         WakeStatistics {
-            drag: area / span,
+            drag: area.re / span,
             lift_amplitude: 0.5 * (high - low),
+            lift_mean: area.im / span,
             strouhal: periods as f64 / (end - start),
             periods,
         }
@@ -81,8 +85,8 @@ impl ForceHistory {
 mod tests {
     use super::*;
 
-    /// A made-up periodic history: CD = 1.3 + 0.01 cos(4πft), CL = 0.3
-    /// sin(2πft), f = 0.2: the statistics are read back.
+    /// A made-up periodic history: CD = 1.3 + 0.01 cos(4πft), CL = 0.05 +
+    /// 0.3 sin(2πft), f = 0.2: the statistics are read back.
     #[test]
     fn the_statistics_of_a_sine_are_its_parameters() {
         let mut h = ForceHistory::default();
@@ -92,13 +96,14 @@ mod tests {
             let w = std::f64::consts::TAU * f * t;
             h.push(
                 t,
-                Complex64::new(1.3 + 0.01 * (2.0 * w).cos(), 0.3 * w.sin() + 1e-9),
+                Complex64::new(1.3 + 0.01 * (2.0 * w).cos(), 0.05 + 0.3 * w.sin()),
             );
         }
         let s = h.wake_statistics(20.0);
         assert!((s.strouhal - f).abs() < 1e-6, "{s:?}");
         assert!((s.drag - 1.3).abs() < 1e-5, "{s:?}");
         assert!((s.lift_amplitude - 0.3).abs() < 1e-4, "{s:?}");
-        assert_eq!(s.periods, 14);
+        assert!((s.lift_mean - 0.05).abs() < 1e-5, "{s:?}");
+        assert_eq!(s.periods, 15);
     }
 }

@@ -46,6 +46,16 @@ impl ReferenceCurve {
         self.points.iter().map(|p| p.1.abs()).fold(0.0, f64::max)
     }
 
+    /// The largest `|y|` of the points with `x` in `range` (0 for none).
+    #[must_use]
+    pub fn peak_in(&self, range: (f64, f64)) -> f64 {
+        self.points
+            .iter()
+            .filter(|p| p.0 >= range.0 && p.0 <= range.1)
+            .map(|p| p.1.abs())
+            .fold(0.0, f64::max)
+    }
+
     /// The largest deviation of `computed` (interpolated) from the points
     /// with `x` in `range`, each divided by `scale(y)`, and the `x` where
     /// it is: `scale = |y|` for relative errors, the peak for errors as a
@@ -88,6 +98,7 @@ mod tests {
         let (worst, x) = curve.worst_deviation(&computed, (0.0, 2.0), |_| curve.peak());
         // At x = 1 the computed line is 2.6 against 2: 0.6 of the peak 4.
         assert!((worst - 0.15).abs() < 1e-12 && x == 1.0, "{worst} at {x}");
+        assert_eq!(curve.peak_in((0.0, 1.5)), 2.0);
         assert!(matches!(
             ReferenceCurve::parse("1 2\nx 3\n"),
             Err(NsError::BadReferenceRow(_))

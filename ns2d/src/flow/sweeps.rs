@@ -11,35 +11,49 @@ use crate::motion::Motion;
 impl<M: Motion> Flow<M> {
     /// The explicit parts of `dω/dt` at the interior nodes: advection into
     /// `self.rate`, diffusion round the section into
-    /// `self.theta_diffusion` (wall and outer rows zero); rows in parallel.
+    /// `self.theta_diffusion` (wall and outer rows zero), and the
+    /// circulation advected out through the outer face per unit time into
+    /// `self.outflow_rate`; rows in parallel.
     pub(super) fn explicit_rate(&mut self) {
         let g = &self.grid;
         let (nt, nr) = (g.nt, g.nr);
         for (i, r) in self.relative.iter_mut().enumerate() {
             *r = self.psi[i] - self.frame_psi[i];
         }
-        let w = &self.omega;
-        let rel = &self.relative;
+        let widths = &self.widths;
         let rows = RateRows {
             nt,
             nr,
-            d_eta: g.d_eta,
             d_theta: g.d_theta,
             viscosity: self.viscosity,
+            w: &self.omega,
+            rel: &self.relative,
+            widths,
         };
         self.rate
             .par_chunks_mut(nt)
             .zip(self.theta_diffusion.par_chunks_mut(nt))
             .enumerate()
-            .for_each(|(j, (out, diffusion))| {
-                if j == 0 || j == nr - 1 {
-                    out.fill(0.0);
-                    diffusion.fill(0.0);
-                } else {
-                    let inv_jac = &g.inv_jac[j * nt..(j + 1) * nt];
-                    rows.row(j, w, rel, inv_jac, g.slope[j], (out, diffusion));
-                }
-            });
+            .for_each_init(
+                || vec![0.0; 5 * nt],
+                |scratch, (j, (out, diffusion))| {
+                    if j == 0 || j == nr - 1 {
+                        out.fill(0.0);
+                        diffusion.fill(0.0);
+                    } else {
+                        let inv_jac = &g.inv_jac[j * nt..(j + 1) * nt];
+                        rows.row(j, inv_jac, scratch, (out, diffusion));
+                    }
+                },
+            );
+        // What leaves through the outer face (rings nr - 2 and nr - 1).
+        let mut corners = std::mem::take(&mut self.outer_corners);
+        let mut fluxes = std::mem::take(&mut self.outer_fluxes);
+        rows.corners(nr - 2, &mut corners);
+        rows.radial_fluxes(nr - 2, &corners, &mut fluxes);
+        self.outflow_rate = fluxes.iter().sum();
+        self.outer_corners = corners;
+        self.outer_fluxes = fluxes;
     }
 
     /// The second ADI sweep: `(1 - dt/2 D_θ) ω = ω* - dt/2 D_θ ω_old` on
@@ -181,75 +195,130 @@ fn solve_periodic(sigma: &[f64], b: &mut [f64], upper: &mut [f64], z: &mut [f64]
     }
 }
 
-/// The explicit rates of one ring: advection by third-order upwind
-/// differences, and diffusion round the section by central differences
-/// (apart: the step treats it implicitly).
-struct RateRows {
-    nt: usize,
-    nr: usize,
-    d_eta: f64,
-    d_theta: f64,
-    viscosity: f64,
+/// The explicit rates of one ring: advection in conservative form, by
+/// third-order upwind-biased face values and face fluxes that are
+/// differences of the relative streamfunction at the cell corners (so the
+/// fluxes round every cell sum to zero exactly, none crosses the wall, and
+/// the fluid's circulation changes by advection only through the outer
+/// face); diffusion round the section by central differences (apart: the
+/// step treats it implicitly).
+pub(super) struct RateRows<'a> {
+    pub(super) nt: usize,
+    pub(super) nr: usize,
+    pub(super) d_theta: f64,
+    pub(super) viscosity: f64,
+    /// The vorticity and the relative streamfunction at all nodes.
+    pub(super) w: &'a [f64],
+    pub(super) rel: &'a [f64],
+    /// The cell widths in `ξ` of [`Flow::circulation`]'s trapezoid.
+    pub(super) widths: &'a [f64],
 }
 
-impl RateRows {
-    /// Ring `j` (`1 <= j < nr - 1`) of `dω/dt` into `out`, from the
-    /// vorticity `w`, the relative streamfunction `rel` and the ring's
-    /// `1/J` and `g'`.
-    fn row(
+impl RateRows<'_> {
+    /// Ring `j` of the nodes' values `f`.
+    fn ring<'b>(&self, f: &'b [f64], j: usize) -> &'b [f64] {
+        &f[j * self.nt..(j + 1) * self.nt]
+    }
+
+    /// The relative streamfunction at the corners `(j + ½, k + ½)` of ring
+    /// `j` (`j + 1` is a ring; the wall's corners for `j` = `usize::MAX`
+    /// are the wall's own values, so no flux crosses it) into `out`.
+    fn corners(&self, j: usize, out: &mut [f64]) {
+        let nt = self.nt;
+        if j == usize::MAX {
+            let wall = self.ring(self.rel, 0);
+            for (k, c) in out.iter_mut().enumerate() {
+                *c = 0.5 * (wall[k] + wall[(k + 1) % nt]);
+            }
+            return;
+        }
+        let (a, b) = (self.ring(self.rel, j), self.ring(self.rel, j + 1));
+        for (k, c) in out.iter_mut().enumerate() {
+            let kp = if k + 1 == nt { 0 } else { k + 1 };
+            *c = 0.25 * (a[k] + a[kp] + b[k] + b[kp]);
+        }
+    }
+
+    /// The outward advective flux of circulation through the face between
+    /// rings `j` and `j + 1` at each `k` (`corners` those of [`Self::corners`]
+    /// for `j`), into `out`.
+    pub(super) fn radial_fluxes(&self, j: usize, corners: &[f64], out: &mut [f64]) {
+        let nt = self.nt;
+        let w = self.w;
+        for (k, f) in out.iter_mut().enumerate() {
+            let km = if k == 0 { nt - 1 } else { k - 1 };
+            let q = corners[k] - corners[km];
+            let at = |jj: usize| w[jj * nt + k];
+            let value = if q >= 0.0 {
+                match j.checked_sub(1) {
+                    Some(jm) => upwind_face(at(jm), at(j), at(j + 1)),
+                    None => at(j),
+                }
+            } else if j + 2 < self.nr {
+                upwind_face(at(j + 2), at(j + 1), at(j))
+            } else {
+                at(j + 1)
+            };
+            *f = q * value;
+        }
+    }
+
+    /// Ring `j` (`1 <= j < nr - 1`) of `dω/dt` into `out` and of the
+    /// diffusion round the section into `diffusion`; `inv_jac` the ring's
+    /// `1/J`, `scratch` five work rings.
+    pub(super) fn row(
         &self,
         j: usize,
-        w: &[f64],
-        rel: &[f64],
         inv_jac: &[f64],
-        slope: f64,
+        scratch: &mut [f64],
         (out, diffusion): (&mut [f64], &mut [f64]),
     ) {
         let nt = self.nt;
-        let ring = |jj: usize| &w[jj * nt..(jj + 1) * nt];
-        let (w0, wm, wp) = (ring(j), ring(j - 1), ring(j + 1));
-        let far = (j >= 2 && j + 2 < self.nr).then(|| (ring(j - 2), ring(j + 2)));
-        let (r0, rm, rp) = (
-            &rel[j * nt..(j + 1) * nt],
-            &rel[(j - 1) * nt..j * nt],
-            &rel[(j + 1) * nt..(j + 2) * nt],
-        );
-        let (half_de, half_dt) = (0.5 / self.d_eta, 0.5 / self.d_theta);
-        let (inv_de, inv_dt, inv_dt2) = (
-            1.0 / self.d_eta,
-            1.0 / self.d_theta,
-            1.0 / (self.d_theta * self.d_theta),
-        );
-        let inv_slope = 1.0 / slope;
-        for k in 0..nt {
-            let kp = if k + 1 == nt { 0 } else { k + 1 };
+        let (lower, rest) = scratch.split_at_mut(nt);
+        let (upper, rest) = rest.split_at_mut(nt);
+        let (flux_in, rest) = rest.split_at_mut(nt);
+        let (flux_out, flux_theta) = rest.split_at_mut(nt);
+        self.corners(j, upper);
+        if j == 1 {
+            self.corners(usize::MAX, lower);
+            flux_in.fill(0.0);
+        } else {
+            self.corners(j - 1, lower);
+            self.radial_fluxes(j - 1, lower, flux_in);
+        }
+        self.radial_fluxes(j, upper, flux_out);
+        let w0 = self.ring(self.w, j);
+        // Round the ring: the face k + ½ between nodes k and k + 1.
+        for (k, f) in flux_theta.iter_mut().enumerate() {
             let km = if k == 0 { nt - 1 } else { k - 1 };
+            let kp = if k + 1 == nt { 0 } else { k + 1 };
             let kpp = if kp + 1 == nt { 0 } else { kp + 1 };
-            let kmm = if km == 0 { nt - 1 } else { km - 1 };
-            let scale = inv_jac[k] * inv_slope;
-            let u_eta = (r0[kp] - r0[km]) * half_dt * scale;
-            let u_theta = -(rp[k] - rm[k]) * half_de * scale;
-            let th = [w0[kmm], w0[km], w0[k], w0[kp], w0[kpp]];
-            let adv_t = u_theta * upwind3(th, u_theta) * inv_dt;
-            let adv_e = match far {
-                Some((wmm, wpp)) => {
-                    u_eta * upwind3([wmm[k], wm[k], w0[k], wp[k], wpp[k]], u_eta) * inv_de
-                }
-                None => u_eta * (wp[k] - wm[k]) * half_de,
+            let q = lower[k] - upper[k];
+            let value = if q >= 0.0 {
+                upwind_face(w0[km], w0[k], w0[kp])
+            } else {
+                upwind_face(w0[kpp], w0[kp], w0[k])
             };
-            let w_tt = (th[3] - 2.0 * th[2] + th[1]) * inv_dt2;
+            *f = q * value;
+        }
+        let inv_area = 1.0 / (self.widths[j] * self.d_theta);
+        let inv_dt2 = 1.0 / (self.d_theta * self.d_theta);
+        for k in 0..nt {
+            let km = if k == 0 { nt - 1 } else { k - 1 };
+            let kp = if k + 1 == nt { 0 } else { k + 1 };
+            let divergence = flux_out[k] - flux_in[k] + flux_theta[k] - flux_theta[km];
+            out[k] = -divergence * inv_area * inv_jac[k];
+            let w_tt = (w0[kp] - 2.0 * w0[k] + w0[km]) * inv_dt2;
             diffusion[k] = self.viscosity * inv_jac[k] * w_tt;
-            out[k] = -adv_t - adv_e;
         }
     }
 }
 
-/// `Δ·∂f/∂x` by third-order upwind differences on five equispaced values
-/// `[f_{-2}, f_{-1}, f_0, f_1, f_2]` for the advection speed `u`.
-fn upwind3(f: [f64; 5], u: f64) -> f64 {
-    let central = (-f[4] + 8.0 * f[3] - 8.0 * f[1] + f[0]) / 12.0;
-    let dissipation = (f[4] - 4.0 * f[3] + 6.0 * f[2] - 4.0 * f[1] + f[0]) / 12.0;
-    central + u.signum() * dissipation
+/// The third-order upwind-biased value at the face between `near` and
+/// `far`, the flow going from `near` to `far` and `behind` the node
+/// upstream of `near`: `(-behind + 5 near + 2 far)/6`.
+fn upwind_face(behind: f64, near: f64, far: f64) -> f64 {
+    (-behind + 5.0 * near + 2.0 * far) / 6.0
 }
 
 #[cfg(test)]
