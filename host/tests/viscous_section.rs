@@ -46,9 +46,10 @@ fn case(section: SectionModel, motion: Motion, reynolds: f64) -> Case {
 ///   0.084), so the mean CT is a drag: negative;
 /// - the mirror image (the plunge of opposite sign) has the mirrored loads
 ///   at every sample: the lift reversed, the thrust and power the same, to
-///   1e-3 of the lift's amplitude (the start-up transient gives the
-///   second period a mean lift: measured +0.046 of an amplitude 0.34, so
-///   a zero mean is no test; mirroring is exact, transient included).
+///   1e-3 of the lift's amplitude (measured 4e-9 of 0.32). A zero mean
+///   lift would be a weaker test: it is the mirror test's consequence, and
+///   before the advection conserved circulation the second period's mean
+///   lift here was +0.046 of an amplitude 0.37 (now 2e-4 of 0.32).
 #[test]
 fn plunging_plate_loads_keep_the_inviscid_models_conventions() {
     let (k, h0) = (1.0, 0.05);

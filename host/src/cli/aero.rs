@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
-use fwav::aero2d::case::{Case, SectionModel, PERIODIC_CHANGE};
+use fwav::aero2d::case::{Case, CaseRun, SectionModel, PERIODIC_CHANGE};
 use fwav::aero2d::friction::FWAV_REYNOLDS;
 use fwav::aero2d::motion::Motion;
 use fwav::aero2d::viscous::ViscousSection;
@@ -213,6 +213,61 @@ fn model_name(section: &SectionModel) -> &'static str {
     }
 }
 
+/// The result as text for a person.
+fn print_text(a: &Aero2dArgs, case: &Case, run: &CaseRun) {
+    let m = run.means();
+    let net = m.net_ct();
+    let k = a.reduced_frequency;
+    let lev_count = run.leading_edge_vortices;
+    let garrick = case.garrick();
+    println!(
+        "{} section ({}), k = {k}, h0 = {} c, pitch {} +- {} deg, {} cycles (dt {:.4} c/U){}",
+        a.section,
+        model_name(&case.section),
+        a.plunge_amplitude,
+        a.mean_pitch_deg,
+        a.pitch_amplitude_deg,
+        a.cycles,
+        run.dt,
+        if a.deformation.is_some() {
+            ", deforming"
+        } else {
+            ""
+        }
+    );
+    let efficiency = match (m.efficiency(), m.net_efficiency()) {
+        (Some(eta), Some(net)) => format!("{eta:.3} (net {net:.3})"),
+        _ => UNDEFINED_EFFICIENCY.to_string(),
+    };
+    let viscous = matches!(case.section, SectionModel::Viscous(_));
+    let ct_note = if viscous {
+        format!("friction included, Re {:.0}", a.reynolds)
+    } else {
+        format!("net of friction {net:.5}, Re {:.0}", a.reynolds)
+    };
+    println!(
+        "  last cycle: CL {:.4}  CT {:.5} ({ct_note})  CP {:.5}  efficiency {efficiency}",
+        m.cl, m.ct, m.cp
+    );
+    let shed = if viscous {
+        String::new()
+    } else {
+        format!("; {lev_count} leading-edge vortices shed")
+    };
+    println!(
+        "  CT change from the cycle before: {:+.2} %{shed}",
+        100.0 * m.periodicity
+    );
+    if let Some((gct, gcp, geta)) = garrick {
+        let geta = if gcp == 0.0 {
+            UNDEFINED_EFFICIENCY.to_string()
+        } else {
+            format!("{geta:.3}")
+        };
+        println!("  Garrick (1936): CT {gct:.5}  CP {gcp:.5}  efficiency {geta}");
+    }
+}
+
 /// Runs the command.
 pub fn run(a: &Aero2dArgs) -> Result<()> {
     check(a)?;
@@ -289,52 +344,7 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         }
         println!("{v:#}");
     } else {
-        println!(
-            "{} section ({}), k = {k}, h0 = {} c, pitch {} +- {} deg, {} cycles (dt {:.4} c/U){}",
-            a.section,
-            model_name(&case.section),
-            a.plunge_amplitude,
-            a.mean_pitch_deg,
-            a.pitch_amplitude_deg,
-            a.cycles,
-            run.dt,
-            if a.deformation.is_some() {
-                ", deforming"
-            } else {
-                ""
-            }
-        );
-        let efficiency = match (m.efficiency(), m.net_efficiency()) {
-            (Some(eta), Some(net)) => format!("{eta:.3} (net {net:.3})"),
-            _ => UNDEFINED_EFFICIENCY.to_string(),
-        };
-        let viscous = matches!(case.section, SectionModel::Viscous(_));
-        let ct_note = if viscous {
-            format!("friction included, Re {:.0}", a.reynolds)
-        } else {
-            format!("net of friction {net:.5}, Re {:.0}", a.reynolds)
-        };
-        println!(
-            "  last cycle: CL {:.4}  CT {:.5} ({ct_note})  CP {:.5}  efficiency {efficiency}",
-            m.cl, m.ct, m.cp
-        );
-        let shed = if viscous {
-            String::new()
-        } else {
-            format!("; {lev_count} leading-edge vortices shed")
-        };
-        println!(
-            "  CT change from the cycle before: {:+.2} %{shed}",
-            100.0 * m.periodicity
-        );
-        if let Some((gct, gcp, geta)) = garrick {
-            let geta = if gcp == 0.0 {
-                UNDEFINED_EFFICIENCY.to_string()
-            } else {
-                format!("{geta:.3}")
-            };
-            println!("  Garrick (1936): CT {gct:.5}  CP {gcp:.5}  efficiency {geta}");
-        }
+        print_text(a, &case, &run);
     }
     match doubt {
         Some(message) => Err(Doubtful(message).into()),
