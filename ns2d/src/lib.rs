@@ -41,9 +41,11 @@
 //! Newton method after a Joukowski/circular-arc pre-map; about 2-4 ms for
 //! 256 points on this loaded machine, `examples/fit_timing.rs`).
 //!
+//! The host runs it behind `fwav aero2d --model ns` (`fwav::aero2d::viscous`:
+//! harmonic plunge and pitch, and the discipline's flapping section).
 //! Not yet here (issue 23 goes on): deformation (the map recomputed each
-//! step, warm-started), the flapping section of the design and its place
-//! behind `fwav aero2d --model ns`.
+//! step, warm-started), and a time step free of the explicit advection's
+//! limit in the small cells at a thin section's ends.
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]

@@ -223,14 +223,7 @@ impl SectionModel {
             }
             Ok(naca) => naca.points(DEFAULT_PANELS, TrailingEdge::Closed)?,
             Err(naca) => {
-                let path = Path::new(name);
-                if !path.exists() {
-                    return Err(CaseError::SectionName {
-                        name: name.to_string(),
-                        naca,
-                    });
-                }
-                let points = read_points(path)?.points;
+                let points = point_file(name, naca)?;
                 if points.len() < MIN_SECTION_POINTS {
                     return Err(CaseError::TooFewPoints {
                         path: name.to_string(),
@@ -263,16 +256,7 @@ impl SectionModel {
                     contour.points().iter().map(|z| (z.re, z.im)).collect(),
                 ))
             }
-            Err(naca) => {
-                let path = Path::new(name);
-                if !path.exists() {
-                    return Err(CaseError::SectionName {
-                        name: name.to_string(),
-                        naca,
-                    });
-                }
-                Ok(ViscousShape::Contour(read_points(path)?.points))
-            }
+            Err(naca) => Ok(ViscousShape::Contour(point_file(name, naca)?)),
         }
     }
 
@@ -280,6 +264,20 @@ impl SectionModel {
     pub fn is_flat(&self) -> bool {
         matches!(self, Self::Flat)
     }
+}
+
+/// The points of the section file `name`, or, when there is no such
+/// file, why `name` is no section (it was not a NACA name either:
+/// `naca`).
+fn point_file(name: &str, naca: NacaError) -> Result<Vec<(f64, f64)>, CaseError> {
+    let path = Path::new(name);
+    if !path.exists() {
+        return Err(CaseError::SectionName {
+            name: name.to_string(),
+            naca,
+        });
+    }
+    Ok(read_points(path)?.points)
 }
 
 /// One 2D analysis.
