@@ -394,30 +394,6 @@ fn killed_design_resumes_with_the_same_answer(reference: &[f64]) {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// At the cycle cap the run ends as "cycle cap reached", never as
-/// converged: with one cycle allowed, the coarse design still changes in
-/// cycle 1, and cycle 2 is only the system analysis of its proposal,
-/// reported as the final design.
-#[test]
-fn cycle_cap_is_reported_not_converged() {
-    let dir = temp("cap");
-    let mut config = coarse();
-    config.mdois.max_cycles = 1;
-    let run = start(&config, &dir, &RunOptions::default(), &|_| {}).unwrap();
-    assert_eq!(run.outcome, Some(Outcome::CycleCap { max_cycles: 1 }));
-    assert_eq!(run.stages_computed, 4);
-    let summary = json(&dir.join("summary.json"));
-    assert_eq!(summary["outcome"], "cycle cap reached");
-    assert!(summary["converged_cycle"].is_null());
-    assert_eq!(summary["final"]["cycle"], 2);
-    assert_eq!(summary["cycles"][0]["change"]["design_unchanged"], false);
-    assert!(summary["cycles"][1]["aerodynamic"].is_null());
-    let report = std::fs::read_to_string(dir.join("report.md")).unwrap();
-    assert!(report.contains("Not converged: the cycle cap of 1 was reached"));
-    assert!(dir.join("topology.png").exists() && dir.join("kinematics.json").exists());
-    std::fs::remove_dir_all(&dir).ok();
-}
-
 /// `fwav init` writes the default configuration, which parses back to
 /// the built-in FWAV's, and refuses to overwrite it without --force.
 #[test]

@@ -38,11 +38,27 @@ fn the_coarse_designs_kinematics_fly_in_hil_sim() {
     let run = start(&config, &dir, &RunOptions::default(), &|_| {}).expect("the design runs");
     let seconds = started.elapsed().as_secs_f64();
     println!("coarse design: {:?} in {seconds:.1} s", run.outcome);
+    // At the cycle cap the run ends as "cycle cap reached", never as
+    // converged: with one cycle allowed, the coarse design still changes
+    // in cycle 1, and cycle 2 is only the system analysis of its
+    // proposal, reported as the final design (checked here rather than by
+    // a run of its own in host/tests/design.rs).
     assert!(
         matches!(run.outcome, Some(Outcome::CycleCap { max_cycles: 1 })),
         "{:?}",
         run.outcome
     );
+    assert_eq!(run.stages_computed, 4);
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(summary["outcome"], "cycle cap reached");
+    assert!(summary["converged_cycle"].is_null());
+    assert_eq!(summary["final"]["cycle"], 2);
+    assert_eq!(summary["cycles"][0]["change"]["design_unchanged"], false);
+    assert!(summary["cycles"][1]["aerodynamic"].is_null());
+    let report = std::fs::read_to_string(dir.join("report.md")).unwrap();
+    assert!(report.contains("Not converged: the cycle cap of 1 was reached"));
+    assert!(dir.join("topology.png").exists());
     let actuator = run.summary.actuator.as_ref().expect("actuator verdict");
     println!(
         "actuator: feasible {}, limiting {} {:.4} {} of {:.4}",
