@@ -102,6 +102,22 @@ impl ImpulsiveCylinder {
         }
     }
 
+    /// The finest resolution tried at Re 3000, validated there: 512 nodes
+    /// round, 320 out to 50 diameters, first cell 0.00035 D, step
+    /// 0.0007 D/U.
+    #[must_use]
+    pub fn validated_re_3000() -> Resolution {
+        Resolution {
+            grid: GridSpec {
+                around: 512,
+                radial: 320,
+                outer_radius: 100.0,
+                first_cell: 0.0007,
+            },
+            dt: 0.0007,
+        }
+    }
+
     /// Run the case at `resolution`: `(U t / R, CD)` after every step.
     ///
     /// # Errors

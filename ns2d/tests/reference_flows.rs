@@ -3,7 +3,7 @@
 //! (`data/`, each file names its source); the heavy cases run in
 //! `fwav validate` and are `#[ignore]`d here with their cost.
 
-use fwav_ns2d::cases::{CylinderWake, HoveringEllipse, ImpulsiveCylinder, Resolution};
+use fwav_ns2d::cases::{CylinderWake, HoveringEllipse, ImpulsiveCylinder};
 use fwav_ns2d::{GridSpec, ReferenceCurve};
 
 /// A reference curve of `tests/data`.
@@ -92,15 +92,7 @@ fn the_cylinder_wake_at_re_200_sheds_as_braza_found() {
             advection was conservative); 3.1% on 384 x 256, dt = 0.001, and on 256 x 192, \
             dt = 0.002 (13.3% there before; dt = 0.004 diverges on that grid, then and now)"]
 fn the_impulsively_started_cylinder_at_re_3000_drags_as_koumoutsakos_and_leonard_found() {
-    let resolution = Resolution {
-        grid: GridSpec {
-            around: 512,
-            radial: 320,
-            outer_radius: 100.0,
-            first_cell: 0.0007,
-        },
-        dt: 0.0007,
-    };
+    let resolution = ImpulsiveCylinder::validated_re_3000();
     let drag = ImpulsiveCylinder {
         reynolds: 3000.0,
         until: 3.05,

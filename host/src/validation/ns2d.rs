@@ -9,8 +9,8 @@
 //! source). These cases take minutes each (the wakes need 150 shedding
 //! times); the crate's tests run the quick ones.
 
-use fwav_ns2d::cases::{CylinderWake, HoveringEllipse, ImpulsiveCylinder, Resolution};
-use fwav_ns2d::{GridSpec, NsError, ReferenceCurve, WakeStatistics};
+use fwav_ns2d::cases::{CylinderWake, HoveringEllipse, ImpulsiveCylinder};
+use fwav_ns2d::{NsError, ReferenceCurve, WakeStatistics};
 
 use super::{
     missing, shared, ErrorKind, Measured, Memo, Solver, Spec, Validation, ValidationError,
@@ -229,23 +229,9 @@ fn impulsive(reynolds: u32) -> Validation {
             3000,
             "ns2d/impulsive-cylinder-re3000",
             "koumoutsakos_leonard_1995_re3000.dat",
-            impulsive_3000_resolution(),
+            ImpulsiveCylinder::validated_re_3000(),
             "worst relative CD error over U t/R = 0.5..3, 512 x 320, dt = 0.0007 D/U"
         )
-    }
-}
-
-/// The finest resolution tried at Re 3000 (512 x 320, first cell
-/// 0.00035 D, dt = 0.0007 D/U).
-fn impulsive_3000_resolution() -> Resolution {
-    Resolution {
-        grid: GridSpec {
-            around: 512,
-            radial: 320,
-            outer_radius: 100.0,
-            first_cell: 0.0007,
-        },
-        dt: 0.0007,
     }
 }
 
