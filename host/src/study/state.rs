@@ -114,6 +114,36 @@ pub struct CaseRecord {
     pub stages_done: usize,
 }
 
+impl CaseRecord {
+    /// Records what the case's own files say of its ended run
+    /// (`outcome`, from [`progress`]): finished, or failed with the
+    /// executor's account of why (`failure`, asked only then); a state
+    /// that cannot be read says so.
+    pub fn settle(&mut self, outcome: CaseProgress, failure: impl FnOnce() -> String) {
+        match outcome {
+            CaseProgress::Finished { stages } => {
+                self.status = CaseStatus::Finished;
+                self.error = None;
+                self.stages_done = stages;
+            }
+            CaseProgress::Unfinished { stages } => {
+                self.status = CaseStatus::Failed;
+                self.error = Some(failure());
+                self.stages_done = stages;
+            }
+            CaseProgress::NotStarted => {
+                self.status = CaseStatus::Failed;
+                self.error = Some(failure());
+                self.stages_done = 0;
+            }
+            CaseProgress::Unreadable(why) => {
+                self.status = CaseStatus::Failed;
+                self.error = Some(format!("its run's state cannot be read: {why}"));
+            }
+        }
+    }
+}
+
 /// One submission of cases to an executor.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

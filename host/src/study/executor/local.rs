@@ -166,25 +166,5 @@ fn settle(study: &mut StudyDir, case: usize, log: &std::path::Path, status: Exit
     let Some(c) = study.state.case_mut(case) else {
         return;
     };
-    match outcome {
-        CaseProgress::Finished { stages } => {
-            c.status = CaseStatus::Finished;
-            c.error = None;
-            c.stages_done = stages;
-        }
-        CaseProgress::Unfinished { stages } => {
-            c.status = CaseStatus::Failed;
-            c.error = Some(failure(log, status));
-            c.stages_done = stages;
-        }
-        CaseProgress::NotStarted => {
-            c.status = CaseStatus::Failed;
-            c.error = Some(failure(log, status));
-            c.stages_done = 0;
-        }
-        CaseProgress::Unreadable(why) => {
-            c.status = CaseStatus::Failed;
-            c.error = Some(format!("its run's state cannot be read: {why}"));
-        }
-    }
+    c.settle(outcome, || failure(log, status));
 }

@@ -453,32 +453,10 @@ fn settle(study: &mut StudyDir, case: usize, state: Option<&str>) {
     if let Some(s) = state {
         c.slurm_state = Some(s.to_string());
     }
-    match outcome {
-        CaseProgress::Finished { stages } => {
-            c.status = CaseStatus::Finished;
-            c.error = None;
-            c.stages_done = stages;
-        }
-        CaseProgress::Unfinished { stages } => {
-            c.status = CaseStatus::Failed;
-            c.stages_done = stages;
-            c.error = Some(match (state, said) {
-                (Some("FAILED"), Some(e)) => e,
-                (state, said) => failure(state, said),
-            });
-        }
-        CaseProgress::NotStarted => {
-            c.status = CaseStatus::Failed;
-            c.error = Some(match (state, said) {
-                (Some("FAILED"), Some(e)) => e,
-                (state, said) => failure(state, said),
-            });
-        }
-        CaseProgress::Unreadable(why) => {
-            c.status = CaseStatus::Failed;
-            c.error = Some(format!("its run's state cannot be read: {why}"));
-        }
-    }
+    c.settle(outcome, || match (state, said) {
+        (Some("FAILED"), Some(e)) => e,
+        (state, said) => failure(state, said),
+    });
 }
 
 #[cfg(test)]
