@@ -19,6 +19,7 @@ fn coarse_plate() -> ViscousSection {
         radial: 64,
         outer_chords: 15.0,
         first_cell_layers: 0.2,
+        courant: ViscousSection::DEFAULT_COURANT,
     }
 }
 
@@ -241,8 +242,13 @@ fn default_section_four_cycles_benchmark() {
     };
     let reynolds = case.flight.speed * case.chord / AIR_KINEMATIC_VISCOSITY;
     let thickness: f64 = std::env::var("FWAV_NS_THICKNESS").map_or(0.04, |v| v.parse().unwrap());
+    let courant: f64 = std::env::var("FWAV_NS_COURANT")
+        .map_or(ViscousSection::DEFAULT_COURANT, |v| v.parse().unwrap());
     let cycles: f64 = std::env::var("FWAV_NS_CYCLES").map_or(4.0, |v| v.parse().unwrap());
-    let section = ViscousSection::plate(thickness);
+    let section = ViscousSection {
+        courant,
+        ..ViscousSection::plate(thickness)
+    };
     let cells = section.around * section.radial;
     let clock = std::time::Instant::now();
     let run = section

@@ -18,6 +18,7 @@
 
 use std::sync::Arc;
 
+use rayon::prelude::*;
 use realfft::num_complex::Complex64;
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 
@@ -94,7 +95,8 @@ pub struct StreamSolver {
     /// `g'²` per radial node.
     slope2: Vec<f64>,
     spectrum: Vec<Complex64>,
-    column: Vec<Complex64>,
+    /// The spectrum transposed: one column of `N_r` per mode.
+    columns: Vec<Complex64>,
     ring: Vec<f64>,
     ring_spec: Vec<Complex64>,
     fft_scratch: Vec<Complex64>,
@@ -170,26 +172,18 @@ impl StreamSolver {
             upper_coefficient: c,
             slope2,
             spectrum: vec![Complex64::new(0.0, 0.0); modes * nr],
-            column: vec![Complex64::new(0.0, 0.0); nr],
+            columns: vec![Complex64::new(0.0, 0.0); modes * nr],
             ring: vec![0.0; nt],
             ring_spec: vec![Complex64::new(0.0, 0.0); modes],
             fft_scratch,
         }
     }
 
-    /// Fourier modes of one ring into `out` (unnormalized).
-    fn ring_modes(&mut self, values: &[f64], out_row: usize) {
-        self.ring.copy_from_slice(values);
-        let dst = &mut self.spectrum[out_row * self.modes..(out_row + 1) * self.modes];
-        // The lengths match by construction.
-        let _ = self
-            .forward
-            .process_with_scratch(&mut self.ring, dst, &mut self.fft_scratch);
-    }
-
     /// Solve for `psi` (all nodes) given the source `s = J ω` at all
     /// nodes, the wall's streamfunction up to a constant, the wall's mean
-    /// `ψ_ξ` and the outer ring's streamfunction (module docs).
+    /// `ψ_ξ` and the outer ring's streamfunction (module docs). The
+    /// rings' transforms and the modes' radial systems run in parallel
+    /// (the modes as columns of a transposed copy of the spectrum).
     pub fn solve(
         &mut self,
         source: &[f64],
@@ -199,64 +193,82 @@ impl StreamSolver {
         psi: &mut [f64],
     ) {
         let (nt, nr, modes) = (self.nt, self.nr, self.modes);
-        for j in 0..nr {
-            self.ring_modes(&source[j * nt..(j + 1) * nt], j);
-        }
-        // Scale the source rows: rhs_j = -g'_j² ŝ_j.
-        for j in 0..nr {
-            let s2 = self.slope2[j];
-            for v in &mut self.spectrum[j * modes..(j + 1) * modes] {
-                *v *= -s2;
-            }
-        }
+        let scratch_len = self.fft_scratch.len();
+        // Each ring's modes, scaled into the right-hand side -g'_j² ŝ_j.
+        let forward = &self.forward;
+        let slope2 = &self.slope2;
+        self.spectrum
+            .par_chunks_mut(modes)
+            .zip(source.par_chunks(nt))
+            .enumerate()
+            .for_each_init(
+                || (vec![0.0; nt], vec![Complex64::new(0.0, 0.0); scratch_len]),
+                |(ring, scratch), (j, (row, values))| {
+                    ring.copy_from_slice(values);
+                    // The lengths match by construction.
+                    let _ = forward.process_with_scratch(ring, row, scratch);
+                    let s2 = -slope2[j];
+                    for v in row.iter_mut() {
+                        *v *= s2;
+                    }
+                },
+            );
         let wall = self.modes_of(wall_shape);
         let outer_modes = self.modes_of(outer);
-        for m in 0..modes {
-            if m == 0 {
-                // The wall row (see `new`) less row 1's right-hand side
-                // times the eliminated weight; rows 1..nr-2; the outer
-                // value given.
-                let n = nr - 1;
-                for j in 0..n {
-                    self.column[j] = self.spectrum[j * modes];
+        // The radial system of each mode, on the transposed spectrum.
+        let spectrum = &self.spectrum;
+        let factors = &self.factors;
+        let (lower_c, upper_c, w2) = (
+            self.lower_coefficient,
+            self.upper_coefficient,
+            self.wall_weights[2],
+        );
+        self.columns
+            .par_chunks_mut(nr)
+            .enumerate()
+            .for_each(|(m, column)| {
+                for (j, c) in column.iter_mut().enumerate() {
+                    *c = spectrum[j * modes + m];
                 }
-                self.column[0] = wall_slope_mean * nt as f64
-                    - self.column[1] * (self.wall_weights[2] / self.upper_coefficient);
-                self.column[n - 1] -= outer_modes[0] * self.upper_coefficient;
-                self.factors[0].solve(&mut self.column[..n]);
-                for j in 0..n {
-                    self.spectrum[j * modes] = self.column[j];
+                if m == 0 {
+                    // The wall row (see `new`) less row 1's right-hand
+                    // side times the eliminated weight; rows 1..nr-2; the
+                    // outer value given.
+                    let n = nr - 1;
+                    column[0] = Complex64::new(wall_slope_mean * nt as f64, 0.0)
+                        - column[1] * (w2 / upper_c);
+                    column[n - 1] -= outer_modes[0] * upper_c;
+                    factors[0].solve(&mut column[..n]);
+                } else {
+                    let n = nr - 2;
+                    column[1] -= wall[m] * lower_c;
+                    column[n] -= outer_modes[m] * upper_c;
+                    factors[m].solve(&mut column[1..=n]);
+                    column[0] = wall[m];
                 }
-                self.spectrum[(nr - 1) * modes] = outer_modes[0];
-            } else {
-                let n = nr - 2;
-                for j in 0..n {
-                    self.column[j] = self.spectrum[(j + 1) * modes + m];
-                }
-                self.column[0] -= wall[m] * self.lower_coefficient;
-                self.column[n - 1] -= outer_modes[m] * self.upper_coefficient;
-                self.factors[m].solve(&mut self.column[..n]);
-                for j in 0..n {
-                    self.spectrum[(j + 1) * modes + m] = self.column[j];
-                }
-                self.spectrum[m] = wall[m];
-                self.spectrum[(nr - 1) * modes + m] = outer_modes[m];
-            }
-        }
+                column[nr - 1] = outer_modes[m];
+            });
+        // Back to rings, and each ring's inverse transform.
+        let (columns, inverse) = (&self.columns, &self.inverse);
         let scale = 1.0 / nt as f64;
-        for j in 0..nr {
-            let row = &mut self.spectrum[j * modes..(j + 1) * modes];
-            row[0].im = 0.0;
-            row[modes - 1].im = 0.0;
-            let _ = self.inverse.process_with_scratch(
-                row,
-                &mut psi[j * nt..(j + 1) * nt],
-                &mut self.fft_scratch,
+        self.spectrum
+            .par_chunks_mut(modes)
+            .zip(psi.par_chunks_mut(nt))
+            .enumerate()
+            .for_each_init(
+                || vec![Complex64::new(0.0, 0.0); scratch_len],
+                |scratch, (j, (row, out))| {
+                    for (m, v) in row.iter_mut().enumerate() {
+                        *v = columns[m * nr + j];
+                    }
+                    row[0].im = 0.0;
+                    row[modes - 1].im = 0.0;
+                    let _ = inverse.process_with_scratch(row, out, scratch);
+                    for v in out.iter_mut() {
+                        *v *= scale;
+                    }
+                },
             );
-            for v in &mut psi[j * nt..(j + 1) * nt] {
-                *v *= scale;
-            }
-        }
     }
 
     /// Fourier modes of a ring (unnormalized), into a fresh vector.

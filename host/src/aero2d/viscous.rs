@@ -29,10 +29,6 @@ use super::history::History;
 use super::ldvm::FreeVortex;
 use super::motion::{Motion, SectionFlapping};
 
-/// Largest Courant number of the explicit advection the step is chosen
-/// for (AB2 with third-order upwind is stable to about 0.5).
-const COURANT: f64 = 0.35;
-
 /// Steps between checks of the stable time step (a check costs about a
 /// tenth of a step).
 const CHECK_EVERY: usize = 20;
@@ -78,6 +74,10 @@ pub struct ViscousSection {
     /// (mid-chord of a thin section), in boundary-layer thicknesses
     /// `c / sqrt(Re)`.
     pub first_cell_layers: f64,
+    /// The largest advective Courant number the time step is chosen for
+    /// (the advection is implicit where it exceeds ½, so any is stable;
+    /// accuracy sets it: see [`ViscousSection::DEFAULT_COURANT`]).
+    pub courant: f64,
 }
 
 /// Radius of the circle that rounds a NACA section's trailing edge for
@@ -91,6 +91,9 @@ impl ViscousSection {
     /// Default thickness of the thin plate, chords.
     pub const DEFAULT_THICKNESS: f64 = 0.04;
 
+    /// Default largest Courant number of a step.
+    pub const DEFAULT_COURANT: f64 = 2.0;
+
     /// The default resolution round `shape`: 256 nodes round, 160 out to
     /// 30 chords, first cell a tenth of the boundary layer's thickness.
     pub fn new(shape: ViscousShape) -> Self {
@@ -100,6 +103,7 @@ impl ViscousSection {
             radial: 160,
             outer_chords: 30.0,
             first_cell_layers: 0.1,
+            courant: Self::DEFAULT_COURANT,
         }
     }
 
@@ -214,16 +218,17 @@ pub struct ViscousRun {
 }
 
 /// The step `dt`, or a shorter one when the flow has outgrown it: halved
-/// (at most to the stable step) when the Courant number exceeds
-/// [`COURANT`]; refused when the run would then take more than
-/// [`MAX_VISCOUS_STEPS`].
+/// (at most to the step of Courant number `courant`) when the Courant
+/// number exceeds `courant`; refused when the run would then take more
+/// than [`MAX_VISCOUS_STEPS`].
 fn shortened_step(
     flow: &Flow<SectionPath>,
+    courant: f64,
     dt: f64,
     duration: f64,
     steps: usize,
 ) -> Result<f64, ViscousError> {
-    let stable = COURANT * flow.stable_dt(1.0);
+    let stable = courant * flow.stable_dt(1.0);
     if dt <= stable {
         return Ok(dt);
     }
@@ -280,14 +285,14 @@ impl ViscousSection {
         } else {
             duration / 2000.0
         };
-        let mut dt = (COURANT * flow.stable_dt(1.0) / path.peak_speed_ratio()).min(sample);
+        let mut dt = (self.courant * flow.stable_dt(1.0) / path.peak_speed_ratio()).min(sample);
         let mut history = History::default();
         let mut steps = 0;
         let mut next = sample;
         let end = duration + 1e-9 * sample;
         while next <= end {
             if steps % CHECK_EVERY == 0 && steps > 0 {
-                dt = shortened_step(&flow, dt, duration, steps)?;
+                dt = shortened_step(&flow, self.courant, dt, duration, steps)?;
             }
             // The loads (a pass round the wall) only either side of a
             // step that crosses a sample time.

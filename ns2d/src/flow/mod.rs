@@ -17,7 +17,7 @@
 //! satisfied implicitly at the end of each step: the step is linear in
 //! the wall vorticity, so the wall's influence matrix (one column per wall
 //! node, LU once per time step) gives the wall vorticity that Thom's
-//! formula returns of itself. Lagged by a step instead, the wall condition
+//! formula returns of itself (below). Lagged by a step instead, the wall condition
 //! limited the wall cell's diffusion number to about 0.5 (7e-6 c/U at the
 //! tips of Wang's 12% ellipse). The mean of the wall vorticity is not
 //! Thom's (the streamfunction's mean no-slip row already holds the
@@ -40,27 +40,59 @@
 //! the wall made up the difference (the pressure's trip round the wall,
 //! [`WallLoads::closure`], was 3–5% of the pressure range on Wang's
 //! hovering ellipse; 0.1% now). Second-order central differences for
-//! diffusion; time:
-//! second-order Adams–Bashforth for the advection, Crank–Nicolson for the
-//! diffusion split by Douglas's ADI into a radial and a ring sweep, so
-//! the step is limited by the advective Courant number only
-//! ([`Flow::stable_dt`]).
+//! diffusion.
+//!
+//! Time: the advection's first-order upwind part by the θ-method, with a
+//! weight per face from its Courant number (Crank–Nicolson's ½ up to a
+//! Courant number of 0.56, more implicit beyond, stable at any), and its
+//! correction to the third-order values by second-order Adams–Bashforth
+//! (deferred correction: `advection`); the diffusion by Crank–Nicolson
+//! (backward Euler for the first few steps, whose impulsive start it
+//! would keep ringing). Douglas's ADI splits the implicit operators into a
+//! ring sweep and then a radial sweep, whose systems stay tridiagonal.
+//! The step is thus limited by accuracy, not stability: a thin section's
+//! edges crowd cells so small that the explicit scheme of before needed
+//! 242,533 steps (Courant number 0.35) for four strokes of the default
+//! FWAV section; [`Flow::stable_dt`] gives the step of a chosen largest
+//! Courant number.
+//!
+//! The wall vorticity enters the step in the radial sweep, the last one,
+//! through the radial diffusion (no advective flux crosses the wall's
+//! face, and the normal velocity vanishes at the wall): the wall's
+//! influence matrix of the radial diffusion alone (constant for a given
+//! step) corrects a first pass with the current wall vorticity, and a
+//! second radial sweep takes the correction. What the radial advection
+//! near the wall adds is left out ([`Flow::wall_residual`]: 1e-5 to 1e-6
+//! of the wall vorticity on the impulsively started cylinder past its
+//! first steps).
 //!
 //! Forces: the wall pressure from the momentum equation along the no-slip
 //! wall, `∂p/∂s = -a_wall·s + ν ∂ω/∂n`, integrated round the section (its
 //! trip round is not exactly zero; the mismatch is spread linearly and
 //! reported as [`WallLoads::closure`]), and the friction `ν (ω - 2Ω)`.
 
+mod advection;
 mod loads;
 mod sweeps;
 
 pub use loads::WallLoads;
+
+use rayon::prelude::*;
 
 use crate::error::NsError;
 use crate::grid::{GridSpec, OGrid};
 use crate::motion::{FrameState, Motion};
 use crate::section_map::SectionMap;
 use crate::stream::StreamSolver;
+
+/// Steps at the start whose diffusion is backward Euler instead of
+/// Crank–Nicolson: a flow started from rest has a wall vorticity that
+/// jumps at the start, whose stiff near-wall modes Crank–Nicolson keeps
+/// ringing (each step's drag of the impulsively started cylinder at Re
+/// 550 alternated in sign, ±14,000 at the first step, ±2,000 after 25
+/// steps of 0.004 D/U, and into the compared window at 0.008); a few
+/// implicit Euler steps damp them (Rannacher 1984, *Numer. Math.* 43).
+const DAMPED_START_STEPS: usize = 4;
 
 /// The flow round one moving section (module docs).
 pub struct Flow<M: Motion> {
@@ -73,23 +105,30 @@ pub struct Flow<M: Motion> {
     psi: Vec<f64>,
     stream: StreamSolver,
     /// Work arrays: the rigid streamfunction at the nodes, the source
-    /// `J ω`, the explicit rate.
+    /// `J ω`, the explicit rate (the advection's correction, then all of
+    /// the first sweep's), the relative streamfunction.
     frame_psi: Vec<f64>,
     source: Vec<f64>,
     rate: Vec<f64>,
     relative: Vec<f64>,
-    theta_diffusion: Vec<f64>,
+    /// The first sweep's explicit rate but the correction, the radial
+    /// sweep's implicit operator applied to the step's start, and the
+    /// `θ q` of the radial and ring faces ([`advection`]).
+    explicit: Vec<f64>,
+    radial_old: Vec<f64>,
+    radial_speed: Vec<f64>,
+    ring_speed: Vec<f64>,
     wall_shape: Vec<f64>,
     wall_slope: Vec<f64>,
     wall_curvature: Vec<f64>,
     outer: Vec<f64>,
-    /// The vorticity at the step's start, a wall ring, and the wall's
-    /// factored influence matrix of the current time step.
-    start: Vec<f64>,
+    /// The outer ring's vorticity at the step's start, two wall rings (the
+    /// wall vorticity and its mismatch), and the wall's factored influence
+    /// matrix of the current time step.
+    start_outer: Vec<f64>,
     wall_scratch: Vec<f64>,
-    /// A ring of zeros (the first pass's wall) and the first pass's outer
-    /// ring, kept for the second.
-    zero_ring: Vec<f64>,
+    residual_scratch: Vec<f64>,
+    /// The first pass's outer ring, kept for the second.
     outer_ring: Vec<f64>,
     influence: Option<WallInfluence>,
     /// The section's area (for its own circulation `2ΩA`) and the
@@ -97,25 +136,33 @@ pub struct Flow<M: Motion> {
     area: f64,
     exited: f64,
     /// The circulation advected out through the outer face per unit time
-    /// (this step's and the previous one's, for Adams–Bashforth), and the
-    /// outer face's corners and fluxes.
+    /// by the correction (this step's and the previous one's, for
+    /// Adams–Bashforth) and by the explicit part of the first-order flux,
+    /// and five work rings for the outer face.
     outflow_rate: f64,
     previous_outflow: f64,
-    outer_corners: Vec<f64>,
-    outer_fluxes: Vec<f64>,
+    outflow_explicit: f64,
+    outer_scratch: Vec<f64>,
+    /// How far the last step's wall vorticity was from the one Thom's
+    /// formula gives back for it, relative to its largest value.
+    wall_residual: f64,
     /// The width in `ξ` of each ring's cell (trapezoid: half the distance
     /// between its neighbours; the wall's and the outer ring's half cells).
     widths: Vec<f64>,
     frame: FrameState,
+    /// The time of `frame` and `frame_psi`.
+    frame_time: Option<f64>,
     /// The explicit rate of the previous step (Adams–Bashforth) and its
-    /// time step.
+    /// time step; the diffusion's implicit weight of the current step.
     previous_rate: Vec<f64>,
     last_dt: f64,
+    diffusion_weight: f64,
     /// The radial Thomas sweeps' modified upper diagonal and right-hand
-    /// side (all lines), and the ring the sweep has just replaced.
+    /// side (all lines), and how each eliminated row depends on the one
+    /// below (ring 1's: on the wall).
     sweep_upper: Vec<f64>,
     sweep_rhs: Vec<f64>,
-    previous_ring: Vec<f64>,
+    sweep_gain: Vec<f64>,
 }
 
 impl<M: Motion> std::fmt::Debug for Flow<M> {
@@ -172,29 +219,35 @@ impl<M: Motion> Flow<M> {
             source: vec![0.0; n],
             rate: vec![0.0; n],
             relative: vec![0.0; n],
-            theta_diffusion: vec![0.0; n],
-            start: vec![0.0; n],
+            explicit: vec![0.0; n],
+            radial_old: vec![0.0; n],
+            radial_speed: vec![0.0; n],
+            ring_speed: vec![0.0; n],
+            start_outer: vec![0.0; nt],
             wall_scratch: vec![0.0; nt],
-            zero_ring: vec![0.0; nt],
+            residual_scratch: vec![0.0; nt],
             outer_ring: vec![0.0; nt],
             influence: None,
             area: map.area(),
             exited: 0.0,
             outflow_rate: 0.0,
             previous_outflow: 0.0,
-            outer_corners: vec![0.0; nt],
-            outer_fluxes: vec![0.0; nt],
+            outflow_explicit: 0.0,
+            outer_scratch: vec![0.0; 5 * nt],
+            wall_residual: 0.0,
             widths,
             previous_rate: vec![0.0; n],
             last_dt: 0.0,
+            diffusion_weight: 0.5,
             sweep_upper: vec![0.0; n],
             sweep_rhs: vec![0.0; n],
-            previous_ring: vec![0.0; nt],
+            sweep_gain: vec![0.0; n],
             wall_shape: vec![0.0; nt],
             wall_slope: vec![0.0; nt],
             wall_curvature: vec![0.0; nt],
             outer: vec![0.0; nt],
             frame,
+            frame_time: None,
         };
         flow.evaluate(0.0);
         Ok(flow)
@@ -242,19 +295,26 @@ impl<M: Motion> Flow<M> {
     fn solve_stream(&mut self, t: f64, homogeneous: bool) {
         let g = &self.grid;
         let nt = g.nt;
-        for (i, s) in self.source.iter_mut().enumerate() {
-            *s = g.jac[i] * self.omega[i];
-        }
+        self.source
+            .par_iter_mut()
+            .zip(g.jac.par_iter().zip(self.omega.par_iter()))
+            .for_each(|(s, (j, w))| *s = j * w);
         if homogeneous {
             self.wall_shape.fill(0.0);
             self.wall_slope.fill(0.0);
         } else {
-            self.frame = self.motion.state(t);
-            let frame = self.frame;
-            let rigid = frame.rigid_field();
-            for (i, z) in g.z.iter().enumerate() {
-                self.frame_psi[i] = rigid.streamfunction(*z);
+            // The rigid field is the time's: computed once for the two
+            // solves of a step.
+            if self.frame_time != Some(t) {
+                self.frame = self.motion.state(t);
+                let rigid = self.frame.rigid_field();
+                self.frame_psi
+                    .par_iter_mut()
+                    .zip(g.z.par_iter())
+                    .for_each(|(p, z)| *p = rigid.streamfunction(*z));
+                self.frame_time = Some(t);
             }
+            let frame = self.frame;
             for k in 0..nt {
                 self.wall_shape[k] = self.frame_psi[k];
                 let grad = frame.streamfunction_gradient(g.z[k]);
@@ -315,10 +375,10 @@ impl<M: Motion> Flow<M> {
         }
     }
 
-    /// The largest stable time step of the current flow: the advective
-    /// Courant number `courant` (the diffusion and the wall vorticity are
-    /// implicit; second-order Adams–Bashforth with third-order upwind
-    /// advection is stable to a Courant number of about 0.5).
+    /// The time step at which the current flow's largest advective Courant
+    /// number (of a node, both directions summed) is `courant`. Any is
+    /// stable (module docs); the larger, the more of the advection near
+    /// the section is first order in time. Cost `O(N)`.
     #[must_use]
     pub fn stable_dt(&self, courant: f64) -> f64 {
         let g = &self.grid;
@@ -346,79 +406,87 @@ impl<M: Motion> Flow<M> {
         }
     }
 
-    /// Advance one step of `dt`: second-order Adams–Bashforth advection
-    /// (Euler on the first step and after a change of `dt`), Crank–Nicolson
-    /// diffusion split by Douglas's ADI into radial and ring sweeps, and
+    /// Advance one step of `dt` (module docs): the advection's
+    /// first-order part by the θ-method with per-face weights and its
+    /// third-order correction by second-order Adams–Bashforth (Euler on
+    /// the first step and after a change of `dt`), Crank–Nicolson
+    /// diffusion, split by Douglas's ADI into radial and ring sweeps, and
     /// the wall vorticity implicit: the one that Thom's formula gives back
-    /// for the step's own streamfunction, from the wall's influence matrix
-    /// (built for each new `dt`). Two implicit sweeps and two
+    /// for the step's own streamfunction. The wall's influence matrix of
+    /// the diffusion alone (built for each new `dt`) corrects the current
+    /// wall vorticity once; the advection's share in the wall cells is
+    /// what is left ([`Self::wall_residual`]). Two implicit sweeps and two
     /// streamfunction solves.
     ///
     /// # Errors
     /// [`NsError::Diverged`] when the flow is no longer finite.
     pub fn step(&mut self, dt: f64) -> Result<(), NsError> {
         let nt = self.grid.nt;
-        if self.influence.as_ref().is_none_or(|w| w.dt != dt) {
+        self.diffusion_weight = if self.steps < DAMPED_START_STEPS {
+            1.0
+        } else {
+            0.5
+        };
+        if self
+            .influence
+            .as_ref()
+            .is_none_or(|w| w.dt != dt || w.diffusion_weight != self.diffusion_weight)
+        {
             self.influence = Some(self.wall_influence(dt)?);
         }
-        self.explicit_rate();
+        self.advection_rates(dt);
         let restart = self.steps == 0 || (dt - self.last_dt).abs() > 1e-12 * dt;
         let (now, before) = if restart { (1.0, 0.0) } else { (1.5, -0.5) };
-        for (r, p) in self.rate.iter_mut().zip(self.previous_rate.iter_mut()) {
+        for ((r, p), e) in self
+            .rate
+            .iter_mut()
+            .zip(self.previous_rate.iter_mut())
+            .zip(&self.explicit)
+        {
             let current = *r;
-            *r = now * current + before * *p;
+            *r = now * current + before * *p + e;
             *p = current;
         }
-        let outflow = now * self.outflow_rate + before * self.previous_outflow;
+        let explicit_outflow =
+            now * self.outflow_rate + before * self.previous_outflow + self.outflow_explicit;
         self.previous_outflow = self.outflow_rate;
-        // Douglas's ADI: the first sweep carries the whole explicit
-        // diffusion round the section, the second takes half of it back
-        // implicitly.
-        for (r, d) in self.rate.iter_mut().zip(&self.theta_diffusion) {
-            *r += d;
-        }
         let t = self.time + dt;
-        // The step with a zero new wall vorticity, and Thom's of it.
-        self.start.copy_from_slice(&self.omega);
-        let zero = std::mem::take(&mut self.zero_ring);
-        self.radial_crank_nicolson(dt, &zero);
-        self.zero_ring = zero;
+        self.start_outer
+            .copy_from_slice(&self.omega[(self.grid.nr - 1) * nt..]);
         self.ring_implicit(dt);
-        self.omega[..nt].fill(0.0);
+        // The step with the current wall vorticity, and Thom's of it.
+        let mut wall = std::mem::take(&mut self.wall_scratch);
+        wall.copy_from_slice(&self.omega[..nt]);
+        self.radial_crank_nicolson(dt, &wall);
         self.outer_condition();
         let mut outer_ring = std::mem::take(&mut self.outer_ring);
         outer_ring.copy_from_slice(&self.omega[(self.grid.nr - 1) * nt..]);
         self.solve_stream(t, false);
-        let mut wall = std::mem::take(&mut self.wall_scratch);
-        self.thom(false, &mut wall);
-        // The wall vorticity that Thom's formula gives back of itself,
-        // (I - M) ω0 = Thom(zero wall), in all but the mean; the mean
-        // keeps the fluid's circulation what Kelvin's theorem says:
-        // minus the section's own (2ΩA of its rotation) and minus what
-        // has left through the far boundary.
-        let target = -2.0 * self.frame.rate * self.area - self.exited;
-        let free = self.circulation();
-        let mean = wall.iter().sum::<f64>() / nt as f64;
-        for w in wall.iter_mut() {
-            *w += (target - free) / nt as f64 - mean;
-        }
+        let mut residual = std::mem::take(&mut self.residual_scratch);
+        self.wall_mismatch(&wall, &mut residual);
         if let Some(influence) = &self.influence {
-            influence.solve(&mut wall);
+            influence.solve(&mut residual);
         }
-        // The step again with that wall vorticity.
-        self.omega.copy_from_slice(&self.start);
-        self.radial_crank_nicolson(dt, &wall);
-        self.ring_implicit(dt);
+        for (w, r) in wall.iter_mut().zip(&residual) {
+            *w += r;
+        }
+        // The radial sweep again with the corrected wall vorticity.
+        self.radial_wall_change(&residual);
         self.omega[..nt].copy_from_slice(&wall);
         let outer_start = (self.grid.nr - 1) * nt;
         self.omega[outer_start..].copy_from_slice(&outer_ring);
         self.outer_ring = outer_ring;
-        self.wall_scratch = wall;
-        self.exited += dt * outflow;
+        self.exited += dt * (explicit_outflow + self.outer_implicit_flux());
         self.time = t;
         self.steps += 1;
         self.last_dt = dt;
         self.solve_stream(t, false);
+        self.wall_mismatch(&wall, &mut residual);
+        let largest = wall.iter().fold(0.0_f64, |m, w| m.max(w.abs()));
+        self.wall_residual =
+            residual.iter().fold(0.0_f64, |m, r| m.max(r.abs())) / largest.max(f64::MIN_POSITIVE);
+        self.wall_scratch = wall;
+        self.residual_scratch = residual;
         // Every node's vorticity reaches the wall ring through the
         // streamfunction solve: a non-finite value anywhere shows there.
         if self.omega[..nt].iter().any(|w| !w.is_finite())
@@ -431,6 +499,37 @@ impl<M: Motion> Flow<M> {
             });
         }
         Ok(())
+    }
+
+    /// How far the last step's wall vorticity was from the one Thom's
+    /// formula (and Kelvin's theorem, for its mean) gives back for the
+    /// step's streamfunction, relative to its largest value: zero but for
+    /// the advection's share in the wall cells, which the diffusion's
+    /// influence matrix leaves out.
+    #[must_use]
+    pub fn wall_residual(&self) -> f64 {
+        self.wall_residual
+    }
+
+    /// How far `wall`, the wall ring of the current flow, is from the
+    /// wall vorticity the step wants, into `out`: the variation round the
+    /// wall of Thom's for the current streamfunction, less `wall`'s; and
+    /// for the mean, the fluid's circulation short of Kelvin's (minus the
+    /// section's own `2ΩA` and minus what has left through the far
+    /// boundary), per wall node. The mean of Thom's is not used: the
+    /// streamfunction's mean no-slip row already holds the section's
+    /// circulation. Linear in `wall` with the matrix `-(I - M)` of
+    /// [`Self::wall_influence`].
+    fn wall_mismatch(&mut self, wall: &[f64], out: &mut [f64]) {
+        let nt = self.grid.nt;
+        self.thom(false, out);
+        let target = -2.0 * self.frame.rate * self.area - self.exited;
+        let free = self.circulation();
+        let mean = out.iter().sum::<f64>() / nt as f64;
+        let wall_mean = wall.iter().sum::<f64>() / nt as f64;
+        for (o, w) in out.iter_mut().zip(wall) {
+            *o += (target - free) / nt as f64 - mean - (w - wall_mean);
+        }
     }
 
     /// The fluid's circulation, `∫ ω dA` over the grid inside the outer
@@ -459,12 +558,18 @@ impl<M: Motion> Flow<M> {
 
     /// The wall's influence matrix for steps of `dt`: column `k` is Thom's
     /// wall vorticity of the step's response to a unit wall vorticity at
-    /// node `k` (homogeneous conditions, no explicit rate); factored as
-    /// `I - M`. Costs `N_θ` implicit sweeps and streamfunction solves.
+    /// node `k` by radial diffusion alone (the wall enters the step in
+    /// the radial sweep, the last; homogeneous conditions, no explicit
+    /// rate, no advection: the matrix depends on `dt` only); factored as
+    /// `I - M`. Costs `N_θ` radial sweeps and streamfunction solves.
     fn wall_influence(&mut self, dt: f64) -> Result<WallInfluence, NsError> {
         let nt = self.grid.nt;
         let saved = (self.omega.clone(), self.psi.clone(), self.rate.clone());
-        let theta = std::mem::replace(&mut self.theta_diffusion, vec![0.0; self.grid.len()]);
+        // The diffusion's matrix: no explicit rate, no advection.
+        let n = self.grid.len();
+        let radial_old = std::mem::replace(&mut self.radial_old, vec![0.0; n]);
+        let radial_speed = std::mem::replace(&mut self.radial_speed, vec![0.0; n]);
+        let ring_speed = std::mem::replace(&mut self.ring_speed, vec![0.0; n]);
         self.rate.fill(0.0);
         let mut matrix = nalgebra::DMatrix::<f64>::identity(nt, nt);
         let mut unit = vec![0.0; nt];
@@ -475,7 +580,6 @@ impl<M: Motion> Flow<M> {
             unit[k] = 1.0;
             self.omega.fill(0.0);
             self.radial_crank_nicolson(dt, &unit);
-            self.ring_implicit(dt);
             self.omega[..nt].copy_from_slice(&unit);
             let circulation = self.circulation();
             self.solve_stream(0.0, true);
@@ -492,7 +596,9 @@ impl<M: Motion> Flow<M> {
             }
         }
         let (omega, psi, rate) = saved;
-        self.theta_diffusion = theta;
+        self.radial_old = radial_old;
+        self.radial_speed = radial_speed;
+        self.ring_speed = ring_speed;
         self.omega = omega;
         self.psi = psi;
         self.rate = rate;
@@ -500,7 +606,11 @@ impl<M: Motion> Flow<M> {
         if !lu.is_invertible() {
             return Err(NsError::SingularWall { dt });
         }
-        Ok(WallInfluence { dt, lu })
+        Ok(WallInfluence {
+            dt,
+            diffusion_weight: self.diffusion_weight,
+            lu,
+        })
     }
 }
 
@@ -508,6 +618,7 @@ impl<M: Motion> Flow<M> {
 /// `Flow::wall_influence`), for one time step.
 struct WallInfluence {
     dt: f64,
+    diffusion_weight: f64,
     lu: nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>,
 }
 
