@@ -22,13 +22,19 @@
 //! - **Body frame**: the grid moves with the section, so a plunging,
 //!   surging, pitching section keeps its wall cells on its wall; the
 //!   absolute vorticity is carried by the velocity relative to the grid.
+//! - **Implicit where the cells are small**: a conformal grid crowds a thin
+//!   section's ends with cells a hundred times smaller than mid-chord's
+//!   (4% plate, 256 round: 1.9e-3 c along the wall, 1.4e-4 c across it).
+//!   An explicit advection holds the whole flow to their Courant number
+//!   (242,533 steps for four strokes of the default FWAV section); the
+//!   first-order part of the advection is implicit there, by a θ-method
+//!   whose weight rises with the face's Courant number, and stays
+//!   second-order Crank–Nicolson elsewhere ([`Flow`]'s docs).
 //!
-//!
-//! Measured cost on this project's 2-core machine: about 30 ns per cell
-//! per step on one core (the 128 × 128 cylinder at Re 100: two implicit
-//! sweeps and two FFT streamfunction solves a step; the explicit
-//! advection runs ring by ring on every core). The impulsively started
-//! cylinder at Re 550 to U t/R = 3 on 256 × 192 takes 1.4 s in release.
+//! Measured cost on this project's 2-core machine: the stream solve and
+//! the sweeps run on both cores (the impulsively started cylinder at
+//! Re 550 to U t/R = 3 on 256 × 192, dt 0.004: 2.1 s in release, on a
+//! machine shared with other builds).
 //!
 //! The validation cases (cylinders at Re 100, 200, impulsively started
 //! cylinders, the hovering ellipse of Wang, Birch & Dickinson 2004) are in
@@ -44,8 +50,7 @@
 //! The host runs it behind `fwav aero2d --model ns` (`fwav::aero2d::viscous`:
 //! harmonic plunge and pitch, and the discipline's flapping section).
 //! Not yet here (issue 23 goes on): deformation (the map recomputed each
-//! step, warm-started), and a time step free of the explicit advection's
-//! limit in the small cells at a thin section's ends.
+//! step, warm-started, or a transpiration condition on the rigid grid).
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]

@@ -16,12 +16,15 @@
 //! NACA section with its trailing edge rounded, a point file), both by the
 //! solver's numerical conformal map, or an ellipse (exact map).
 //!
-//! The time step is the largest the explicit advection allows
-//! ([`fwav_ns2d::Flow::stable_dt`]), checked as the flow develops and
-//! halved when it falls below; a change of step costs one build of the
-//! wall's influence matrix (`N_θ` implicit sweeps). The loads are sampled
-//! at a fixed interval by linear interpolation between steps, so the
-//! cycle means of [`super::history`] see uniform samples.
+//! The time step is the one of a chosen largest Courant number
+//! ([`ViscousSection::courant`], [`fwav_ns2d::Flow::stable_dt`]): the
+//! solver's advection is implicit where the Courant number exceeds ½, so
+//! any step is stable and accuracy chooses it. It is checked as the flow
+//! develops and halved when the flow outgrows it; a change of step costs
+//! one build of the wall's influence matrix (`N_θ` radial sweeps and
+//! streamfunction solves). The loads are sampled at a fixed interval by
+//! linear interpolation between steps, so the cycle means of
+//! [`super::history`] see uniform samples.
 
 use fwav_ns2d::{Complex64, Contour, Flow, FrameState, GridSpec, NsError, SectionMap};
 

@@ -126,8 +126,9 @@ pub(super) struct RateRows<'a> {
     pub(super) rel: &'a [f64],
     /// `1/J` at all nodes.
     pub(super) inv_jac: &'a [f64],
-    /// The cell widths in `ξ` of [`Flow::circulation`]'s trapezoid.
-    pub(super) widths: &'a [f64],
+    /// `1/(w_j Δθ)` of each ring, `w_j` the cell width in `ξ` of
+    /// [`Flow::circulation`]'s trapezoid.
+    pub(super) inv_cell: &'a [f64],
 }
 
 impl RateRows<'_> {
@@ -138,7 +139,7 @@ impl RateRows<'_> {
 
     /// `1/(cell area)` of node `(j, k)`: `1/(J w_j Δθ)`.
     fn inv_area(&self, j: usize, k: usize) -> f64 {
-        self.inv_jac[j * self.nt + k] / (self.widths[j] * self.d_theta)
+        self.inv_jac[j * self.nt + k] * self.inv_cell[j]
     }
 
     /// The relative streamfunction at the corners `(j + ½, k + ½)` of ring
@@ -291,7 +292,7 @@ impl<M: Motion> Flow<M> {
             w: &self.omega,
             rel: &self.relative,
             inv_jac: &g.inv_jac,
-            widths: &self.widths,
+            inv_cell: &self.inv_cell,
         };
         self.rate
             .par_chunks_mut(nt)

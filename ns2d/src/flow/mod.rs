@@ -149,6 +149,8 @@ pub struct Flow<M: Motion> {
     /// The width in `ξ` of each ring's cell (trapezoid: half the distance
     /// between its neighbours; the wall's and the outer ring's half cells).
     widths: Vec<f64>,
+    /// `1/(w_j Δθ)` of each ring (the inverse cell area over `1/J`).
+    inv_cell: Vec<f64>,
     frame: FrameState,
     /// The time of `frame` and `frame_psi`.
     frame_time: Option<f64>,
@@ -195,7 +197,7 @@ impl<M: Motion> Flow<M> {
         let stream = StreamSolver::new(&grid);
         let (n, nt, nr) = (grid.len(), grid.nt, grid.nr);
         let frame = motion.state(0.0);
-        let widths = (0..nr)
+        let widths: Vec<f64> = (0..nr)
             .map(|j| {
                 let below = if j == 0 { grid.xi[0] } else { grid.xi[j - 1] };
                 let above = if j + 1 == nr {
@@ -206,6 +208,7 @@ impl<M: Motion> Flow<M> {
                 0.5 * (above - below)
             })
             .collect();
+        let widths_inv = widths.iter().map(|w| 1.0 / (w * grid.d_theta)).collect();
         let mut flow = Self {
             grid,
             motion,
@@ -235,6 +238,7 @@ impl<M: Motion> Flow<M> {
             outflow_explicit: 0.0,
             outer_scratch: vec![0.0; 5 * nt],
             wall_residual: 0.0,
+            inv_cell: widths_inv,
             widths,
             previous_rate: vec![0.0; n],
             last_dt: 0.0,
