@@ -224,7 +224,9 @@ fn aero2d_runs_the_viscous_model() {
 /// Ignored: a benchmark of minutes; run with
 /// `cargo test --release -p fwav --test viscous_section -- --ignored --nocapture`
 /// (`FWAV_NS_CYCLES=0.25` runs part of it, to see the step it takes;
-/// `FWAV_NS_THICKNESS` sets the plate's thickness).
+/// `FWAV_NS_THICKNESS` sets the plate's thickness, `FWAV_NS_COURANT` the
+/// step's Courant number, `FWAV_NS_AROUND` and `FWAV_NS_RADIAL` the grid,
+/// for the convergence study).
 #[test]
 #[ignore = "benchmark (minutes): the default section's 4-cycle viscous evaluation against the issue's 60 s"]
 fn default_section_four_cycles_benchmark() {
@@ -245,9 +247,14 @@ fn default_section_four_cycles_benchmark() {
     let courant: f64 = std::env::var("FWAV_NS_COURANT")
         .map_or(ViscousSection::DEFAULT_COURANT, |v| v.parse().unwrap());
     let cycles: f64 = std::env::var("FWAV_NS_CYCLES").map_or(4.0, |v| v.parse().unwrap());
+    let plate = ViscousSection::plate(thickness);
+    let nodes =
+        |key: &str, default: usize| std::env::var(key).map_or(default, |v| v.parse().unwrap());
     let section = ViscousSection {
         courant,
-        ..ViscousSection::plate(thickness)
+        around: nodes("FWAV_NS_AROUND", plate.around),
+        radial: nodes("FWAV_NS_RADIAL", plate.radial),
+        ..plate
     };
     let cells = section.around * section.radial;
     let clock = std::time::Instant::now();
@@ -266,6 +273,23 @@ fn default_section_four_cycles_benchmark() {
         1e9 * seconds / (cells as f64 * run.steps as f64),
         mean(&run.history.ct),
         mean(&run.history.cp)
+    );
+    // Each stroke's means (200 samples a period): how periodic the flow is.
+    let strokes: Vec<String> = run
+        .history
+        .ct
+        .chunks(200)
+        .zip(run.history.cp.chunks(200))
+        .map(|(ct, cp)| {
+            let m = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+            format!("CT {:.4} CP {:.4}", m(ct), m(cp))
+        })
+        .collect();
+    println!(
+        "{} x {} nodes, Courant {courant}; each stroke: {}",
+        section.around,
+        section.radial,
+        strokes.join("; ")
     );
     assert!(seconds < 60.0, "{seconds:.1} s");
 }
