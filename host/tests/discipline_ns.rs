@@ -231,18 +231,7 @@ fn ns_failure_is_an_evaluation_error() {
 /// LDVM records it as modelled.
 #[test]
 fn ns_on_a_deforming_section_says_the_deformation_is_not_modelled() {
-    // A cambered mid-line breathing over the cycle, chords.
-    let deformation: Vec<Vec<[f64; 2]>> = (0..20)
-        .map(|i| {
-            let camber = 0.03 * (std::f64::consts::TAU * f64::from(i) / 20.0).sin();
-            (0..11)
-                .map(|j| {
-                    let x = f64::from(j) / 10.0;
-                    [x, 4.0 * camber * x * (1.0 - x)]
-                })
-                .collect()
-        })
-        .collect();
+    let deformation = breathing_section();
     let design = FlappingKinematics::INITIAL;
     let ns = SectionCase {
         deformation: deformation.clone(),
@@ -268,4 +257,172 @@ fn ns_on_a_deforming_section_says_the_deformation_is_not_modelled() {
     assert!(ldvm.deformation_modelled && ldvm.ldvm_deformation_effect.is_none());
     let rigid_ns = ns_case(ViscousPlate::new(0.04)).modelled_section(&design);
     assert!(!rigid_ns.deformation_given, "{}", rigid_ns.note);
+}
+
+/// A cambered mid-line breathing over the cycle (20 samples of 11
+/// points, chords), as a system analysis's `section.json` holds it.
+fn breathing_section() -> Vec<Vec<[f64; 2]>> {
+    (0..20)
+        .map(|i| {
+            let camber = 0.03 * (std::f64::consts::TAU * f64::from(i) / 20.0).sin();
+            (0..11)
+                .map(|j| {
+                    let x = f64::from(j) / 10.0;
+                    [x, 4.0 * camber * x * (1.0 - x)]
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// `fwav kinematics` with `section_model = "ns"` on a deforming section
+/// says in its text and its JSON that the section is rigid and the
+/// deformation not modelled. Its 21 evaluations come from a cache filled
+/// with stand-ins (a cheap LDVM discipline run's results stored under the
+/// Navier–Stokes case's key, so the run takes seconds; the Navier–Stokes
+/// evaluation itself is tested above): the discipline asks for the same
+/// designs given the same results, so it reuses all of them.
+#[test]
+fn kinematics_command_says_the_ns_section_is_rigid() {
+    use fwav::discipline::kinematic::{optimize, Weights};
+    use fwav::optimize::nsga2::Nsga2Config;
+    let dir = std::env::temp_dir().join(format!("fwav-discipline-ns-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let toml = "[design]\nsection_model = \"ns\"\n";
+    let config = SystemConfig::from_toml(toml).unwrap();
+    let stand_in = SectionCase {
+        cycles: 3,
+        steps_per_cycle: 20,
+        lesp_critical: None,
+        ..config.section_case()
+    };
+    let stand_in = SectionCase {
+        model: SectionFlowModel::Ldvm,
+        ..stand_in
+    };
+    let ldvm_cache = EvaluationCache::new();
+    let weights = Weights {
+        thrust: config.design.thrust_weight,
+        efficiency: config.design.efficiency_weight,
+    };
+    let nsga = Nsga2Config {
+        seed: config.design.seed,
+        ..Nsga2Config::default()
+    };
+    let space = config.design_space();
+    let ldvm = optimize(
+        &stand_in,
+        &space,
+        config.kinematics(),
+        weights,
+        &nsga,
+        &ldvm_cache,
+    )
+    .unwrap();
+    let ns_case = config.section_case();
+    let ns_cache = EvaluationCache::new();
+    let evaluated = std::iter::once(&ldvm.initial)
+        .chain(&ldvm.runs)
+        .chain(ldvm.candidates.iter().map(|c| &c.confirmation));
+    for e in evaluated {
+        ns_cache.insert(&ns_case, &e.design, *e.result.as_ref().unwrap());
+    }
+    let cache_file = dir.join("evaluations.json");
+    ns_cache.save(&cache_file).unwrap();
+    let section_file = dir.join("section.json");
+    let section = serde_json::json!({
+        "format": "fwav-section-history",
+        "format_version": 1,
+        "samples": breathing_section(),
+    });
+    std::fs::write(&section_file, section.to_string()).unwrap();
+    let config_file = dir.join("ns.toml");
+    std::fs::write(&config_file, toml).unwrap();
+
+    let run = |json: bool| {
+        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_fwav"));
+        command.arg("kinematics").arg("--config").arg(&config_file);
+        command.arg("--section").arg(&section_file);
+        command.arg("--cache").arg(&cache_file);
+        if json {
+            command.arg("--json");
+        }
+        let out = command.output().unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let text = run(false);
+    println!("{text}");
+    assert!(
+        text.starts_with("section model: ns: rigid section, the deformation is not modelled"),
+        "{text}"
+    );
+    let json: serde_json::Value = serde_json::from_str(&run(true)).unwrap();
+    assert_eq!(json["section"]["model"], "ns");
+    assert_eq!(json["result"]["section"]["deformation_modelled"], false);
+    assert!(json["result"]["section"]["note"]
+        .as_str()
+        .unwrap()
+        .starts_with("ns: rigid section, the deformation is not modelled"));
+    let cached = EvaluationCache::load(&cache_file).unwrap();
+    assert_eq!(cached.len(), ns_cache.len(), "no evaluation was run");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A design run's `report.md` says which 2D model each cycle's
+/// evaluations used and, for the Navier–Stokes model on the system
+/// analysis's deforming section, that the deformation is not modelled.
+#[test]
+fn design_report_says_the_ns_section_is_rigid() {
+    use fwav::discipline::section_model::ModelledSection;
+    use fwav::mdois::summary::{CycleSummary, KinematicsSummary, Summary};
+    let design = FlappingKinematics::INITIAL;
+    let said = ModelledSection::new(&SectionFlowModel::ns(0.04), true, None);
+    let summary = Summary {
+        format: "fwav-design-summary".into(),
+        format_version: 1,
+        finished: false,
+        outcome: "unfinished".into(),
+        converged_cycle: None,
+        max_cycles: 5,
+        kinematics_tolerance_of_range: 0.01,
+        layout_tolerance: 0.0,
+        cycles: vec![CycleSummary {
+            cycle: 1,
+            kinematics: design,
+            carbon_mass_fraction: 0.3,
+            system: None,
+            aerodynamic: Some(KinematicsSummary {
+                analysed_2d: None,
+                chosen: None,
+                proposed: design,
+                proposed_2d: None,
+                evaluations_reused: 0,
+                section: Some(said),
+                seconds: 1.0,
+                run: 1,
+            }),
+            structural: None,
+            change: None,
+            seconds: 1.0,
+        }],
+        initial: None,
+        final_design: None,
+        comparison: None,
+        stage_seconds: 1.0,
+        runs: 1,
+        actuator: None,
+    };
+    let report = fwav::mdois::output::report::markdown(&summary, &[], &[]);
+    assert!(
+        report.contains(
+            "- cycle 1: ns: rigid section, the deformation is not modelled (plate 0.04 chords \
+             thick); the LDVM's estimate of its effect failed\n"
+        ),
+        "{report}"
+    );
 }

@@ -343,6 +343,12 @@ fn print_summary(s: &Summary, dir: &Path) {
             ));
         }
         println!("{line}");
+        // What the 2D model left out is said, not silent.
+        if let Some(m) = c.aerodynamic.as_ref().and_then(|a| a.section.as_ref()) {
+            if m.deformation_given && !m.deformation_modelled {
+                println!("  2D section model: {}", m.note);
+            }
+        }
     }
     match (s.outcome.as_str(), s.converged_cycle) {
         ("converged", Some(c)) => println!("converged in cycle {c}: no design variable changed"),
