@@ -308,7 +308,8 @@ fn confirm_cost(estimate: &CostEstimate, yes: bool) -> Result<()> {
     }
     bail!(
         "not started: the run is far beyond the built-in design's cost; pass --yes to run it \
-         anyway, or choose a coarser mesh ([wing] span_elements, chord_elements)"
+         anyway, or choose a coarser mesh ([wing] span_elements, chord_elements) or the \
+         LDVM section model ([design] section_model = \"ldvm\")"
     )
 }
 
