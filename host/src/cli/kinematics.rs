@@ -15,7 +15,7 @@ use fwav::optimize::nsga2::Nsga2Config;
 #[derive(clap::Args)]
 pub struct KinematicsArgs {
     /// Configuration (TOML; [wing], [kinematics] (the initial design),
-    /// [flight] and [design] (levels and weights) are used); the built-in
+    /// [flight] and [design] (levels, weights, section model) are used); the built-in
     /// FWAV when not given.
     #[arg(long)]
     pub config: Option<PathBuf>,

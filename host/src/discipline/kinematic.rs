@@ -191,14 +191,16 @@ pub enum KinematicError {
     /// The initial design gives no net thrust, so it cannot be the
     /// objective's reference (its ratios would flip sign).
     #[error(
-        "the initial design's net thrust coefficient {ct_net:.4} (inviscid {ct:.4}) and net \
-         efficiency {efficiency_net:.4} must be positive to serve as the objective's reference: \
-         start from kinematics that produce thrust (a higher frequency or amplitude)"
+        "the initial design's net thrust coefficient {ct_net:.4} (before the friction estimate \
+         {ct:.4}) and net efficiency {efficiency_net:.4} must be positive to serve as the \
+         objective's reference: start from kinematics that produce thrust (a higher frequency \
+         or amplitude)"
     )]
     NoNetThrust {
         /// Net thrust coefficient (CT less friction).
         ct_net: f64,
-        /// Inviscid thrust coefficient.
+        /// Thrust coefficient before the friction estimate (the LDVM's
+        /// inviscid one; the net one for the Navier–Stokes model).
         ct: f64,
         /// Net efficiency.
         efficiency_net: f64,
