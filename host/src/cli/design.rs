@@ -308,7 +308,8 @@ fn confirm_cost(estimate: &CostEstimate, yes: bool) -> Result<()> {
     }
     bail!(
         "not started: the run is far beyond the built-in design's cost; pass --yes to run it \
-         anyway, or choose a coarser mesh ([wing] span_elements, chord_elements)"
+         anyway, or choose a coarser mesh ([wing] span_elements, chord_elements) or the \
+         LDVM section model ([design] section_model = \"ldvm\")"
     )
 }
 
@@ -343,6 +344,12 @@ fn print_summary(s: &Summary, dir: &Path) {
             ));
         }
         println!("{line}");
+        // What the 2D model left out is said, not silent.
+        if let Some(m) = c.aerodynamic.as_ref().and_then(|a| a.section.as_ref()) {
+            if m.deformation_given && !m.deformation_modelled {
+                println!("  2D section model: {}", m.note);
+            }
+        }
     }
     match (s.outcome.as_str(), s.converged_cycle) {
         ("converged", Some(c)) => println!("converged in cycle {c}: no design variable changed"),

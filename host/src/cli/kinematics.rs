@@ -15,7 +15,7 @@ use fwav::optimize::nsga2::Nsga2Config;
 #[derive(clap::Args)]
 pub struct KinematicsArgs {
     /// Configuration (TOML; [wing], [kinematics] (the initial design),
-    /// [flight] and [design] (levels and weights) are used); the built-in
+    /// [flight] and [design] (levels, weights, section model) are used); the built-in
     /// FWAV when not given.
     #[arg(long)]
     pub config: Option<PathBuf>,
@@ -80,7 +80,13 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     }
     if a.json {
         let out = serde_json::json!({
-            "section": { "chord_m": case.chord, "radius_m": case.radius, "deforming": !case.deformation.is_empty() },
+            "section": {
+                "chord_m": case.chord,
+                "radius_m": case.radius,
+                "deforming": !case.deformation.is_empty(),
+                "model": case.model.name(),
+                "note": result.section.as_ref().map(|m| m.note.as_str()),
+            },
             "design_variables": ["frequency_hz", "amplitude_deg", "mean_angle_deg", "stroke_plane_deg"],
             "seed": config.design.seed,
             "seconds": seconds,
@@ -107,14 +113,26 @@ fn print_result(result: &KinematicResult) {
             d.stroke_plane_deg()
         )
     };
+    if let Some(m) = &result.section {
+        println!("section model: {}", m.note);
+    }
     if let Ok(r) = &result.initial.result {
+        // The Navier–Stokes model's forces include the friction (no
+        // estimate subtracted): no inviscid values beside the net ones.
+        let inviscid = |text: String| {
+            if r.ct == r.ct_net {
+                String::new()
+            } else {
+                text
+            }
+        };
         println!(
-            "initial   {}: net CT {:.4} (inviscid {:.4}), net efficiency {:.4} (inviscid {:.3})",
+            "initial   {}: net CT {:.4}{}, net efficiency {:.4}{}",
             show(&result.initial.design),
             r.ct_net,
-            r.ct,
+            inviscid(format!(" (inviscid {:.4})", r.ct)),
             r.efficiency_net,
-            r.efficiency
+            inviscid(format!(" (inviscid {:.3})", r.efficiency))
         );
     }
     for c in &result.candidates {

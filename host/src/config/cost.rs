@@ -23,12 +23,16 @@
 //! estimate takes `n^1.5`, the factorization's flop count on a 2D mesh
 //! (George 1973), times the steps a design cycle's dynamic analyses take,
 //! `(analysis.cycles + topology.periods) * analysis.steps_per_cycle`. The
-//! vortex lattice and the aerodynamic discipline are left out: they do
-//! not grow with the mesh, and on the default wing they are a small part.
+//! vortex lattice and the aerodynamic discipline's LDVM are left out: they
+//! do not grow with the mesh, and on the default wing they are a small
+//! part. The discipline's Navier–Stokes model (`[design] section_model =
+//! "ns"`) is not: its evaluations are added at their measured time
+//! ([`NS_EVALUATION_SECONDS`] each, [`NS_EVALUATIONS`] of them).
 
 use std::fmt;
 
 use super::SystemConfig;
+use crate::discipline::section_model::SectionModelName;
 
 /// Shell elements of the built-in wing.
 pub const DEFAULT_ELEMENTS: usize = 6760;
@@ -50,6 +54,18 @@ const DEFAULT_STEPS: f64 = 240.0;
 /// MB).
 const DEFAULT_MEMORY: f64 = 680e6;
 
+/// Wall time of one Navier–Stokes evaluation of the mid-span section at
+/// the default resolution, s: 845 s measured for the default section's 4
+/// cycles on two cores (README, "Viscous section analysis").
+pub const NS_EVALUATION_SECONDS: f64 = 845.0;
+
+/// Navier–Stokes evaluations of a design run: the first cycle's 21, then
+/// the two confirmations of each later cycle (the array's rows and the
+/// analysed design are in the evaluation cache: the rigid section's
+/// results do not change with the deformation), over the built-in
+/// design's three cycles.
+pub const NS_EVALUATIONS: f64 = 25.0;
+
 /// Exponent of the time a step in the element count.
 const TIME_EXPONENT: f64 = 1.5;
 
@@ -68,6 +84,9 @@ pub struct CostEstimate {
     pub memory_bytes: f64,
     /// Wall time on two cores, s.
     pub seconds: f64,
+    /// The part of it the Navier–Stokes section evaluations take, s (0
+    /// with the LDVM).
+    pub section_seconds: f64,
     /// The time over the built-in design's.
     pub time_ratio: f64,
 }
@@ -85,12 +104,18 @@ impl CostEstimate {
         let n0 = DEFAULT_ELEMENTS as f64;
         let steps = ((config.analysis.cycles + config.topology.periods)
             * config.analysis.steps_per_cycle) as f64;
-        let time_ratio = (n / n0).powf(TIME_EXPONENT) * steps / DEFAULT_STEPS;
+        let mesh_seconds = DEFAULT_SECONDS * (n / n0).powf(TIME_EXPONENT) * steps / DEFAULT_STEPS;
+        let section_seconds = match config.design.section_model {
+            SectionModelName::Ldvm => 0.0,
+            SectionModelName::Ns => NS_EVALUATIONS * NS_EVALUATION_SECONDS,
+        };
+        let seconds = mesh_seconds + section_seconds;
         Self {
             elements,
             memory_bytes: DEFAULT_MEMORY * fill(n) / fill(n0),
-            seconds: DEFAULT_SECONDS * time_ratio,
-            time_ratio,
+            seconds,
+            section_seconds,
+            time_ratio: seconds / DEFAULT_SECONDS,
         }
     }
 
@@ -126,7 +151,16 @@ impl fmt::Display for CostEstimate {
             self.time_ratio,
             DEFAULT_MEMORY / 1e9,
             duration(DEFAULT_SECONDS),
-        )
+        )?;
+        if self.section_seconds > 0.0 {
+            write!(
+                f,
+                ", of which {} for about {NS_EVALUATIONS:.0} Navier–Stokes section evaluations \
+                 (design.section_model = \"ns\")",
+                duration(self.section_seconds)
+            )?;
+        }
+        Ok(())
     }
 }
 
@@ -155,5 +189,17 @@ mod tests {
         let mut coarse = SystemConfig::default();
         (coarse.wing.span_elements, coarse.wing.chord_elements) = (16, 6);
         assert!(!CostEstimate::of(&coarse).is_far_beyond_default());
+    }
+
+    /// The Navier–Stokes section model makes the built-in design far
+    /// beyond its LDVM run, and says why.
+    #[test]
+    fn the_ns_section_model_is_far_beyond_the_default() {
+        let mut ns = SystemConfig::default();
+        ns.design.section_model = SectionModelName::Ns;
+        let e = CostEstimate::of(&ns);
+        assert!(e.is_far_beyond_default(), "{e}");
+        assert_eq!(e.section_seconds, NS_EVALUATIONS * NS_EVALUATION_SECONDS);
+        assert!(e.to_string().contains("Navier–Stokes"), "{e}");
     }
 }

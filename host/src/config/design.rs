@@ -1,6 +1,8 @@
 //! The `[design]` table: the kinematic optimization's levels (the
 //! discipline's own [`DesignSpace`], its keys written in this table), the
-//! weights of its combined objective and the genetic algorithm's seed.
+//! weights of its combined objective, the genetic algorithm's seed and the
+//! section analyses' flow model ([`SectionModelName`]: the LDVM or laminar
+//! Navier–Stokes of a thin plate).
 //!
 //! The levels are [`DesignSpace`]'s fields flattened into the table, so
 //! serde cannot refuse unknown keys here (`deny_unknown_fields` does not
@@ -10,8 +12,10 @@
 use fwav_settings::{Allowed, Integers, Interval, Setting, Table, Value};
 use serde::{Deserialize, Serialize};
 
+use crate::aero2d::viscous::ViscousSection;
 use crate::discipline::kinematic::DesignSpace;
 use crate::discipline::section::FWAV_LESP_CRITICAL;
+use crate::discipline::section_model::{SectionFlowModel, SectionModelName};
 
 use super::ConfigError;
 
@@ -29,8 +33,13 @@ pub struct DesignConfig {
     /// Seed of the genetic algorithm.
     pub seed: u64,
     /// Critical leading-edge suction parameter of the section analyses
-    /// (leading-edge vortex shedding beyond it); 0: attached flow.
+    /// (leading-edge vortex shedding beyond it); 0: attached flow. The
+    /// LDVM's only.
     pub lesp_critical: f64,
+    /// The section analyses' flow model.
+    pub section_model: SectionModelName,
+    /// Thickness of the Navier–Stokes model's plate, chords.
+    pub ns_thickness: f64,
 }
 
 impl Default for DesignConfig {
@@ -42,6 +51,8 @@ impl Default for DesignConfig {
             efficiency_weight: 1.0,
             seed: 1,
             lesp_critical: FWAV_LESP_CRITICAL,
+            section_model: SectionModelName::Ldvm,
+            ns_thickness: ViscousSection::DEFAULT_THICKNESS,
         }
     }
 }
@@ -51,6 +62,15 @@ impl DesignConfig {
     pub fn lesp(&self) -> Option<f64> {
         (self.lesp_critical > 0.0).then_some(self.lesp_critical)
     }
+
+    /// The section analyses' flow model (the Navier–Stokes model's plate
+    /// at the default resolution).
+    pub fn flow_model(&self) -> SectionFlowModel {
+        match self.section_model {
+            SectionModelName::Ldvm => SectionFlowModel::Ldvm,
+            SectionModelName::Ns => SectionFlowModel::ns(self.ns_thickness),
+        }
+    }
 }
 
 /// The `[design]` table's settings.
@@ -59,8 +79,8 @@ pub const DESIGN: Table<DesignConfig> = Table {
     doc: "The aerodynamic discipline: three levels (low, initial, high) of each kinematic \
           variable for the L18 array, and the weights of the combined objective \
           w_ct CT/CT_0 + w_eta eta/eta_0, where CT is the net thrust coefficient (the \
-          LDVM's thrust less the laminar friction estimate) and eta = CT/CP the net \
-          efficiency.",
+          LDVM's thrust less the laminar friction estimate, or the Navier-Stokes model's \
+          thrust, friction included) and eta = CT/CP the net efficiency.",
     settings: &[
         Setting {
             key: "frequency_hz",
@@ -121,6 +141,29 @@ pub const DESIGN: Table<DesignConfig> = Table {
                   is their SD7003); 0 means attached flow",
             value: |d| Value::Real(d.lesp_critical),
         },
+        Setting {
+            key: "section_model",
+            unit: "",
+            allowed: Allowed::Choice(&["ldvm", "ns"]),
+            doc: "Flow model of the section analyses. \"ldvm\": the inviscid LDVM with \
+                  leading-edge shedding and a laminar friction estimate, of the deforming \
+                  section; a fraction of a second an evaluation, seconds a discipline run. \
+                  \"ns\": laminar Navier-Stokes of a thin plate (ns_thickness) with its \
+                  friction and separation; the RIGID section (the deformation is not \
+                  modelled yet, and the reports say so); lesp_critical does not apply. \
+                  Cost: 845 s measured for one 4-cycle evaluation of the default section on \
+                  two cores, so hours for a discipline run of 21 evaluations",
+            value: |d| Value::Choice(d.section_model.word()),
+        },
+        Setting {
+            key: "ns_thickness",
+            unit: "chords",
+            allowed: Allowed::Real(Interval::closed(0.005, 0.3)),
+            doc: "Thickness of the Navier-Stokes model's plate, semicircular ends (the 0.1 mm \
+                  membrane on a 60 mm chord is 0.0017 chords, thinner than the solver can \
+                  grid; thinner plates cost more time steps)",
+            value: |d| Value::Real(d.ns_thickness),
+        },
     ],
 };
 
@@ -134,11 +177,27 @@ const LEVEL_KEYS: [&str; 4] = [
 ];
 
 /// Refuses a key of the file's `[design]` table that [`DESIGN`] does not
-/// declare, and a level key whose array does not hold three levels.
+/// declare, a level key whose array does not hold three levels, and a
+/// word of a choice (`section_model`) that is not one of its words (serde
+/// would refuse it too, but naming no key inside the flattened table).
 pub fn check_keys(file: &toml::Table) -> Result<(), ConfigError> {
     let Some(toml::Value::Table(table)) = file.get(DESIGN.name) else {
         return Ok(());
     };
+    for setting in DESIGN.settings {
+        let (Allowed::Choice(words), Some(value)) = (&setting.allowed, table.get(setting.key))
+        else {
+            continue;
+        };
+        if !value.as_str().is_some_and(|w| words.contains(&w)) {
+            return Err(ConfigError::Choice {
+                table: DESIGN.name,
+                key: setting.key,
+                value: value.to_string(),
+                allowed: setting.allowed.to_string(),
+            });
+        }
+    }
     for key in LEVEL_KEYS {
         if let Some(toml::Value::Array(levels)) = table.get(key) {
             if levels.len() != 3 {

@@ -88,6 +88,19 @@ pub enum ConfigError {
     /// `table.key`, its value and the range).
     #[error(transparent)]
     Range(#[from] SettingError),
+    /// A word that is not one of a choice's (checked before serde, which
+    /// names no key inside a flattened table).
+    #[error("{table}.{key} = {value} is not one of {allowed}")]
+    Choice {
+        /// The table.
+        table: &'static str,
+        /// The key.
+        key: &'static str,
+        /// The value given, as TOML.
+        value: String,
+        /// The words allowed.
+        allowed: String,
+    },
     /// The wing could not be built.
     #[error(transparent)]
     Wing(#[from] WingModelError),
@@ -250,8 +263,8 @@ impl SystemConfig {
 
     /// The mid-span section the aerodynamic discipline analyses (chord
     /// and radius at half the semi-span, the flight condition, the
-    /// critical LESP; rigid until a system analysis gives its
-    /// deformation).
+    /// critical LESP, the flow model; rigid until a system analysis gives
+    /// its deformation).
     pub fn section_case(&self) -> SectionCase {
         let planform = self.planform();
         let radius = 0.5 * planform.semi_span;
@@ -260,6 +273,7 @@ impl SystemConfig {
             radius,
             flight: self.flight(),
             lesp_critical: self.design.lesp(),
+            model: self.design.flow_model(),
             ..SectionCase::fwav_mid_span()
         }
     }

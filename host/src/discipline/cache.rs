@@ -3,6 +3,13 @@
 //! hash of the evaluation's inputs serialized as JSON (the section case and
 //! the design, in Hz and degrees as [`FlappingKinematics`] writes them), stable across runs and platforms; the file is JSON,
 //! written atomically.
+//!
+//! The case is keyed as its model reads it ([`SectionCase::modelled`]):
+//! the flow model and its plate and grid are part of the key (an LDVM
+//! result is never served for a Navier–Stokes request, nor one grid's for
+//! another's), and the Navier–Stokes model's rigid result is served to
+//! every deformation (it does not take one). An LDVM case is written as
+//! before the model was chosen, so older cache files still match.
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -132,9 +139,10 @@ impl EvaluationCache {
     }
 }
 
-/// The key of an evaluation: FNV-1a of its inputs' JSON, hex.
+/// The key of an evaluation: FNV-1a of its inputs' JSON (the case as its
+/// model reads it), hex.
 pub fn key(case: &SectionCase, design: &FlappingKinematics) -> String {
-    let text = serde_json::json!({ "case": case, "design": design }).to_string();
+    let text = serde_json::json!({ "case": case.modelled(), "design": design }).to_string();
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
     for b in text.bytes() {
         h ^= u64::from(b);

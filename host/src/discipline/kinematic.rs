@@ -17,7 +17,10 @@
 //! thrust ([`SectionResult::ct_net`]: the LDVM's thrust, with leading-edge
 //! shedding, less the laminar friction estimate) and eta the net efficiency
 //! `CT_net / CP` ([`SectionResult::efficiency_net`]); the response surfaces
-//! fit the same two quantities. The inviscid CT stays in the records. The
+//! fit the same two quantities. The inviscid CT stays in the records. With
+//! the Navier–Stokes model (`[design] section_model = "ns"`) CT is its
+//! thrust, friction included, on the rigid section; the result records the
+//! model and what it leaves out ([`KinematicResult::section`]). The
 //! answer is the feasible confirmed candidate (direct runs only: the L18
 //! row, the ANOM and RSM confirmations) with the best combined objective,
 //! or the initial design if none beats it.
@@ -48,6 +51,7 @@ use crate::optimize::rsm::{fit_reduced, ReduceOptions, ReducedFit, RsmError};
 
 use super::cache::EvaluationCache;
 use super::section::{SectionCase, SectionResult};
+use super::section_model::ModelledSection;
 
 /// The four design variables and their three levels (physical units:
 /// Hz and degrees, as a person sets them), low, middle (the initial
@@ -172,6 +176,10 @@ pub struct KinematicResult {
     pub candidates: Vec<Candidate>,
     /// Index of the chosen candidate, None: the initial design stays.
     pub chosen: Option<usize>,
+    /// The evaluations' flow model and what it leaves out of the section
+    /// (None in records written before it was recorded: the LDVM).
+    #[serde(default)]
+    pub section: Option<ModelledSection>,
 }
 
 /// Why the discipline stopped.
@@ -183,14 +191,16 @@ pub enum KinematicError {
     /// The initial design gives no net thrust, so it cannot be the
     /// objective's reference (its ratios would flip sign).
     #[error(
-        "the initial design's net thrust coefficient {ct_net:.4} (inviscid {ct:.4}) and net \
-         efficiency {efficiency_net:.4} must be positive to serve as the objective's reference: \
-         start from kinematics that produce thrust (a higher frequency or amplitude)"
+        "the initial design's net thrust coefficient {ct_net:.4} (before the friction estimate \
+         {ct:.4}) and net efficiency {efficiency_net:.4} must be positive to serve as the \
+         objective's reference: start from kinematics that produce thrust (a higher frequency \
+         or amplitude)"
     )]
     NoNetThrust {
         /// Net thrust coefficient (CT less friction).
         ct_net: f64,
-        /// Inviscid thrust coefficient.
+        /// Thrust coefficient before the friction estimate (the LDVM's
+        /// inviscid one; the net one for the Navier–Stokes model).
         ct: f64,
         /// Net efficiency.
         efficiency_net: f64,
@@ -329,6 +339,7 @@ pub fn optimize_reporting(
             let s = |i: usize| candidates[i].combined.unwrap_or(f64::NEG_INFINITY);
             s(a).total_cmp(&s(b))
         });
+    let section = case.modelled_section(&initial.design);
     Ok(KinematicResult {
         initial,
         runs: array.runs,
@@ -338,6 +349,7 @@ pub fn optimize_reporting(
         pareto: surfaces.pareto,
         candidates,
         chosen,
+        section: Some(section),
     })
 }
 

@@ -8,6 +8,8 @@
 //!   flapping kinematics, the mid-span section's flapping motion and its
 //!   deformation from the system analysis, an [`crate::aero2d`] run and its
 //!   cycle-mean thrust, power and efficiency.
+//! - [`section_model`]: the evaluations' flow model (LDVM or laminar
+//!   Navier–Stokes) and what it leaves out of the section.
 //!
 //! Imports: [`crate::aero2d`] (each evaluation), [`crate::optimize`] (the DOE
 //! and optimizers) and the kinematics type of [`crate::aeroelastic`]; never
@@ -16,3 +18,4 @@
 pub mod cache;
 pub mod kinematic;
 pub mod section;
+pub mod section_model;

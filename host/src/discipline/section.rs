@@ -19,6 +19,16 @@
 //! edge cannot hold. Viscosity: the laminar friction estimate is subtracted
 //! from the inviscid thrust ([`SectionResult::ct_net`]), and the discipline
 //! optimizes the net quantities.
+//!
+//! The flow model is the case's ([`SectionCase::model`],
+//! [`super::section_model`]): the LDVM above, or laminar Navier–Stokes of
+//! a thin plate ([`crate::aero2d::viscous`]) at the chord Reynolds number
+//! `U c / nu` ([`AIR_KINEMATIC_VISCOSITY`]), summarized the same way (the
+//! last two of `cycles` periods). Its forces include the friction, so its
+//! friction history is zero and `ct_net == ct`; it sheds vorticity where
+//! the flow does, so the critical LESP does not apply to it (the setting
+//! stays, unused); it does not take the deformation and analyses the rigid
+//! section ([`SectionCase::modelled`]).
 
 use serde::{Deserialize, Serialize};
 
@@ -27,8 +37,11 @@ use crate::aero2d::case::MAX_STEPS;
 use crate::aero2d::ldvm::{
     cycle_mean_of, cycle_means, cycle_means_until, History, Ldvm, Motion, SectionFlapping, Settings,
 };
+use crate::aero2d::viscous::{SectionPath, ViscousError};
 use crate::aeroelastic::kinematics::{FlappingKinematics, KinematicsError};
 use crate::aeroelastic::model::FlightCondition;
+
+use super::section_model::{DeformationEffect, ModelledSection, SectionFlowModel};
 
 /// Kinematic viscosity of sea-level air, m²/s (for the chord Reynolds
 /// number of the friction estimate).
@@ -70,9 +83,14 @@ pub struct SectionCase {
     /// chords travelled).
     pub steps_per_cycle: usize,
     /// Critical leading-edge suction parameter beyond which leading-edge
-    /// vortices are shed (separation); None: attached flow.
+    /// vortices are shed (separation); None: attached flow. The LDVM's
+    /// only (the Navier–Stokes model separates where the flow does).
     #[serde(default)]
     pub lesp_critical: Option<f64>,
+    /// The flow model (LDVM in files written before it was chosen; not
+    /// written for the LDVM, so the evaluation cache's older keys hold).
+    #[serde(default, skip_serializing_if = "SectionFlowModel::is_ldvm")]
+    pub model: SectionFlowModel,
 }
 
 /// The cycle-mean results of one evaluation.
@@ -80,13 +98,16 @@ pub struct SectionCase {
 pub struct SectionResult {
     /// Reduced frequency `k = pi f c / U`.
     pub reduced_frequency: f64,
-    /// Mean thrust coefficient (inviscid), on `1/2 rho U^2 c`.
+    /// Mean thrust coefficient, on `1/2 rho U^2 c`: the LDVM's inviscid
+    /// one; the Navier–Stokes model's includes the friction.
     pub ct: f64,
-    /// Mean thrust coefficient less the laminar friction estimate.
+    /// Mean thrust coefficient less the laminar friction estimate (the
+    /// Navier–Stokes model's `ct`: it has no separate estimate).
     pub ct_net: f64,
     /// Mean power coefficient, on `1/2 rho U^3 c`.
     pub cp: f64,
-    /// Propulsive efficiency `CT / CP` (inviscid).
+    /// Propulsive efficiency `CT / CP` (the LDVM's inviscid; equal to
+    /// `efficiency_net` for the Navier–Stokes model).
     pub efficiency: f64,
     /// Net propulsive efficiency `ct_net / CP` (the discipline's
     /// efficiency objective).
@@ -107,6 +128,10 @@ pub enum EvaluationError {
     /// A case value out of range.
     #[error("section case: {0}")]
     Case(String),
+    /// The Navier–Stokes model failed (the solver refused the case or
+    /// diverged, a bad plate thickness, a time step that kept falling).
+    #[error("the Navier–Stokes section analysis: {0}")]
+    Viscous(#[from] ViscousError),
     /// The solution is not finite (the solver diverged).
     #[error("the 2D analysis diverged (non-finite {0})")]
     Diverged(&'static str),
@@ -134,7 +159,7 @@ pub enum EvaluationError {
 impl SectionCase {
     /// The built-in FWAV's mid-span section: chord 0.06 m at 0.075 m from
     /// the axis, 3 m/s at sea level, rigid, 4 cycles of at least 100 steps,
-    /// leading-edge shedding beyond [`FWAV_LESP_CRITICAL`].
+    /// leading-edge shedding beyond [`FWAV_LESP_CRITICAL`], the LDVM.
     pub fn fwav_mid_span() -> Self {
         Self {
             chord: 0.06,
@@ -144,7 +169,58 @@ impl SectionCase {
             cycles: 4,
             steps_per_cycle: 100,
             lesp_critical: Some(FWAV_LESP_CRITICAL),
+            model: SectionFlowModel::Ldvm,
         }
+    }
+
+    /// The case as its model reads it: for the Navier–Stokes model,
+    /// without the deformation and the critical LESP, which it does not
+    /// take (so the evaluation cache serves its rigid result to every
+    /// deformation, as the evaluation would compute it); the LDVM's case
+    /// as it is.
+    pub fn modelled(&self) -> SectionCase {
+        match self.model {
+            SectionFlowModel::Ldvm => self.clone(),
+            SectionFlowModel::Ns(_) => SectionCase {
+                deformation: Vec::new(),
+                lesp_critical: None,
+                ..self.clone()
+            },
+        }
+    }
+
+    /// What this case's evaluations model of the section, for the
+    /// reports; for a deformation the model leaves out, its effect on
+    /// `initial` by the LDVM (two LDVM runs, a fraction of a second each).
+    pub fn modelled_section(&self, initial: &FlappingKinematics) -> ModelledSection {
+        let given = !self.deformation.is_empty();
+        let effect = (given && !self.model.takes_deformation())
+            .then(|| {
+                let ldvm = |deformation: Vec<Vec<[f64; 2]>>| {
+                    SectionCase {
+                        deformation,
+                        model: SectionFlowModel::Ldvm,
+                        ..self.clone()
+                    }
+                    .evaluate(initial)
+                    .ok()
+                };
+                let rigid = ldvm(Vec::new())?;
+                let deforming = ldvm(self.deformation.clone())?;
+                Some(DeformationEffect {
+                    ct_net_rigid: rigid.ct_net,
+                    ct_net_deforming: deforming.ct_net,
+                    efficiency_net_rigid: rigid.efficiency_net,
+                    efficiency_net_deforming: deforming.efficiency_net,
+                })
+            })
+            .flatten();
+        ModelledSection::new(&self.model, given, effect)
+    }
+
+    /// The chord Reynolds number `U c / nu` in sea-level air.
+    pub fn reynolds(&self) -> f64 {
+        self.flight.speed * self.chord / AIR_KINEMATIC_VISCOSITY
     }
 
     /// The reduced frequency `k = pi f c / U` of flapping at
@@ -161,7 +237,7 @@ impl SectionCase {
         Settings {
             dt: (period / self.steps_per_cycle as f64).min(Settings::default().dt),
             duration: self.cycles as f64 * period,
-            reynolds: Some(self.flight.speed * self.chord / AIR_KINEMATIC_VISCOSITY),
+            reynolds: Some(self.reynolds()),
             lesp_critical: self.lesp_critical,
             ..Settings::default()
         }
@@ -189,12 +265,54 @@ impl SectionCase {
         })
     }
 
-    /// Runs the 2D analysis for `kinematics`.
+    /// Runs the 2D analysis for `kinematics` by the case's model and
+    /// summarizes its last two periods.
+    ///
+    /// Cost: the LDVM a fraction of a second; the Navier–Stokes model at
+    /// the default resolution about 845 s for 4 cycles on two cores
+    /// ([`crate::aero2d::viscous::ViscousSection::run`]).
+    ///
+    /// # Errors
+    /// [`EvaluationError`]: kinematics or case values out of range, an
+    /// analysis too long, unusable deformation samples, a solver failure
+    /// or divergence.
     pub fn evaluate(
         &self,
         kinematics: &FlappingKinematics,
     ) -> Result<SectionResult, EvaluationError> {
         kinematics.validate()?;
+        self.check()?;
+        self.check_work(kinematics.frequency)?;
+        let k = self.reduced_frequency(kinematics.frequency);
+        let period = std::f64::consts::PI / k;
+        let flapping = SectionFlapping {
+            reduced_frequency: k,
+            radius: self.radius / self.chord,
+            amplitude: kinematics.amplitude,
+            mean_angle: kinematics.mean_angle,
+            stroke_plane: kinematics.stroke_plane,
+        };
+        let history = match &self.model {
+            SectionFlowModel::Ldvm => self.ldvm_history(flapping, period)?,
+            SectionFlowModel::Ns(plate) => {
+                // Rigid: the model takes no deformation (see `modelled`).
+                plate
+                    .section()
+                    .run(
+                        SectionPath::Flapping(flapping),
+                        self.reynolds(),
+                        self.cycles as f64 * period,
+                    )?
+                    .history
+            }
+        };
+        summarize(&history, period, k)
+    }
+
+    /// Refuses case values out of range: a chord, radius or speed not
+    /// positive, fewer than 3 cycles of 20 steps, a critical LESP not
+    /// positive.
+    fn check(&self) -> Result<(), EvaluationError> {
         let positive = |v: f64| v.is_finite() && v > 0.0;
         if !(positive(self.chord) && positive(self.radius) && positive(self.flight.speed)) {
             return Err(EvaluationError::Case(format!(
@@ -215,18 +333,19 @@ impl SectionCase {
                 )));
             }
         }
-        self.check_work(kinematics.frequency)?;
-        let k = self.reduced_frequency(kinematics.frequency);
-        let period = std::f64::consts::PI / k;
-        let settings = self.settings(k);
-        let flapping = SectionFlapping {
-            reduced_frequency: k,
-            radius: self.radius / self.chord,
-            amplitude: kinematics.amplitude,
-            mean_angle: kinematics.mean_angle,
-            stroke_plane: kinematics.stroke_plane,
-        };
-        let mut solver = Ldvm::new(Motion::plunge(k, 0.0), settings).with_flapping(flapping);
+        Ok(())
+    }
+
+    /// The LDVM's history of the section flapping as `flapping` (period
+    /// `period` chords travelled), deforming as [`Self::deformation`].
+    fn ldvm_history(
+        &self,
+        flapping: SectionFlapping,
+        period: f64,
+    ) -> Result<History, EvaluationError> {
+        let k = flapping.reduced_frequency;
+        let mut solver =
+            Ldvm::new(Motion::plunge(k, 0.0), self.settings(k)).with_flapping(flapping);
         if !self.deformation.is_empty() {
             // Sample k is at (k + 1) dt: the last one is the cycle's start.
             let n = self.deformation.len();
@@ -243,11 +362,15 @@ impl SectionCase {
                 &samples, period, stations,
             )?);
         }
-        let history = solver.run();
-        summarize(&history, period, k)
+        Ok(solver.run())
     }
 }
 
+/// The cycle means of the last two periods of `history` (period `period`,
+/// reduced frequency `k`), the friction estimate's mean subtracted for the
+/// net values (zero for the Navier–Stokes model, whose forces include the
+/// friction: there `ct_net == ct`), and the change of the mean CT from the
+/// second-last period to the last.
 fn summarize(history: &History, period: f64, k: f64) -> Result<SectionResult, EvaluationError> {
     let (ct, cp, efficiency) = cycle_means(history, period, 2);
     let end = history.time.last().copied().unwrap_or(0.0);

@@ -15,6 +15,7 @@ use crate::file_format::{FileFormat, FormatError, ReadError};
 use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::config::SystemConfig;
 use crate::discipline::section::SectionResult;
+use crate::discipline::section_model::ModelledSection;
 
 use super::error::DesignError;
 use super::plant::cycle_vehicle;
@@ -118,6 +119,10 @@ pub struct KinematicsSummary {
     pub proposed_2d: Option<SectionResult>,
     /// 2D evaluations reused from the cache.
     pub evaluations_reused: usize,
+    /// The 2D evaluations' flow model and what it left out of the section
+    /// (None in runs recorded before it was: the LDVM).
+    #[serde(default)]
+    pub section: Option<ModelledSection>,
     /// Wall time, s.
     pub seconds: f64,
     /// The driver invocation that computed it.
@@ -286,6 +291,7 @@ impl KinematicsSummary {
             proposed: k.proposed,
             proposed_2d: k.proposed_2d,
             evaluations_reused: k.evaluations_reused,
+            section: k.result.section.clone(),
             seconds: r.seconds,
             run: r.run,
         }

@@ -33,6 +33,7 @@ pub fn markdown(summary: &Summary, pictures: &[(&str, &str)], cycle_files: &[Str
     ending(&mut s, summary);
     cycles(&mut s, summary);
     disciplines(&mut s, summary);
+    section_models(&mut s, summary);
     initial_and_final(&mut s, summary);
     if let Some(a) = &summary.actuator {
         actuator(&mut s, a);
@@ -128,6 +129,33 @@ fn disciplines(s: &mut String, summary: &Summary) {
             a.seconds,
             t.seconds,
         );
+    }
+}
+
+/// The section model of each cycle's 2D evaluations, and what it left
+/// out (said, never silent: the Navier–Stokes model's rigid section).
+fn section_models(s: &mut String, summary: &Summary) {
+    let notes: Vec<(usize, &str)> = summary
+        .cycles
+        .iter()
+        .filter_map(|c| {
+            Some((
+                c.cycle,
+                c.aerodynamic.as_ref()?.section.as_ref()?.note.as_str(),
+            ))
+        })
+        .collect();
+    if notes.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        s,
+        "
+The 2D section model of each cycle's evaluations:
+"
+    );
+    for (cycle, note) in notes {
+        let _ = writeln!(s, "- cycle {cycle}: {note}");
     }
 }
 

@@ -1,0 +1,210 @@
+//! The flow model of the aerodynamic discipline's section analyses
+//! (`[design] section_model`), and what it leaves out of the section, for
+//! every report of the discipline's results.
+//!
+//! - [`SectionFlowModel::Ldvm`] (the default): the inviscid LDVM with
+//!   leading-edge shedding and a laminar friction estimate
+//!   ([`crate::aero2d::ldvm`]), of the deforming mid-line; a fraction of a
+//!   second an evaluation.
+//! - [`SectionFlowModel::Ns`]: laminar Navier–Stokes
+//!   ([`crate::aero2d::viscous`]) of a thin plate of finite thickness with
+//!   semicircular ends ([`ViscousPlate`]; the 0.1 mm membrane is far
+//!   thinner than the solver can grid); its forces include the friction.
+//!   It does not take a deformation history yet
+//!   ([`crate::aero2d::viscous::ViscousError::Deforming`]), so it analyses
+//!   the **rigid** section and every report says so
+//!   ([`ModelledSection`]). Cost: 845 s measured for the default section's
+//!   4 cycles at the default resolution on the 2-core development machine
+//!   (242,533 steps of 256 × 160 cells, [`ViscousSection::run`]), some
+//!   10,000 times the LDVM's.
+
+use serde::{Deserialize, Serialize};
+
+use crate::aero2d::viscous::{ViscousSection, ViscousShape};
+
+/// The model's name, as `[design] section_model` and the reports spell
+/// it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SectionModelName {
+    /// [`SectionFlowModel::Ldvm`].
+    #[default]
+    Ldvm,
+    /// [`SectionFlowModel::Ns`].
+    Ns,
+}
+
+impl SectionModelName {
+    /// The word of the setting and the reports: `"ldvm"` or `"ns"`.
+    pub fn word(self) -> &'static str {
+        match self {
+            Self::Ldvm => "ldvm",
+            Self::Ns => "ns",
+        }
+    }
+}
+
+/// The flow model of one section evaluation, with what it needs beyond
+/// the case (written with the case, so it is part of the evaluation
+/// cache's key: see [`super::cache`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "name", rename_all = "lowercase")]
+pub enum SectionFlowModel {
+    /// The LDVM of the deforming mid-line.
+    #[default]
+    Ldvm,
+    /// Laminar Navier–Stokes of this rigid plate at this resolution.
+    Ns(ViscousPlate),
+}
+
+impl SectionFlowModel {
+    /// The Navier–Stokes model of a plate `thickness` chords thick at the
+    /// default resolution.
+    pub fn ns(thickness: f64) -> Self {
+        Self::Ns(ViscousPlate::new(thickness))
+    }
+
+    /// Its name.
+    pub fn name(&self) -> SectionModelName {
+        match self {
+            Self::Ldvm => SectionModelName::Ldvm,
+            Self::Ns(_) => SectionModelName::Ns,
+        }
+    }
+
+    /// Whether this is the LDVM (then the case is written as before the
+    /// model existed, so older evaluation caches still match).
+    pub fn is_ldvm(&self) -> bool {
+        matches!(self, Self::Ldvm)
+    }
+
+    /// Whether the model takes the section's deformation history.
+    pub fn takes_deformation(&self) -> bool {
+        self.is_ldvm()
+    }
+}
+
+/// The Navier–Stokes model's thin plate and grid ([`ViscousSection`]'s
+/// fields for [`ViscousShape::Plate`]).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ViscousPlate {
+    /// Thickness, chords (0.005 to 0.3; the ends are semicircles).
+    pub thickness: f64,
+    /// Grid nodes round the plate.
+    pub around: usize,
+    /// Grid nodes from the wall to the outer boundary.
+    pub radial: usize,
+    /// Outer boundary, chords from mid-chord.
+    pub outer_chords: f64,
+    /// First cell at mid-chord, in boundary-layer thicknesses
+    /// `c / sqrt(Re)`.
+    pub first_cell_layers: f64,
+}
+
+impl ViscousPlate {
+    /// A plate `thickness` chords thick at [`ViscousSection::plate`]'s
+    /// default resolution (256 × 160 nodes out to 30 chords).
+    pub fn new(thickness: f64) -> Self {
+        let s = ViscousSection::plate(thickness);
+        Self {
+            thickness,
+            around: s.around,
+            radial: s.radial,
+            outer_chords: s.outer_chords,
+            first_cell_layers: s.first_cell_layers,
+        }
+    }
+
+    /// The solver's section.
+    pub fn section(&self) -> ViscousSection {
+        ViscousSection {
+            shape: ViscousShape::Plate(self.thickness),
+            around: self.around,
+            radial: self.radial,
+            outer_chords: self.outer_chords,
+            first_cell_layers: self.first_cell_layers,
+        }
+    }
+}
+
+/// The LDVM's net results of the initial design on the rigid and on the
+/// deforming section: the size of what a model that leaves the
+/// deformation out misses, by the model that takes it.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct DeformationEffect {
+    /// Net thrust coefficient, rigid section.
+    pub ct_net_rigid: f64,
+    /// Net thrust coefficient, deforming section.
+    pub ct_net_deforming: f64,
+    /// Net efficiency, rigid section.
+    pub efficiency_net_rigid: f64,
+    /// Net efficiency, deforming section.
+    pub efficiency_net_deforming: f64,
+}
+
+/// What the discipline's evaluations modelled of the section: written
+/// with its results (`fwav kinematics`, `kinematics.json`,
+/// `summary.json`, `report.md`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ModelledSection {
+    /// The flow model.
+    pub model: SectionModelName,
+    /// Whether the system analysis gave the section a deformation.
+    pub deformation_given: bool,
+    /// Whether the evaluations took it.
+    pub deformation_modelled: bool,
+    /// For a deformation given but not modelled: its effect on the
+    /// initial design by the LDVM (None if those runs failed).
+    pub ldvm_deformation_effect: Option<DeformationEffect>,
+    /// The above as a sentence, e.g. `"ns: rigid section, the
+    /// deformation is not modelled ..."`.
+    pub note: String,
+}
+
+impl ModelledSection {
+    /// The record of `model` on a section whose deformation was given or
+    /// not; `effect` is the LDVM's estimate of a deformation left out.
+    pub fn new(
+        model: &SectionFlowModel,
+        deformation_given: bool,
+        effect: Option<DeformationEffect>,
+    ) -> Self {
+        let deformation_modelled = deformation_given && model.takes_deformation();
+        let word = model.name().word();
+        let note = match (model, deformation_given) {
+            (SectionFlowModel::Ldvm, true) => {
+                format!("{word}: the section deforms as the system analysis found")
+            }
+            (SectionFlowModel::Ldvm, false) => {
+                format!("{word}: rigid flat section (no deformation given)")
+            }
+            (SectionFlowModel::Ns(p), false) => format!(
+                "{word}: rigid plate {} chords thick (no deformation given)",
+                p.thickness
+            ),
+            (SectionFlowModel::Ns(p), true) => format!(
+                "{word}: rigid section, the deformation is not modelled (plate {} chords thick); \
+                 {}",
+                p.thickness,
+                effect.map_or_else(
+                    || "the LDVM's estimate of its effect failed".to_string(),
+                    |e| format!(
+                        "by the LDVM, the deformation changes the initial design's net CT \
+                         {:.4} -> {:.4} and net efficiency {:.4} -> {:.4}",
+                        e.ct_net_rigid,
+                        e.ct_net_deforming,
+                        e.efficiency_net_rigid,
+                        e.efficiency_net_deforming
+                    )
+                )
+            ),
+        };
+        Self {
+            model: model.name(),
+            deformation_given,
+            deformation_modelled,
+            ldvm_deformation_effect: effect.filter(|_| deformation_given && !deformation_modelled),
+            note,
+        }
+    }
+}

@@ -1,0 +1,428 @@
+//! The aerodynamic discipline on the Navier–Stokes section model
+//! (`[design] section_model = "ns"`): the setting, the evaluation cache
+//! keeping the models apart, one evaluation end to end on a coarse grid,
+//! and the rigid-section limitation said wherever results are reported.
+
+use fwav::aero2d::theory::garrick_plunge;
+use fwav::aeroelastic::FlappingKinematics;
+use fwav::config::template::commented_toml;
+use fwav::config::SystemConfig;
+use fwav::discipline::cache::{key, EvaluationCache};
+use fwav::discipline::section::{EvaluationError, SectionCase, SectionResult};
+use fwav::discipline::section_model::{SectionFlowModel, SectionModelName, ViscousPlate};
+
+/// A 12 % plate on 64 × 64 nodes out to 15 chords, first cell a fifth of
+/// the boundary layer: coarse, for a test of seconds (the default is
+/// 256 × 160 out to 30 chords).
+fn coarse_plate() -> ViscousPlate {
+    ViscousPlate {
+        thickness: 0.12,
+        around: 48,
+        radial: 48,
+        outer_chords: 15.0,
+        first_cell_layers: 0.2,
+    }
+}
+
+/// The built-in mid-span section with the Navier–Stokes model of `plate`.
+fn ns_case(plate: ViscousPlate) -> SectionCase {
+    SectionCase {
+        model: SectionFlowModel::Ns(plate),
+        ..SectionCase::fwav_mid_span()
+    }
+}
+
+/// `section_model` reads "ldvm" (the default) or "ns", with the plate's
+/// thickness at the default resolution; `fwav init`'s template writes
+/// both keys with their docs.
+#[test]
+fn section_model_setting_chooses_the_model() {
+    let default = SystemConfig::from_toml("").unwrap();
+    assert_eq!(default.design.section_model, SectionModelName::Ldvm);
+    assert_eq!(default.section_case().model, SectionFlowModel::Ldvm);
+    let ns = SystemConfig::from_toml("[design]\nsection_model = \"ns\"\n").unwrap();
+    assert_eq!(
+        ns.section_case().model,
+        SectionFlowModel::Ns(ViscousPlate::new(0.04))
+    );
+    let thick =
+        SystemConfig::from_toml("[design]\nsection_model = \"ns\"\nns_thickness = 0.1\n").unwrap();
+    let SectionFlowModel::Ns(plate) = thick.section_case().model else {
+        panic!("not the NS model");
+    };
+    assert_eq!(
+        (plate.thickness, plate.around, plate.radial),
+        (0.1, 256, 160)
+    );
+    let template = commented_toml(&SystemConfig::default()).unwrap();
+    assert!(
+        template.contains("section_model = \"ldvm\"\n"),
+        "{template}"
+    );
+    assert!(template.contains("ns_thickness = 0.04\n"), "{template}");
+    assert!(
+        template.contains("\"ldvm\" or \"ns\".\nsection_model"),
+        "{template}"
+    );
+}
+
+/// An unknown model, a model that is not a word, and a plate thickness
+/// out of the solver's range are refused naming the key, the value and
+/// what is allowed.
+#[test]
+fn section_model_setting_refuses_bad_values() {
+    for (text, value) in [
+        ("section_model = \"navier\"", "\"navier\""),
+        ("section_model = 2", "2"),
+    ] {
+        let e = SystemConfig::from_toml(&format!("[design]\n{text}\n"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("design.section_model"), "{e}");
+        assert!(e.contains(value), "{e}");
+        assert!(e.contains("\"ldvm\" or \"ns\""), "{e}");
+    }
+    let e = SystemConfig::from_toml("[design]\nns_thickness = 0.001\n")
+        .unwrap_err()
+        .to_string();
+    assert_eq!(
+        e,
+        "design.ns_thickness = 0.001 is outside [0.005, 0.3] chords"
+    );
+}
+
+fn result(ct: f64) -> SectionResult {
+    SectionResult {
+        reduced_frequency: 0.69,
+        ct,
+        ct_net: ct,
+        cp: 1.0,
+        efficiency: ct,
+        efficiency_net: ct,
+        ct_change: 0.0,
+    }
+}
+
+/// The cache never serves one model's result for the other, nor one
+/// grid's for another's; the Navier–Stokes model's rigid result serves
+/// every deformation (it takes none), the LDVM's does not; an LDVM case
+/// is keyed as before the model existed (older cache files still match).
+#[test]
+fn evaluation_cache_keeps_the_models_apart() {
+    let design = FlappingKinematics::INITIAL;
+    let ldvm = SectionCase::fwav_mid_span();
+    let ns = ns_case(ViscousPlate::new(0.04));
+    let cache = EvaluationCache::new();
+    cache.insert(&ldvm, &design, result(0.5));
+    assert_eq!(cache.get(&ns, &design), None);
+    cache.insert(&ns, &design, result(0.3));
+    assert_eq!(cache.get(&ldvm, &design), Some(result(0.5)));
+    assert_eq!(cache.get(&ns, &design), Some(result(0.3)));
+    assert_eq!(cache.get(&ns_case(coarse_plate()), &design), None);
+    assert_eq!(cache.get(&ns_case(ViscousPlate::new(0.05)), &design), None);
+
+    let deformation = vec![vec![[0.0, 0.0], [0.5, 0.02], [1.0, 0.0]]; 8];
+    let deforming_ns = SectionCase {
+        deformation: deformation.clone(),
+        lesp_critical: Some(0.3),
+        ..ns.clone()
+    };
+    assert_eq!(cache.get(&deforming_ns, &design), Some(result(0.3)));
+    let deforming_ldvm = SectionCase {
+        deformation,
+        ..ldvm.clone()
+    };
+    assert_eq!(cache.get(&deforming_ldvm, &design), None);
+
+    let written = serde_json::to_value(&ldvm).unwrap();
+    assert!(written.get("model").is_none(), "{written}");
+    let read: SectionCase = serde_json::from_value(written).unwrap();
+    assert_eq!(read, ldvm);
+    let read: SectionCase = serde_json::from_value(serde_json::to_value(&ns).unwrap()).unwrap();
+    assert_eq!(read, ns);
+    assert_ne!(key(&ldvm, &design), key(&ns, &design));
+}
+
+/// One Navier–Stokes evaluation of the FWAV's mid-span section flapping
+/// at 11 Hz, ±30° in a vertical stroke plane (k = 0.69, a plunge of
+/// `r sin 30° = 0.63` chords, Strouhal number `2 f h / U = 0.27`), at its
+/// chord Reynolds number (12,300), through `SectionCase::evaluate`, on a
+/// coarse grid. What the physics fixes:
+/// - the section drives the air: mean power positive;
+/// - a plunging plate at Strouhal 0.27 makes thrust: Garrick's inviscid
+///   thrust of the equivalent harmonic plunge is more than ten times the
+///   laminar friction of two faces (`2 x 1.328 / sqrt(Re)`), both
+///   computed here: mean CT positive;
+/// - thrust power is less than the power put in (the rest is left in the
+///   wake and dissipated): efficiency below 1;
+/// - the forces include the friction: net CT is CT;
+/// - a different model from the LDVM: its CT differs by more than 1 %.
+#[test]
+fn ns_evaluation_of_a_flapping_section_end_to_end() {
+    let case = SectionCase {
+        cycles: 3,
+        ..ns_case(coarse_plate())
+    };
+    let kinematics = FlappingKinematics::from_degrees([11.0, 30.0, 0.0, 90.0]);
+    let clock = std::time::Instant::now();
+    let r = case.evaluate(&kinematics).unwrap();
+    let seconds = clock.elapsed().as_secs_f64();
+    let ldvm = SectionCase {
+        cycles: 3,
+        ..SectionCase::fwav_mid_span()
+    }
+    .evaluate(&kinematics)
+    .unwrap();
+    println!(
+        "NS ({seconds:.1} s, Re {:.0}): k {:.3}, CT {:.4}, CP {:.4}, efficiency {:.4}, CT change \
+         {:+.3}; LDVM: CT {:.4} (net {:.4}), CP {:.4}, net efficiency {:.4}",
+        case.reynolds(),
+        r.reduced_frequency,
+        r.ct,
+        r.cp,
+        r.efficiency,
+        r.ct_change,
+        ldvm.ct,
+        ldvm.ct_net,
+        ldvm.cp,
+        ldvm.efficiency_net
+    );
+    let (garrick, _, _) = garrick_plunge(
+        r.reduced_frequency,
+        case.radius / case.chord * 30f64.to_radians().sin(),
+    );
+    let friction = 2.0 * 1.328 / case.reynolds().sqrt();
+    println!("Garrick CT {garrick:.3}, laminar friction of two faces {friction:.4}");
+    assert!(garrick > 10.0 * friction);
+    assert!((r.reduced_frequency - ldvm.reduced_frequency).abs() < 1e-15);
+    assert!(r.cp > 0.0, "{r:?}");
+    assert!(r.ct > 0.0, "{r:?}");
+    assert!(r.efficiency > 0.0 && r.efficiency < 1.0, "{r:?}");
+    assert_eq!(r.ct_net, r.ct);
+    assert!((r.efficiency_net - r.efficiency).abs() < 1e-12 * r.efficiency);
+    assert!(
+        (r.ct - ldvm.ct_net).abs() > 0.01 * ldvm.ct_net.abs(),
+        "{r:?} {ldvm:?}"
+    );
+}
+
+/// A Navier–Stokes failure is the evaluation's error carrying the
+/// solver's (here a plate too thin to grid, refused before any step).
+#[test]
+fn ns_failure_is_an_evaluation_error() {
+    let case = ns_case(ViscousPlate {
+        thickness: 0.001,
+        ..coarse_plate()
+    });
+    let e = case.evaluate(&FlappingKinematics::INITIAL).unwrap_err();
+    assert!(
+        matches!(
+            &e,
+            EvaluationError::Viscous(fwav::aero2d::viscous::ViscousError::Thickness(t)) if *t == 0.001
+        ),
+        "{e:?}"
+    );
+    assert!(e.to_string().contains("plate thickness 0.001"), "{e}");
+}
+
+/// The rigid-section limitation is said, not silent: a deforming section
+/// given to the Navier–Stokes model is recorded as not modelled, with
+/// the LDVM's estimate of the deformation's effect on the design; the
+/// LDVM records it as modelled.
+#[test]
+fn ns_on_a_deforming_section_says_the_deformation_is_not_modelled() {
+    let deformation = breathing_section();
+    let design = FlappingKinematics::INITIAL;
+    let ns = SectionCase {
+        deformation: deformation.clone(),
+        ..ns_case(ViscousPlate::new(0.04))
+    };
+    let said = ns.modelled_section(&design);
+    println!("{}", said.note);
+    assert_eq!(said.model, SectionModelName::Ns);
+    assert!(said.deformation_given && !said.deformation_modelled);
+    assert!(
+        said.note
+            .starts_with("ns: rigid section, the deformation is not modelled"),
+        "{}",
+        said.note
+    );
+    let effect = said.ldvm_deformation_effect.expect("the LDVM's estimate");
+    assert_ne!(effect.ct_net_rigid, effect.ct_net_deforming);
+    let ldvm = SectionCase {
+        deformation,
+        ..SectionCase::fwav_mid_span()
+    }
+    .modelled_section(&design);
+    assert!(ldvm.deformation_modelled && ldvm.ldvm_deformation_effect.is_none());
+    let rigid_ns = ns_case(ViscousPlate::new(0.04)).modelled_section(&design);
+    assert!(!rigid_ns.deformation_given, "{}", rigid_ns.note);
+}
+
+/// A cambered mid-line breathing over the cycle (20 samples of 11
+/// points, chords), as a system analysis's `section.json` holds it.
+fn breathing_section() -> Vec<Vec<[f64; 2]>> {
+    (0..20)
+        .map(|i| {
+            let camber = 0.03 * (std::f64::consts::TAU * f64::from(i) / 20.0).sin();
+            (0..11)
+                .map(|j| {
+                    let x = f64::from(j) / 10.0;
+                    [x, 4.0 * camber * x * (1.0 - x)]
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// `fwav kinematics` with `section_model = "ns"` on a deforming section
+/// says in its text and its JSON that the section is rigid and the
+/// deformation not modelled. Its 21 evaluations come from a cache filled
+/// with stand-ins (a cheap LDVM discipline run's results stored under the
+/// Navier–Stokes case's key, so the run takes seconds; the Navier–Stokes
+/// evaluation itself is tested above): the discipline asks for the same
+/// designs given the same results, so it reuses all of them.
+#[test]
+fn kinematics_command_says_the_ns_section_is_rigid() {
+    use fwav::discipline::kinematic::{optimize, Weights};
+    use fwav::optimize::nsga2::Nsga2Config;
+    let dir = std::env::temp_dir().join(format!("fwav-discipline-ns-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let toml = "[design]\nsection_model = \"ns\"\n";
+    let config = SystemConfig::from_toml(toml).unwrap();
+    let stand_in = SectionCase {
+        cycles: 3,
+        steps_per_cycle: 20,
+        lesp_critical: None,
+        ..config.section_case()
+    };
+    let stand_in = SectionCase {
+        model: SectionFlowModel::Ldvm,
+        ..stand_in
+    };
+    let ldvm_cache = EvaluationCache::new();
+    let weights = Weights {
+        thrust: config.design.thrust_weight,
+        efficiency: config.design.efficiency_weight,
+    };
+    let nsga = Nsga2Config {
+        seed: config.design.seed,
+        ..Nsga2Config::default()
+    };
+    let space = config.design_space();
+    let ldvm = optimize(
+        &stand_in,
+        &space,
+        config.kinematics(),
+        weights,
+        &nsga,
+        &ldvm_cache,
+    )
+    .unwrap();
+    let ns_case = config.section_case();
+    let ns_cache = EvaluationCache::new();
+    let evaluated = std::iter::once(&ldvm.initial)
+        .chain(&ldvm.runs)
+        .chain(ldvm.candidates.iter().map(|c| &c.confirmation));
+    for e in evaluated {
+        ns_cache.insert(&ns_case, &e.design, *e.result.as_ref().unwrap());
+    }
+    let cache_file = dir.join("evaluations.json");
+    ns_cache.save(&cache_file).unwrap();
+    let section_file = dir.join("section.json");
+    let section = serde_json::json!({
+        "format": "fwav-section-history",
+        "format_version": 1,
+        "samples": breathing_section(),
+    });
+    std::fs::write(&section_file, section.to_string()).unwrap();
+    let config_file = dir.join("ns.toml");
+    std::fs::write(&config_file, toml).unwrap();
+
+    let run = |json: bool| {
+        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_fwav"));
+        command.arg("kinematics").arg("--config").arg(&config_file);
+        command.arg("--section").arg(&section_file);
+        command.arg("--cache").arg(&cache_file);
+        if json {
+            command.arg("--json");
+        }
+        let out = command.output().unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let text = run(false);
+    println!("{text}");
+    assert!(
+        text.starts_with("section model: ns: rigid section, the deformation is not modelled"),
+        "{text}"
+    );
+    let json: serde_json::Value = serde_json::from_str(&run(true)).unwrap();
+    assert_eq!(json["section"]["model"], "ns");
+    assert_eq!(json["result"]["section"]["deformation_modelled"], false);
+    assert!(json["result"]["section"]["note"]
+        .as_str()
+        .unwrap()
+        .starts_with("ns: rigid section, the deformation is not modelled"));
+    let cached = EvaluationCache::load(&cache_file).unwrap();
+    assert_eq!(cached.len(), ns_cache.len(), "no evaluation was run");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A design run's `report.md` says which 2D model each cycle's
+/// evaluations used and, for the Navier–Stokes model on the system
+/// analysis's deforming section, that the deformation is not modelled.
+#[test]
+fn design_report_says_the_ns_section_is_rigid() {
+    use fwav::discipline::section_model::ModelledSection;
+    use fwav::mdois::summary::{CycleSummary, KinematicsSummary, Summary};
+    let design = FlappingKinematics::INITIAL;
+    let said = ModelledSection::new(&SectionFlowModel::ns(0.04), true, None);
+    let summary = Summary {
+        format: "fwav-design-summary".into(),
+        format_version: 1,
+        finished: false,
+        outcome: "unfinished".into(),
+        converged_cycle: None,
+        max_cycles: 5,
+        kinematics_tolerance_of_range: 0.01,
+        layout_tolerance: 0.0,
+        cycles: vec![CycleSummary {
+            cycle: 1,
+            kinematics: design,
+            carbon_mass_fraction: 0.3,
+            system: None,
+            aerodynamic: Some(KinematicsSummary {
+                analysed_2d: None,
+                chosen: None,
+                proposed: design,
+                proposed_2d: None,
+                evaluations_reused: 0,
+                section: Some(said),
+                seconds: 1.0,
+                run: 1,
+            }),
+            structural: None,
+            change: None,
+            seconds: 1.0,
+        }],
+        initial: None,
+        final_design: None,
+        comparison: None,
+        stage_seconds: 1.0,
+        runs: 1,
+        actuator: None,
+    };
+    let report = fwav::mdois::output::report::markdown(&summary, &[], &[]);
+    assert!(
+        report.contains(
+            "- cycle 1: ns: rigid section, the deformation is not modelled (plate 0.04 chords \
+             thick); the LDVM's estimate of its effect failed\n"
+        ),
+        "{report}"
+    );
+}
