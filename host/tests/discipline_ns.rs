@@ -21,6 +21,7 @@ fn coarse_plate() -> ViscousPlate {
         radial: 48,
         outer_chords: 15.0,
         first_cell_layers: 0.2,
+        courant: fwav::aero2d::viscous::ViscousSection::DEFAULT_COURANT,
     }
 }
 

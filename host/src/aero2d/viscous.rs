@@ -263,12 +263,11 @@ impl ViscousSection {
     /// sampling the loads every `period / 200` (or `duration / 2000`
     /// without a period).
     ///
-    /// Cost: measured 80–85 ns per cell per step on the default FWAV
-    /// section (256 × 160, this 2-core machine, the wall's influence
-    /// matrix rebuilt at each shortening of the step; the solver alone is
-    /// about 30 ns on the cylinder); the number of steps is set by the
-    /// small cells at a thin section's ends (242,533 for that section's
-    /// 4 cycles; see [`ViscousError::TooManySteps`]).
+    /// Cost: measured 67 ns per cell per step (wall time, both cores of
+    /// this 2-core machine) on the default FWAV section, 256 × 160 cells;
+    /// the number of steps is set by the Courant number in the small
+    /// cells at a thin section's ends: 42,438 for that section's 4 cycles
+    /// at Courant number 2, 116 s (see [`ViscousError::TooManySteps`]).
     ///
     /// # Errors
     /// [`ViscousError`]: a bad thickness, the solver's, a time step that

@@ -13,10 +13,10 @@
 //!   It does not take a deformation history yet
 //!   ([`crate::aero2d::viscous::ViscousError::Deforming`]), so it analyses
 //!   the **rigid** section and every report says so
-//!   ([`ModelledSection`]). Cost: 845 s measured for the default section's
+//!   ([`ModelledSection`]). Cost: 116 s measured for the default section's
 //!   4 cycles at the default resolution on the 2-core development machine
-//!   (242,533 steps of 256 × 160 cells, [`ViscousSection::run`]), some
-//!   10,000 times the LDVM's.
+//!   (42,438 steps of 256 × 160 cells at Courant number 2,
+//!   [`ViscousSection::run`]), some 1,000 times the LDVM's.
 
 use serde::{Deserialize, Serialize};
 
@@ -99,6 +99,14 @@ pub struct ViscousPlate {
     /// First cell at mid-chord, in boundary-layer thicknesses
     /// `c / sqrt(Re)`.
     pub first_cell_layers: f64,
+    /// The largest Courant number of the time step.
+    #[serde(default = "default_courant")]
+    pub courant: f64,
+}
+
+/// [`ViscousSection::DEFAULT_COURANT`], for files without the key.
+fn default_courant() -> f64 {
+    ViscousSection::DEFAULT_COURANT
 }
 
 impl ViscousPlate {
@@ -112,6 +120,7 @@ impl ViscousPlate {
             radial: s.radial,
             outer_chords: s.outer_chords,
             first_cell_layers: s.first_cell_layers,
+            courant: s.courant,
         }
     }
 
@@ -123,6 +132,7 @@ impl ViscousPlate {
             radial: self.radial,
             outer_chords: self.outer_chords,
             first_cell_layers: self.first_cell_layers,
+            courant: self.courant,
         }
     }
 }
