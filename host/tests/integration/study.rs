@@ -14,7 +14,6 @@
 //! (`design.lesp_critical = 0`, which halves the aerodynamic
 //! discipline's time). About 22 s of CPU a case in the test profile.
 
-#[path = "study/cluster.rs"]
 mod cluster;
 
 use std::path::{Path, PathBuf};
@@ -26,7 +25,7 @@ use fwav::mdois::state::{RunState, Stage};
 use cluster::Cluster;
 
 /// The coarse design of the tests and the README.
-const COARSE: &str = include_str!("../../configs/coarse.toml");
+const COARSE: &str = include_str!("../../../configs/coarse.toml");
 
 /// The study: semi-span by flight speed, 2 x 2.
 const STUDY: &str = "[study]\nname = \"span-speed\"\nbase = \"small.toml\"\n\
