@@ -42,7 +42,7 @@ fn the_coarse_designs_kinematics_fly_in_hil_sim() {
     // converged: with one cycle allowed, the coarse design still changes
     // in cycle 1, and cycle 2 is only the system analysis of its
     // proposal, reported as the final design (checked here rather than by
-    // a run of its own in host/tests/design.rs).
+    // a run of its own in host/tests/integration/design.rs).
     assert!(
         matches!(run.outcome, Some(Outcome::CycleCap { max_cycles: 1 })),
         "{:?}",

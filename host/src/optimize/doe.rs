@@ -322,7 +322,7 @@ impl OrthogonalArray {
 /// columns B, D and E satisfy
 /// 1 + ½(b + d − e) − ½(b² + d² + e²) − bd + be + de = 0 in every run, so
 /// the quadratic model in any assignment containing B, D and E has rank one
-/// less than its term count (checked exactly in `host/tests/optimize.rs`).
+/// less than its term count (checked exactly in `host/tests/integration/optimize.rs`).
 /// Every other set of four of the columns B..H supports all 15 terms.
 /// More than 4 factors cannot: 21 terms exceed the 17 that 18 runs allow.
 pub fn l18_quadratic_columns(k: usize) -> Result<Vec<usize>, DoeError> {

@@ -30,7 +30,7 @@
 //! Axes: x chordwise (the freestream direction), y spanwise (root to tip),
 //! z up. SI units.
 //!
-//! Validation (tests/uvlm.rs): the sudden start of rectangular wings
+//! Validation (tests/integration/uvlm.rs): the sudden start of rectangular wings
 //! against Katz & Plotkin's Program 16 (their Fig. 13.34), a heaving
 //! large-aspect-ratio plate against Garrick's thrust and Theodorsen's
 //! lift, the cost of wake truncation and partial rollup, and convergence

@@ -85,7 +85,7 @@ impl UvlmSettings {
     /// core scales with the wake panels; set it explicitly for a hovering
     /// wing, where it would be zero), [`PotentialRate::NeighbourMean`] and
     /// [`TimeDerivative::SecondOrder`] (the most accurate pair against
-    /// Theodorsen's lift and Garrick's power, tests/uvlm.rs).
+    /// Theodorsen's lift and Garrick's power, tests/integration/uvlm.rs).
     pub fn new(dt: f64, density: f64, freestream: Vector3<f64>) -> Self {
         Self {
             dt,

@@ -2,7 +2,7 @@
 //! ([`crate::optimize`]): the Taguchi L18 against its printed table and
 //! its defining property, the quadratic response surface against exact
 //! data, and NSGA-II against the analytic Pareto fronts of ZDT1 and ZDT3
-//! (settings and seeds of `tests/optimize.rs`). All quantities are
+//! (settings and seeds of `tests/integration/optimize.rs`). All quantities are
 //! dimensionless counts or objective-space distances.
 
 use rayon::prelude::*;

@@ -2,7 +2,7 @@
 //! classical plate and shell solutions: Timoshenko's square plates,
 //! Leissa's cantilever plate frequencies, the Scordelis–Lo roof, Sze, Liu
 //! & Lo's geometrically nonlinear strips and the NAFEMS 21T transient.
-//! Meshes, load steps and time steps are those of `tests/shell.rs`.
+//! Meshes, load steps and time steps are those of `tests/integration/shell.rs`.
 //! SI units unless a benchmark is stated in consistent units of its own
 //! (Scordelis–Lo, Sze–Liu–Lo).
 

@@ -1,7 +1,7 @@
 //! Validation of the unsteady vortex-lattice method ([`crate::uvlm`]):
 //! the sudden start of a rectangular wing against Katz & Plotkin's own
 //! Program 16, and a heaving plate of large aspect ratio against Garrick's
-//! thrust. Lattices and steps are those of `tests/uvlm.rs`. Lengths in
+//! thrust. Lattices and steps are those of `tests/integration/uvlm.rs`. Lengths in
 //! chords, the freestream along +x; coefficients on the (semi-span) wing
 //! area.
 

@@ -1,8 +1,13 @@
 //! The aerodynamic discipline's evaluation: the flapping mid-span section
 //! in 2D.
 
+use std::path::PathBuf;
+use std::sync::OnceLock;
+
 use fwav::aero2d::theory::garrick_plunge;
 use fwav::aeroelastic::{FlappingKinematics, FlightCondition};
+use fwav::discipline::cache::EvaluationCache;
+use fwav::discipline::kinematic::KinematicResult;
 use fwav::discipline::section::{EvaluationError, SectionCase, FWAV_LESP_CRITICAL};
 
 /// The physical-to-reduced mapping, against Garrick (1936): a vertical
@@ -124,10 +129,7 @@ fn section_evaluation_refuses_bad_input() {
 
 /// The discipline over the built-in design space from the initial design,
 /// equal weights, default NSGA-II, evaluations through `cache`.
-fn equal_weights(
-    case: &SectionCase,
-    cache: &fwav::discipline::cache::EvaluationCache,
-) -> fwav::discipline::kinematic::KinematicResult {
+fn equal_weights(case: &SectionCase, cache: &EvaluationCache) -> KinematicResult {
     use fwav::discipline::kinematic::{optimize, DesignSpace, Weights};
     use fwav::optimize::nsga2::Nsga2Config;
     optimize(
@@ -144,6 +146,46 @@ fn equal_weights(
     .unwrap()
 }
 
+/// The discipline's run by [`equal_weights`] on the FWAV's mid-span
+/// section from an empty cache, made once for the tests of this module.
+struct EqualWeightsRun {
+    case: SectionCase,
+    result: KinematicResult,
+    /// Its evaluations (the initial design, the 18 array rows and the
+    /// confirmations), which the other discipline tests read: each of
+    /// their evaluations of the same section and design is one of these,
+    /// bit for bit, so they compute only their own.
+    cache: EvaluationCache,
+    /// How many evaluations the run made, and the file they were saved
+    /// to right after it (before any other test could add to `cache`).
+    evaluations: usize,
+    file: PathBuf,
+    seconds: f64,
+}
+
+/// The run (about 10 s on 2 cores), made by whichever test needs it
+/// first; the others wait for it.
+fn equal_weights_run() -> &'static EqualWeightsRun {
+    static RUN: OnceLock<EqualWeightsRun> = OnceLock::new();
+    RUN.get_or_init(|| {
+        let case = SectionCase::fwav_mid_span();
+        let cache = EvaluationCache::new();
+        let started = std::time::Instant::now();
+        let result = equal_weights(&case, &cache);
+        let seconds = started.elapsed().as_secs_f64();
+        let file = std::env::temp_dir().join(format!("fwav-cache-{}.json", std::process::id()));
+        cache.save(&file).unwrap();
+        EqualWeightsRun {
+            case,
+            result,
+            evaluations: cache.len(),
+            cache,
+            file,
+            seconds,
+        }
+    })
+}
+
 /// The whole aerodynamic discipline on the FWAV's rigid mid-span section
 /// (L18 → best row, ANOM + confirmation, RSM + NSGA-II + confirmation):
 /// the chosen kinematics beat the initial design in the combined objective
@@ -152,12 +194,14 @@ fn equal_weights(
 /// confirmation run's value, not a prediction.
 #[test]
 fn kinematic_discipline_beats_the_initial_design() {
-    use fwav::discipline::cache::EvaluationCache;
-    let case = SectionCase::fwav_mid_span();
-    let cache = EvaluationCache::new();
-    let started = std::time::Instant::now();
-    let result = equal_weights(&case, &cache);
-    let seconds = started.elapsed().as_secs_f64();
+    let EqualWeightsRun {
+        case,
+        result,
+        evaluations,
+        file,
+        seconds,
+        ..
+    } = equal_weights_run();
     let initial = result.initial.result.as_ref().unwrap();
     println!(
         "initial: CT {:.4}, efficiency {:.3}; surfaces R² CT {:.3} (adj {:.3}), eta {:.3} (adj {:.3}); {} Pareto points; {:.1} s",
@@ -194,33 +238,33 @@ fn kinematic_discipline_beats_the_initial_design() {
 
     // A rerun takes every evaluation from the cache (1 + 18 + 2 runs),
     // through a file, and gives the same answer.
-    let path = std::env::temp_dir().join(format!("fwav-cache-{}.json", std::process::id()));
-    cache.save(&path).unwrap();
-    let reloaded = EvaluationCache::load(&path).unwrap();
-    assert_eq!(reloaded.len(), cache.len());
+    let reloaded = EvaluationCache::load(file).unwrap();
+    assert_eq!(reloaded.len(), *evaluations);
     let started = std::time::Instant::now();
-    let rerun = equal_weights(&case, &reloaded);
+    let rerun = equal_weights(case, &reloaded);
     println!(
         "rerun from the cache ({} evaluations): {:.2} s",
         reloaded.len(),
         started.elapsed().as_secs_f64()
     );
-    assert_eq!(reloaded.len(), cache.len());
+    assert_eq!(reloaded.len(), *evaluations);
     // (JSON keeps the values to the last bit or so.)
     assert_eq!(rerun.chosen, result.chosen);
     for (a, b) in rerun.candidates.iter().zip(&result.candidates) {
         assert!((a.combined.unwrap() - b.combined.unwrap()).abs() < 1e-12);
     }
-    std::fs::remove_file(&path).ok();
+    std::fs::remove_file(file).ok();
 }
 
 /// A failed evaluation is recorded with its reason and the discipline goes
 /// on: with the stroke plane's high level at 190° (outside the kinematics'
 /// range) the six array runs at that level fail, say why, count as the
 /// worst response, and the candidates are still found and confirmed.
+/// The twelve rows at the other levels, and the initial design, are the
+/// equal-weights run's and come from its cache (failures are never
+/// cached: the six are run).
 #[test]
 fn failed_evaluations_are_recorded_and_the_discipline_goes_on() {
-    use fwav::discipline::cache::EvaluationCache;
     use fwav::discipline::kinematic::{optimize, DesignSpace, Weights};
     use fwav::optimize::nsga2::Nsga2Config;
     let space = DesignSpace {
@@ -239,7 +283,7 @@ fn failed_evaluations_are_recorded_and_the_discipline_goes_on() {
             generations: 50,
             ..Nsga2Config::default()
         },
-        &EvaluationCache::new(),
+        &equal_weights_run().cache,
     )
     .unwrap();
     let failed: Vec<&String> = result
@@ -263,11 +307,12 @@ fn failed_evaluations_are_recorded_and_the_discipline_goes_on() {
 /// 11·30)² ≈ 2.5 times the initial's) is not. Every candidate carries its
 /// violation, the chosen one is feasible on the same vehicle's check, the
 /// Pareto front holds only feasible designs, and the constraint binds
-/// (some L18 rows are infeasible).
+/// (some L18 rows are infeasible). The evaluations the equal-weights run
+/// made (the 18 rows) come from its cache; the constraint changes the
+/// candidates, not the evaluations.
 #[test]
 fn kinematic_discipline_never_proposes_an_infeasible_design() {
     use fwav::config::SystemConfig;
-    use fwav::discipline::cache::EvaluationCache;
     use fwav::discipline::kinematic::{optimize_feasible, DesignSpace, Weights};
     use fwav::optimize::nsga2::Nsga2Config;
     use fwav::vehicle::Vehicle;
@@ -306,7 +351,7 @@ fn kinematic_discipline_never_proposes_an_infeasible_design() {
             generations: 60,
             ..Nsga2Config::default()
         },
-        &EvaluationCache::new(),
+        &equal_weights_run().cache,
         &|k: &FlappingKinematics| vehicle.violation(k),
     )
     .unwrap();

@@ -222,7 +222,7 @@ fn aero2d_runs_the_viscous_model() {
 /// at 3 m/s; 11 Hz, +-30 deg, stroke plane 90 deg), rigid, as a 4 % plate
 /// at the default resolution (256 x 160), under 60 s on this machine.
 /// Ignored: a benchmark of minutes; run with
-/// `cargo test --release -p fwav --test viscous_section -- --ignored --nocapture`
+/// `cargo test --release -p fwav --test integration viscous_section:: -- --ignored --nocapture`
 /// (`FWAV_NS_CYCLES=0.25` runs part of it, to see the step it takes;
 /// `FWAV_NS_THICKNESS` sets the plate's thickness, `FWAV_NS_COURANT` the
 /// step's Courant number, `FWAV_NS_AROUND` and `FWAV_NS_RADIAL` the grid,

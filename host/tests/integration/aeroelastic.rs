@@ -196,7 +196,7 @@ fn mean_subiterations(r: &SystemResult) -> f64 {
 /// smaller than the first). Doubling instead (4 x 8, 8 x 16, 16 x 32)
 /// gave -2.03% then +0.45%, which puts the 8 x 16 default within about
 /// half a percent of the lattice limit (the heaving plate of
-/// `tests/uvlm.rs` converges to 0.4%), but that form of the test took 48 s
+/// `uvlm.rs` converges to 0.4%), but that form of the test took 48 s
 /// here against this one's 18 s. With the former 0.01 c vortex core the
 /// doubling's changes were -1.80% and -0.47%, -4.17% and -1.95%: the
 /// thinner cores of the wake passing the wing made the answer depend more
@@ -301,7 +301,7 @@ fn drive_power_balances_the_aerodynamic_power() {
 #[test]
 #[ignore = "heavy: the full-size coupled analysis, about 30 s in release (cargo test --release -- --ignored)"]
 fn system_analysis_flies_the_first_eslso_layout() {
-    let text = include_str!("data/default_wing_first_eslso_layout.json");
+    let text = include_str!("../data/default_wing_first_eslso_layout.json");
     let value: serde_json::Value = serde_json::from_str(text).unwrap();
     let carbon: Vec<f64> = serde_json::from_value(value["carbon"].clone()).unwrap();
     let wing = WingModel::new(

@@ -20,7 +20,7 @@ use fwav::mdois::state::RunState;
 use fwav::mdois::{start, RunOptions};
 
 /// The coarse design of the tests and the README (documented in the file).
-const COARSE: &str = include_str!("../../configs/coarse.toml");
+const COARSE: &str = include_str!("../../../configs/coarse.toml");
 
 /// How long a command that must be refused at once may take.
 const REFUSAL: Duration = Duration::from_secs(30);

@@ -14,7 +14,7 @@ use fwav::mdois::summary::Summary;
 use fwav::mdois::{resume, start, DesignError, Outcome, RunOptions, Stage};
 
 /// The coarse design of the tests and the README (documented in the file).
-const COARSE: &str = include_str!("../../configs/coarse.toml");
+const COARSE: &str = include_str!("../../../configs/coarse.toml");
 
 fn coarse() -> SystemConfig {
     SystemConfig::from_toml(COARSE).unwrap()

@@ -2,7 +2,6 @@
 
 use std::process::Command;
 
-#[path = "cli/fly.rs"]
 mod fly;
 
 fn fwav(args: &[&str]) -> std::process::Output {

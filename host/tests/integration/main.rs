@@ -1,0 +1,30 @@
+//! The host's integration tests, as one test binary: each module was a
+//! file of its own under `host/tests/` and keeps its name, so
+//! `cargo test -p fwav --test integration design::` runs one group. One
+//! binary links the `fwav` library and its heavy dependencies (faer,
+//! nalgebra, plotters, rayon) once instead of once a file, and its test
+//! threads take the tests of every module, so a long test of one module
+//! no longer leaves a core idle while the next file waits (CI's time).
+//!
+//! The modules share one process: their scratch files carry the module's
+//! own prefix besides the process id, and none sets an environment
+//! variable, changes the current directory or installs a global
+//! subscriber.
+
+mod aero2d;
+mod aero2d_panel;
+mod aeroelastic;
+mod cli;
+mod cli_messages;
+mod design;
+mod design_safety;
+mod discipline;
+mod discipline_ns;
+mod input_checks;
+mod optimize;
+mod shell;
+mod study;
+mod topology;
+mod uvlm;
+mod validate;
+mod viscous_section;
