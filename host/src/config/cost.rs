@@ -192,15 +192,19 @@ mod tests {
         assert!(!CostEstimate::of(&coarse).is_far_beyond_default());
     }
 
-    /// The Navier–Stokes section model makes the built-in design far
-    /// beyond its LDVM run, and says why.
+    /// The Navier–Stokes section model's evaluations are in the built-in
+    /// design's estimate, which says what they cost. At 116 s each they
+    /// make it about 7.6 times the LDVM run: not far beyond it (845 s
+    /// each, before the solver's implicit advection, made it 49 times).
     #[test]
-    fn the_ns_section_model_is_far_beyond_the_default() {
+    fn the_ns_section_model_is_in_the_estimate() {
         let mut ns = SystemConfig::default();
         ns.design.section_model = SectionModelName::Ns;
         let e = CostEstimate::of(&ns);
-        assert!(e.is_far_beyond_default(), "{e}");
         assert_eq!(e.section_seconds, NS_EVALUATIONS * NS_EVALUATION_SECONDS);
+        let ldvm = CostEstimate::of(&SystemConfig::default());
+        assert!((e.seconds - ldvm.seconds - e.section_seconds).abs() < 1e-9);
+        assert!(e.time_ratio > 5.0 && !e.is_far_beyond_default(), "{e}");
         assert!(e.to_string().contains("Navier–Stokes"), "{e}");
     }
 }
