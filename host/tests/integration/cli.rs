@@ -2,8 +2,6 @@
 
 use std::process::Command;
 
-mod fly;
-
 fn fwav(args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_fwav"))
         .args(args)
