@@ -85,7 +85,14 @@ pub struct StreamSolver {
     modes: usize,
     forward: Arc<dyn RealToComplex<f64>>,
     inverse: Arc<dyn ComplexToReal<f64>>,
-    factors: Vec<ModeFactors>,
+    /// Mode 0's factors (its wall row is the mean no-slip one).
+    mean_factors: ModeFactors,
+    /// The other modes' factors laid out like the spectrum (entry
+    /// `j * modes + m` for the row of ring `j`, `1 <= j <= nr - 2`), so
+    /// that their eliminations run side by side along the rings.
+    mode_lower: Vec<f64>,
+    mode_inv_pivot: Vec<f64>,
+    mode_upper: Vec<f64>,
     /// The radial coefficients of `ψ_{j-1}` and `ψ_{j+1}` in every row
     /// (the same in all rows: the stretching is exponential).
     lower_coefficient: f64,
@@ -95,8 +102,8 @@ pub struct StreamSolver {
     /// `g'²` per radial node.
     slope2: Vec<f64>,
     spectrum: Vec<Complex64>,
-    /// The spectrum transposed: one column of `N_r` per mode.
-    columns: Vec<Complex64>,
+    /// Mode 0's column.
+    mean_column: Vec<Complex64>,
     ring: Vec<f64>,
     ring_spec: Vec<Complex64>,
     fft_scratch: Vec<Complex64>,
@@ -154,6 +161,19 @@ impl StreamSolver {
                 factors.push(ModeFactors::new(lower, &diag, &upper));
             }
         }
+        let mean_factors = factors.remove(0);
+        let mut mode_lower = vec![0.0; nr * modes];
+        let mut mode_inv_pivot = vec![0.0; nr * modes];
+        let mut mode_upper = vec![0.0; nr * modes];
+        for (i, f) in factors.iter().enumerate() {
+            let m = i + 1;
+            for r in 0..nr - 2 {
+                let at = (r + 1) * modes + m;
+                mode_lower[at] = f.lower[r];
+                mode_inv_pivot[at] = f.inv_pivot[r];
+                mode_upper[at] = f.upper_mod[r];
+            }
+        }
         let fft_scratch = forward.make_scratch_vec();
         let fft_scratch = if fft_scratch.len() < inverse.get_scratch_len() {
             inverse.make_scratch_vec()
@@ -166,13 +186,16 @@ impl StreamSolver {
             modes,
             forward,
             inverse,
-            factors,
+            mean_factors,
+            mode_lower,
+            mode_inv_pivot,
+            mode_upper,
             lower_coefficient: a,
             wall_weights: wall_slope_weights(grid.xi[1], grid.xi[2]),
             upper_coefficient: c,
             slope2,
             spectrum: vec![Complex64::new(0.0, 0.0); modes * nr],
-            columns: vec![Complex64::new(0.0, 0.0); modes * nr],
+            mean_column: vec![Complex64::new(0.0, 0.0); nr],
             ring: vec![0.0; nt],
             ring_spec: vec![Complex64::new(0.0, 0.0); modes],
             fft_scratch,
@@ -183,7 +206,7 @@ impl StreamSolver {
     /// nodes, the wall's streamfunction up to a constant, the wall's mean
     /// `ψ_ξ` and the outer ring's streamfunction (module docs). The
     /// rings' transforms and the modes' radial systems run in parallel
-    /// (the modes as columns of a transposed copy of the spectrum).
+    /// (the modes side by side along the rings, in blocks).
     pub fn solve(
         &mut self,
         source: &[f64],
@@ -215,52 +238,74 @@ impl StreamSolver {
             );
         let wall = self.modes_of(wall_shape);
         let outer_modes = self.modes_of(outer);
-        // The radial system of each mode, on the transposed spectrum.
-        let spectrum = &self.spectrum;
-        let factors = &self.factors;
         let (lower_c, upper_c, w2) = (
             self.lower_coefficient,
             self.upper_coefficient,
             self.wall_weights[2],
         );
-        self.columns
-            .par_chunks_mut(nr)
-            .enumerate()
-            .for_each(|(m, column)| {
-                for (j, c) in column.iter_mut().enumerate() {
-                    *c = spectrum[j * modes + m];
+        // Mode 0: the wall row (see `new`) less row 1's right-hand side
+        // times the eliminated weight; rows 1..nr-2; the outer value
+        // given.
+        let column = &mut self.mean_column;
+        for (j, c) in column.iter_mut().enumerate() {
+            *c = self.spectrum[j * modes];
+        }
+        let n = nr - 1;
+        column[0] =
+            Complex64::new(wall_slope_mean * nt as f64, 0.0) - column[1] * (w2 / upper_c);
+        column[n - 1] -= outer_modes[0] * upper_c;
+        self.mean_factors.solve(&mut column[..n]);
+        column[nr - 1] = outer_modes[0];
+        for (j, c) in column.iter().enumerate() {
+            self.spectrum[j * modes] = *c;
+        }
+        // The other modes' radial systems side by side along the rings,
+        // blocks of modes in parallel: wall and outer values given.
+        let (lower, inv_pivot, upper) = (&self.mode_lower, &self.mode_inv_pivot, &self.mode_upper);
+        let bounds = mode_blocks(modes);
+        ring_pieces(&mut self.spectrum, modes, &bounds)
+            .into_par_iter()
+            .zip(bounds[..bounds.len() - 1].par_iter())
+            .for_each(|(mut rows, &m0)| {
+                let width = rows[0].len();
+                let (wall, outer) = (&wall[m0..m0 + width], &outer_modes[m0..m0 + width]);
+                for (i, v) in rows[1].iter_mut().enumerate() {
+                    *v -= wall[i] * lower_c;
                 }
-                if m == 0 {
-                    // The wall row (see `new`) less row 1's right-hand
-                    // side times the eliminated weight; rows 1..nr-2; the
-                    // outer value given.
-                    let n = nr - 1;
-                    column[0] = Complex64::new(wall_slope_mean * nt as f64, 0.0)
-                        - column[1] * (w2 / upper_c);
-                    column[n - 1] -= outer_modes[0] * upper_c;
-                    factors[0].solve(&mut column[..n]);
-                } else {
-                    let n = nr - 2;
-                    column[1] -= wall[m] * lower_c;
-                    column[n] -= outer_modes[m] * upper_c;
-                    factors[m].solve(&mut column[1..=n]);
-                    column[0] = wall[m];
+                for (i, v) in rows[nr - 2].iter_mut().enumerate() {
+                    *v -= outer[i] * upper_c;
                 }
-                column[nr - 1] = outer_modes[m];
+                // Row 1's lower coefficient is zero (the wall is given).
+                for j in 1..=nr - 2 {
+                    let (done, rest) = rows.split_at_mut(j);
+                    let (prev, row) = (&*done[j - 1], &mut *rest[0]);
+                    let at = j * modes + m0;
+                    let (lo, inv) = (&lower[at..at + width], &inv_pivot[at..at + width]);
+                    for i in 0..width {
+                        row[i] = (row[i] - prev[i] * lo[i]) * inv[i];
+                    }
+                }
+                for j in (1..nr - 2).rev() {
+                    let (lo, hi) = rows.split_at_mut(j + 1);
+                    let (row, next) = (&mut *lo[j], &*hi[0]);
+                    let at = j * modes + m0;
+                    let up = &upper[at..at + width];
+                    for i in 0..width {
+                        row[i] -= next[i] * up[i];
+                    }
+                }
+                rows[0].copy_from_slice(wall);
+                rows[nr - 1].copy_from_slice(outer);
             });
-        // Back to rings, and each ring's inverse transform.
-        let (columns, inverse) = (&self.columns, &self.inverse);
+        // Each ring's inverse transform.
+        let inverse = &self.inverse;
         let scale = 1.0 / nt as f64;
         self.spectrum
             .par_chunks_mut(modes)
             .zip(psi.par_chunks_mut(nt))
-            .enumerate()
             .for_each_init(
                 || vec![Complex64::new(0.0, 0.0); scratch_len],
-                |scratch, (j, (row, out))| {
-                    for (m, v) in row.iter_mut().enumerate() {
-                        *v = columns[m * nr + j];
-                    }
+                |scratch, (row, out)| {
                     row[0].im = 0.0;
                     row[modes - 1].im = 0.0;
                     let _ = inverse.process_with_scratch(row, out, scratch);
@@ -296,6 +341,35 @@ impl StreamSolver {
             .inverse
             .process_with_scratch(&mut spec, out, &mut self.fft_scratch);
     }
+}
+
+/// The bounds of the blocks of modes `1..modes` solved in parallel: one
+/// per worker thread.
+fn mode_blocks(modes: usize) -> Vec<usize> {
+    let blocks = rayon::current_num_threads().clamp(1, modes - 1);
+    (0..=blocks).map(|b| 1 + b * (modes - 1) / blocks).collect()
+}
+
+/// Each ring of `data` (rings of `modes`) cut at the modes `bounds`: per
+/// block, its pieces of every ring.
+fn ring_pieces<'a>(
+    data: &'a mut [Complex64],
+    modes: usize,
+    bounds: &[usize],
+) -> Vec<Vec<&'a mut [Complex64]>> {
+    let blocks = bounds.len() - 1;
+    let mut out: Vec<Vec<&mut [Complex64]>> = (0..blocks)
+        .map(|_| Vec::with_capacity(data.len() / modes))
+        .collect();
+    for ring in data.chunks_mut(modes) {
+        let (_, mut rest) = ring.split_at_mut(bounds[0]);
+        for (b, block) in out.iter_mut().enumerate() {
+            let (piece, tail) = rest.split_at_mut(bounds[b + 1] - bounds[b]);
+            block.push(piece);
+            rest = tail;
+        }
+    }
+    out
 }
 
 #[cfg(test)]

@@ -87,6 +87,98 @@ impl<'a> Faces<'a> {
     }
 }
 
+/// One row of radial faces, read ([`RadialFaces::faces`]).
+pub(super) struct FaceRow<'a> {
+    speed: &'a [f64],
+    first: &'a [f64],
+    correction: &'a [f64],
+    weight: &'a [f64],
+}
+
+/// The radial faces of a step, each computed once: row `j` (for `j` in
+/// `1..nr - 1`) the faces between rings `j` and `j + 1` and the corners
+/// `(j + ½, k + ½)` they run between ([`RateRows::corners`]); ring 1's
+/// lower corners are the wall's, and its lower face is the wall's, which
+/// no flux crosses (row 0 is not used). Reused from step to step.
+pub(super) struct RadialFaces {
+    nt: usize,
+    corners: Vec<f64>,
+    wall: Vec<f64>,
+    speed: Vec<f64>,
+    first: Vec<f64>,
+    correction: Vec<f64>,
+    weight: Vec<f64>,
+    /// A row of zeros: the wall's face, which no flux crosses.
+    zero: Vec<f64>,
+}
+
+impl RadialFaces {
+    /// Storage for a grid of `nt` nodes round and `nr` rings.
+    pub(super) fn new(nt: usize, nr: usize) -> Self {
+        let rows = (nr - 1) * nt;
+        Self {
+            nt,
+            corners: vec![0.0; rows],
+            wall: vec![0.0; nt],
+            speed: vec![0.0; rows],
+            first: vec![0.0; rows],
+            correction: vec![0.0; rows],
+            weight: vec![0.0; rows],
+            zero: vec![0.0; nt],
+        }
+    }
+
+    /// Every row of `rows`'s flow (rows in parallel).
+    fn fill(&mut self, rows: &RateRows<'_>) {
+        let nt = self.nt;
+        rows.corners(usize::MAX, &mut self.wall);
+        self.corners
+            .par_chunks_mut(nt)
+            .zip(self.speed.par_chunks_mut(nt))
+            .zip(self.first.par_chunks_mut(nt))
+            .zip(self.correction.par_chunks_mut(nt))
+            .zip(self.weight.par_chunks_mut(nt))
+            .enumerate()
+            .skip(1)
+            .for_each(|(j, ((((corners, speed), first), correction), weight))| {
+                rows.corners(j, corners);
+                let mut faces = Faces {
+                    speed,
+                    first,
+                    correction,
+                    weight,
+                };
+                rows.radial_faces(j, corners, &mut faces);
+            });
+    }
+
+    /// The corners of row `j`.
+    fn corners(&self, j: usize) -> &[f64] {
+        &self.corners[j * self.nt..(j + 1) * self.nt]
+    }
+
+    /// The faces of row `j`.
+    fn faces(&self, j: usize) -> FaceRow<'_> {
+        let r = j * self.nt..(j + 1) * self.nt;
+        FaceRow {
+            speed: &self.speed[r.clone()],
+            first: &self.first[r.clone()],
+            correction: &self.correction[r.clone()],
+            weight: &self.weight[r],
+        }
+    }
+
+    /// The wall's face: no flux.
+    fn zero_faces(&self) -> FaceRow<'_> {
+        FaceRow {
+            speed: &self.zero,
+            first: &self.zero,
+            correction: &self.zero,
+            weight: &self.zero,
+        }
+    }
+}
+
 /// The rates of one ring (see [`RateRows::row`]).
 pub(super) struct RingRates<'a> {
     /// `(A₃ - A₁) ω`: the explicit correction (Adams–Bashforth).
@@ -206,31 +298,25 @@ impl RateRows<'_> {
         }
     }
 
-    /// Ring `j` (`1 <= j < nr - 1`) of the rates ([`RingRates`]);
-    /// `scratch` fourteen work rings.
-    pub(super) fn row(&self, j: usize, scratch: &mut [f64], out: RingRates<'_>) {
+    /// Ring `j` (`1 <= j < nr - 1`) of the rates ([`RingRates`]), from
+    /// the radial faces and corners of [`RadialFaces`]; `scratch` four
+    /// work rings (the ring faces).
+    pub(super) fn row(
+        &self,
+        j: usize,
+        radial: &RadialFaces,
+        scratch: &mut [f64],
+        out: RingRates<'_>,
+    ) {
         let nt = self.nt;
-        let (lower, rest) = scratch.split_at_mut(nt);
-        let (upper, rest) = rest.split_at_mut(nt);
-        let (mut above, rest) = Faces::split(rest, nt);
-        let (mut below, rest) = Faces::split(rest, nt);
-        let (mut round, _) = Faces::split(rest, nt);
-        self.corners(j, upper);
-        if j == 1 {
-            self.corners(usize::MAX, lower);
-            for face in [
-                &mut *below.speed,
-                below.first,
-                below.correction,
-                below.weight,
-            ] {
-                face.fill(0.0);
-            }
+        let (mut round, _) = Faces::split(scratch, nt);
+        let upper = radial.corners(j);
+        let above = radial.faces(j);
+        let (lower, below) = if j == 1 {
+            (&radial.wall[..], radial.zero_faces())
         } else {
-            self.corners(j - 1, lower);
-            self.radial_faces(j - 1, lower, &mut below);
-        }
-        self.radial_faces(j, upper, &mut above);
+            (radial.corners(j - 1), radial.faces(j - 1))
+        };
         self.ring_faces(j, lower, upper, &mut round);
         let w0 = self.ring(self.w, j);
         let (w_below, w_above) = (self.ring(self.w, j - 1), self.ring(self.w, j + 1));
@@ -276,9 +362,10 @@ impl<M: Motion> Flow<M> {
     pub(super) fn advection_rates(&mut self, dt: f64) {
         let g = &self.grid;
         let (nt, nr) = (g.nt, g.nr);
-        for (i, r) in self.relative.iter_mut().enumerate() {
-            *r = self.psi[i] - self.frame_psi[i];
-        }
+        self.relative
+            .par_iter_mut()
+            .zip(self.psi.par_iter().zip(self.frame_psi.par_iter()))
+            .for_each(|(r, (p, f))| *r = p - f);
         let rows = RateRows {
             nt,
             nr,
@@ -294,6 +381,8 @@ impl<M: Motion> Flow<M> {
             inv_jac: &g.inv_jac,
             inv_cell: &self.inv_cell,
         };
+        let mut radial = std::mem::replace(&mut self.radial_faces, RadialFaces::new(1, 1));
+        radial.fill(&rows);
         self.rate
             .par_chunks_mut(nt)
             .zip(self.explicit.par_chunks_mut(nt))
@@ -302,7 +391,7 @@ impl<M: Motion> Flow<M> {
             .zip(self.ring_speed.par_chunks_mut(nt))
             .enumerate()
             .for_each_init(
-                || vec![0.0; 14 * nt],
+                || vec![0.0; 4 * nt],
                 |scratch, (j, ((((correction, explicit), radial_old), radial_speed), ring_speed))| {
                     if j == 0 || j == nr - 1 {
                         for out in [correction, explicit, radial_old, radial_speed, ring_speed] {
@@ -316,24 +405,20 @@ impl<M: Motion> Flow<M> {
                             radial_speed,
                             ring_speed,
                         };
-                        rows.row(j, scratch, out);
+                        rows.row(j, &radial, scratch, out);
                     }
                 },
             );
         // What leaves through the outer face (rings nr - 2 and nr - 1).
-        let mut scratch = std::mem::take(&mut self.outer_scratch);
-        let (corners, rest) = scratch.split_at_mut(nt);
-        let (mut faces, _) = Faces::split(rest, nt);
-        rows.corners(nr - 2, corners);
-        rows.radial_faces(nr - 2, corners, &mut faces);
-        self.outflow_rate = faces.correction.iter().sum();
-        self.outflow_explicit = faces
+        let outer = radial.faces(nr - 2);
+        self.outflow_rate = outer.correction.iter().sum();
+        self.outflow_explicit = outer
             .first
             .iter()
-            .zip(faces.weight.iter())
+            .zip(outer.weight.iter())
             .map(|(f, w)| (1.0 - w) * f)
             .sum();
-        self.outer_scratch = scratch;
+        self.radial_faces = radial;
     }
 
     /// The implicit part of the step's outflow through the outer face (the

@@ -137,12 +137,12 @@ pub struct Flow<M: Motion> {
     exited: f64,
     /// The circulation advected out through the outer face per unit time
     /// by the correction (this step's and the previous one's, for
-    /// Adams–Bashforth) and by the explicit part of the first-order flux,
-    /// and five work rings for the outer face.
+    /// Adams–Bashforth) and by the explicit part of the first-order flux;
+    /// the step's radial faces.
     outflow_rate: f64,
     previous_outflow: f64,
     outflow_explicit: f64,
-    outer_scratch: Vec<f64>,
+    radial_faces: advection::RadialFaces,
     /// How far the last step's wall vorticity was from the one Thom's
     /// formula gives back for it, relative to its largest value.
     wall_residual: f64,
@@ -236,7 +236,7 @@ impl<M: Motion> Flow<M> {
             outflow_rate: 0.0,
             previous_outflow: 0.0,
             outflow_explicit: 0.0,
-            outer_scratch: vec![0.0; 5 * nt],
+            radial_faces: advection::RadialFaces::new(nt, nr),
             wall_residual: 0.0,
             inv_cell: widths_inv,
             widths,
@@ -441,16 +441,15 @@ impl<M: Motion> Flow<M> {
         self.advection_rates(dt);
         let restart = self.steps == 0 || (dt - self.last_dt).abs() > 1e-12 * dt;
         let (now, before) = if restart { (1.0, 0.0) } else { (1.5, -0.5) };
-        for ((r, p), e) in self
-            .rate
-            .iter_mut()
-            .zip(self.previous_rate.iter_mut())
-            .zip(&self.explicit)
-        {
-            let current = *r;
-            *r = now * current + before * *p + e;
-            *p = current;
-        }
+        self.rate
+            .par_iter_mut()
+            .zip(self.previous_rate.par_iter_mut())
+            .zip(self.explicit.par_iter())
+            .for_each(|((r, p), e)| {
+                let current = *r;
+                *r = now * current + before * *p + e;
+                *p = current;
+            });
         let explicit_outflow =
             now * self.outflow_rate + before * self.previous_outflow + self.outflow_explicit;
         self.previous_outflow = self.outflow_rate;
@@ -544,14 +543,15 @@ impl<M: Motion> Flow<M> {
     pub fn circulation(&self) -> f64 {
         let g = &self.grid;
         let (nt, nr) = (g.nt, g.nr);
-        let mut total = 0.0;
-        for j in 0..nr - 1 {
-            let ring: f64 = (0..nt)
-                .map(|k| g.jac[j * nt + k] * self.omega[j * nt + k])
-                .sum();
-            total += self.widths[j] * g.d_theta * ring;
-        }
-        total
+        g.jac[..(nr - 1) * nt]
+            .par_chunks(nt)
+            .zip(self.omega.par_chunks(nt))
+            .zip(self.widths.par_iter())
+            .map(|((jac, omega), width)| {
+                let ring: f64 = jac.iter().zip(omega).map(|(j, w)| j * w).sum();
+                width * g.d_theta * ring
+            })
+            .sum()
     }
 
     /// The circulation carried out through the far boundary so far.
