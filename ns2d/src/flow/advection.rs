@@ -34,11 +34,8 @@ use rayon::prelude::*;
 /// step's Courant number exceeds that in (a thin section's edges).
 #[must_use]
 pub(super) fn implicit_weight(courant: f64) -> f64 {
-    if courant <= 0.56 {
-        0.5
-    } else {
-        1.0 - 0.28 / courant
-    }
+    // 0.28/0.56 is ½ exactly: one expression (no branch) for both sides.
+    1.0 - 0.28 / courant.max(0.56)
 }
 
 /// The third-order upwind-biased value at the face between `near` and
@@ -46,6 +43,43 @@ pub(super) fn implicit_weight(courant: f64) -> f64 {
 /// upstream of `near`: `(-behind + 5 near + 2 far)/6`.
 fn upwind_face(behind: f64, near: f64, far: f64) -> f64 {
     (-behind + 5.0 * near + 2.0 * far) / 6.0
+}
+
+/// The grid's inverse cell areas as the faces use them (constant for a
+/// grid): a face's Courant number takes the larger of its two cells'
+/// `1/(J w_j Δθ)`.
+pub(super) struct FaceAreas {
+    /// Each node's `1/(J w_j Δθ)`.
+    node: Vec<f64>,
+    /// The larger of nodes `(j, k)` and `(j + 1, k)`'s (the radial face
+    /// above the node; the outer ring's entries unused).
+    radial: Vec<f64>,
+    /// The larger of nodes `(j, k)` and `(j, k + 1)`'s (the ring face
+    /// `k + ½`).
+    ring: Vec<f64>,
+}
+
+impl FaceAreas {
+    /// The areas of a grid of `nt` nodes round with `1/J` at the nodes
+    /// and `inv_cell` = `1/(w_j Δθ)` per ring.
+    pub(super) fn new(nt: usize, inv_jac: &[f64], inv_cell: &[f64]) -> Self {
+        let node: Vec<f64> = inv_jac
+            .iter()
+            .enumerate()
+            .map(|(i, v)| v * inv_cell[i / nt])
+            .collect();
+        let n = node.len();
+        let radial = (0..n)
+            .map(|i| if i + nt < n { node[i].max(node[i + nt]) } else { node[i] })
+            .collect();
+        let ring = (0..n)
+            .map(|i| {
+                let next = if (i + 1) % nt == 0 { i + 1 - nt } else { i + 1 };
+                node[i].max(node[next])
+            })
+            .collect();
+        Self { node, radial, ring }
+    }
 }
 
 /// One face set's values at each `k` of a ring: the face's speed `q`
@@ -218,20 +252,14 @@ pub(super) struct RateRows<'a> {
     pub(super) rel: &'a [f64],
     /// `1/J` at all nodes.
     pub(super) inv_jac: &'a [f64],
-    /// `1/(w_j Δθ)` of each ring, `w_j` the cell width in `ξ` of
-    /// [`Flow::circulation`]'s trapezoid.
-    pub(super) inv_cell: &'a [f64],
+    /// The inverse cell areas ([`FaceAreas`]).
+    pub(super) areas: &'a FaceAreas,
 }
 
 impl RateRows<'_> {
     /// Ring `j` of the nodes' values `f`.
     fn ring<'b>(&self, f: &'b [f64], j: usize) -> &'b [f64] {
         &f[j * self.nt..(j + 1) * self.nt]
-    }
-
-    /// `1/(cell area)` of node `(j, k)`: `1/(J w_j Δθ)`.
-    fn inv_area(&self, j: usize, k: usize) -> f64 {
-        self.inv_jac[j * self.nt + k] * self.inv_cell[j]
     }
 
     /// The relative streamfunction at the corners `(j + ½, k + ½)` of ring
@@ -253,54 +281,89 @@ impl RateRows<'_> {
         }
     }
 
-    /// The faces between rings `j` and `j + 1` (outward speed positive),
-    /// `corners` those of [`Self::corners`] for `j`.
+    /// The faces between rings `j` and `j + 1` (outward speed positive,
+    /// `1 <= j <= nr - 2`), `corners` those of [`Self::corners`] for `j`.
+    /// Without branches on the flow's direction (a select, which
+    /// vectorizes): the direction changes from face to face in a wake.
     pub(super) fn radial_faces(&self, j: usize, corners: &[f64], faces: &mut Faces<'_>) {
         let nt = self.nt;
-        let w = self.w;
-        for k in 0..nt {
-            let km = if k == 0 { nt - 1 } else { k - 1 };
-            let q = corners[k] - corners[km];
-            let at = |jj: usize| w[jj * nt + k];
-            let (v1, v3) = if q >= 0.0 {
-                let v3 = match j.checked_sub(1) {
-                    Some(jm) => upwind_face(at(jm), at(j), at(j + 1)),
-                    None => at(j),
+        faces.speed[0] = corners[0] - corners[nt - 1];
+        for k in 1..nt {
+            faces.speed[k] = corners[k] - corners[k - 1];
+        }
+        let (below, here, above) = (
+            self.ring(self.w, j - 1),
+            self.ring(self.w, j),
+            self.ring(self.w, j + 1),
+        );
+        let area = &self.areas.radial[j * nt..(j + 1) * nt];
+        if j + 2 == self.nr {
+            // The last face: first order where the flow comes in.
+            for k in 0..nt {
+                let q = faces.speed[k];
+                let (v1, v3) = if q >= 0.0 {
+                    (here[k], upwind_face(below[k], here[k], above[k]))
+                } else {
+                    (above[k], above[k])
                 };
-                (at(j), v3)
-            } else if j + 2 < self.nr {
-                (at(j + 1), upwind_face(at(j + 2), at(j + 1), at(j)))
-            } else {
-                (at(j + 1), at(j + 1))
-            };
-            let c = self.dt * q.abs() * self.inv_area(j, k).max(self.inv_area(j + 1, k));
-            faces.set(k, q, v1, v3, c);
+                faces.set(k, q, v1, v3, self.dt * q.abs() * area[k]);
+            }
+            return;
+        }
+        let beyond = self.ring(self.w, j + 2);
+        for k in 0..nt {
+            let q = faces.speed[k];
+            let out = q >= 0.0;
+            let behind = if out { below[k] } else { beyond[k] };
+            let near = if out { here[k] } else { above[k] };
+            let far = if out { above[k] } else { here[k] };
+            faces.set(
+                k,
+                q,
+                near,
+                upwind_face(behind, near, far),
+                self.dt * q.abs() * area[k],
+            );
         }
     }
 
     /// The faces `k + ½` round ring `j`, `lower` and `upper` the corners
-    /// below and above it.
-    fn ring_faces(&self, j: usize, lower: &[f64], upper: &[f64], faces: &mut Faces<'_>) {
+    /// below and above it, `padded` the ring's vorticity with one node of
+    /// the other end before it and two after (`[ω_{n-1}, ω_0 … ω_{n-1},
+    /// ω_0, ω_1]`).
+    fn ring_faces(
+        &self,
+        j: usize,
+        lower: &[f64],
+        upper: &[f64],
+        padded: &[f64],
+        faces: &mut Faces<'_>,
+    ) {
         let nt = self.nt;
-        let w0 = self.ring(self.w, j);
+        let area = &self.areas.ring[j * nt..(j + 1) * nt];
         for k in 0..nt {
-            let km = if k == 0 { nt - 1 } else { k - 1 };
-            let kp = if k + 1 == nt { 0 } else { k + 1 };
-            let kpp = if kp + 1 == nt { 0 } else { kp + 1 };
             let q = lower[k] - upper[k];
-            let (v1, v3) = if q >= 0.0 {
-                (w0[k], upwind_face(w0[km], w0[k], w0[kp]))
-            } else {
-                (w0[kp], upwind_face(w0[kpp], w0[kp], w0[k]))
-            };
-            let c = self.dt * q.abs() * self.inv_area(j, k).max(self.inv_area(j, kp));
-            faces.set(k, q, v1, v3, c);
+            // Nodes k - 1, k, k + 1, k + 2.
+            let (km, k0, kp, kpp) = (padded[k], padded[k + 1], padded[k + 2], padded[k + 3]);
+            let forward = q >= 0.0;
+            let behind = if forward { km } else { kpp };
+            let near = if forward { k0 } else { kp };
+            let far = if forward { kp } else { k0 };
+            faces.set(
+                k,
+                q,
+                near,
+                upwind_face(behind, near, far),
+                self.dt * q.abs() * area[k],
+            );
         }
     }
 
     /// Ring `j` (`1 <= j < nr - 1`) of the rates ([`RingRates`]), from
-    /// the radial faces and corners of [`RadialFaces`]; `scratch` four
-    /// work rings (the ring faces).
+    /// the radial faces and corners of [`RadialFaces`]; `scratch`
+    /// [`ROW_SCRATCH`] work rings (the ring faces, and the ring's values
+    /// with the other end's beside them, so that the loops round the ring
+    /// have no wrap-around to branch on).
     pub(super) fn row(
         &self,
         j: usize,
@@ -309,7 +372,10 @@ impl RateRows<'_> {
         out: RingRates<'_>,
     ) {
         let nt = self.nt;
-        let (mut round, _) = Faces::split(scratch, nt);
+        let (mut round, rest) = Faces::split(scratch, nt);
+        let (padded, rest) = rest.split_at_mut(nt + 3);
+        let (correction_before, rest) = rest.split_at_mut(nt + 1);
+        let (explicit_before, _) = rest.split_at_mut(nt + 1);
         let upper = radial.corners(j);
         let above = radial.faces(j);
         let (lower, below) = if j == 1 {
@@ -317,9 +383,25 @@ impl RateRows<'_> {
         } else {
             (radial.corners(j - 1), radial.faces(j - 1))
         };
-        self.ring_faces(j, lower, upper, &mut round);
         let w0 = self.ring(self.w, j);
+        padded[0] = w0[nt - 1];
+        padded[1..=nt].copy_from_slice(w0);
+        padded[nt + 1] = w0[0];
+        padded[nt + 2] = w0[1];
+        self.ring_faces(j, lower, upper, padded, &mut round);
+        // Face k - ½ at index k, face k + ½ at k + 1.
+        correction_before[1..].copy_from_slice(round.correction);
+        correction_before[0] = round.correction[nt - 1];
+        for (e, (w, f)) in explicit_before[1..]
+            .iter_mut()
+            .zip(round.weight.iter().zip(round.first.iter()))
+        {
+            *e = (1.0 - w) * f;
+        }
+        explicit_before[0] = explicit_before[nt];
         let (w_below, w_above) = (self.ring(self.w, j - 1), self.ring(self.w, j + 1));
+        let inv_jac = self.ring(self.inv_jac, j);
+        let area = self.ring(&self.areas.node, j);
         let inv_dt2 = 1.0 / (self.d_theta * self.d_theta);
         // ∂ηη - β ∂η by central differences.
         let h2 = 1.0 / (self.d_eta * self.d_eta);
@@ -327,23 +409,21 @@ impl RateRows<'_> {
         let radial_factor = self.viscosity / (self.slope[j] * self.slope[j]);
         let theta_d = self.diffusion_weight;
         for k in 0..nt {
-            let km = if k == 0 { nt - 1 } else { k - 1 };
-            let kp = if k + 1 == nt { 0 } else { k + 1 };
-            let s = self.inv_area(j, k);
-            let correction = above.correction[k] - below.correction[k] + round.correction[k]
-                - round.correction[km];
+            let s = area[k];
+            let correction = above.correction[k] - below.correction[k] + correction_before[k + 1]
+                - correction_before[k];
             out.correction[k] = -s * correction;
-            let inv_jac = self.inv_jac[j * nt + k];
-            let ring_diffusion =
-                self.viscosity * inv_jac * (w0[kp] - 2.0 * w0[k] + w0[km]) * inv_dt2;
+            let ring_diffusion = self.viscosity
+                * inv_jac[k]
+                * (padded[k + 2] - 2.0 * padded[k + 1] + padded[k])
+                * inv_dt2;
             let radial_diffusion = radial_factor
-                * inv_jac
+                * inv_jac[k]
                 * ((h2 + half) * w_below[k] - 2.0 * h2 * w0[k] + (h2 - half) * w_above[k]);
             let radial_all = above.first[k] - below.first[k];
             let radial_implicit =
                 above.weight[k] * above.first[k] - below.weight[k] * below.first[k];
-            let ring_explicit = (1.0 - round.weight[k]) * round.first[k]
-                - (1.0 - round.weight[km]) * round.first[km];
+            let ring_explicit = explicit_before[k + 1] - explicit_before[k];
             out.explicit[k] = radial_diffusion + (1.0 - theta_d) * ring_diffusion
                 - s * (radial_all + ring_explicit);
             out.radial_old[k] = theta_d * radial_diffusion - s * radial_implicit;
@@ -352,6 +432,9 @@ impl RateRows<'_> {
         }
     }
 }
+
+/// The work rings of [`RateRows::row`] (with room for its padding).
+const ROW_SCRATCH: usize = 7;
 
 impl<M: Motion> Flow<M> {
     /// The rates of every interior ring at the step's start (module docs)
@@ -379,7 +462,7 @@ impl<M: Motion> Flow<M> {
             w: &self.omega,
             rel: &self.relative,
             inv_jac: &g.inv_jac,
-            inv_cell: &self.inv_cell,
+            areas: &self.face_areas,
         };
         let mut radial = std::mem::replace(&mut self.radial_faces, RadialFaces::new(1, 1));
         radial.fill(&rows);
@@ -391,7 +474,7 @@ impl<M: Motion> Flow<M> {
             .zip(self.ring_speed.par_chunks_mut(nt))
             .enumerate()
             .for_each_init(
-                || vec![0.0; 4 * nt],
+                || vec![0.0; ROW_SCRATCH * nt + 8],
                 |scratch, (j, ((((correction, explicit), radial_old), radial_speed), ring_speed))| {
                     if j == 0 || j == nr - 1 {
                         for out in [correction, explicit, radial_old, radial_speed, ring_speed] {

@@ -149,8 +149,8 @@ pub struct Flow<M: Motion> {
     /// The width in `ξ` of each ring's cell (trapezoid: half the distance
     /// between its neighbours; the wall's and the outer ring's half cells).
     widths: Vec<f64>,
-    /// `1/(w_j Δθ)` of each ring (the inverse cell area over `1/J`).
-    inv_cell: Vec<f64>,
+    /// The inverse cell areas of the advection's faces.
+    face_areas: advection::FaceAreas,
     frame: FrameState,
     /// The time of `frame` and `frame_psi`.
     frame_time: Option<f64>,
@@ -208,7 +208,8 @@ impl<M: Motion> Flow<M> {
                 0.5 * (above - below)
             })
             .collect();
-        let widths_inv = widths.iter().map(|w| 1.0 / (w * grid.d_theta)).collect();
+        let widths_inv: Vec<f64> = widths.iter().map(|w| 1.0 / (w * grid.d_theta)).collect();
+        let face_areas = advection::FaceAreas::new(nt, &grid.inv_jac, &widths_inv);
         let mut flow = Self {
             grid,
             motion,
@@ -238,7 +239,7 @@ impl<M: Motion> Flow<M> {
             outflow_explicit: 0.0,
             radial_faces: advection::RadialFaces::new(nt, nr),
             wall_residual: 0.0,
-            inv_cell: widths_inv,
+            face_areas,
             widths,
             previous_rate: vec![0.0; n],
             last_dt: 0.0,
