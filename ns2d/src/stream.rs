@@ -215,6 +215,42 @@ impl StreamSolver {
         outer: &[f64],
         psi: &mut [f64],
     ) {
+        let nt = self.nt;
+        let ring = |j: usize, out: &mut [f64]| out.copy_from_slice(&source[j * nt..(j + 1) * nt]);
+        self.solve_rings(ring, wall_shape, wall_slope_mean, outer, psi);
+    }
+
+    /// [`Self::solve`] with the source `J ω` of the Jacobian `jac` and the
+    /// vorticity `omega` at all nodes (formed ring by ring as it is
+    /// transformed).
+    pub fn solve_vorticity(
+        &mut self,
+        jac: &[f64],
+        omega: &[f64],
+        wall_shape: &[f64],
+        wall_slope_mean: f64,
+        outer: &[f64],
+        psi: &mut [f64],
+    ) {
+        let nt = self.nt;
+        let ring = |j: usize, out: &mut [f64]| {
+            let r = j * nt..(j + 1) * nt;
+            for ((o, a), w) in out.iter_mut().zip(&jac[r.clone()]).zip(&omega[r]) {
+                *o = a * w;
+            }
+        };
+        self.solve_rings(ring, wall_shape, wall_slope_mean, outer, psi);
+    }
+
+    /// [`Self::solve`] with the source's ring `j` written by `source(j, ring)`.
+    fn solve_rings(
+        &mut self,
+        source: impl Fn(usize, &mut [f64]) + Sync,
+        wall_shape: &[f64],
+        wall_slope_mean: f64,
+        outer: &[f64],
+        psi: &mut [f64],
+    ) {
         let (nt, nr, modes) = (self.nt, self.nr, self.modes);
         let scratch_len = self.fft_scratch.len();
         // Each ring's modes, scaled into the right-hand side -g'_j² ŝ_j.
@@ -222,12 +258,11 @@ impl StreamSolver {
         let slope2 = &self.slope2;
         self.spectrum
             .par_chunks_mut(modes)
-            .zip(source.par_chunks(nt))
             .enumerate()
             .for_each_init(
                 || (vec![0.0; nt], vec![Complex64::new(0.0, 0.0); scratch_len]),
-                |(ring, scratch), (j, (row, values))| {
-                    ring.copy_from_slice(values);
+                |(ring, scratch), (j, row)| {
+                    source(j, ring);
                     // The lengths match by construction.
                     let _ = forward.process_with_scratch(ring, row, scratch);
                     let s2 = -slope2[j];

@@ -247,9 +247,12 @@ pub(super) struct RateRows<'a> {
     /// The radial stretching's `g'` at each ring and `g''/g'`.
     pub(super) slope: &'a [f64],
     pub(super) curvature: f64,
-    /// The vorticity and the relative streamfunction at all nodes.
+    /// The vorticity, the streamfunction and the rigid motion's
+    /// streamfunction at all nodes (their difference is the relative
+    /// streamfunction).
     pub(super) w: &'a [f64],
-    pub(super) rel: &'a [f64],
+    pub(super) psi: &'a [f64],
+    pub(super) frame: &'a [f64],
     /// `1/J` at all nodes.
     pub(super) inv_jac: &'a [f64],
     /// The inverse cell areas ([`FaceAreas`]).
@@ -267,17 +270,19 @@ impl RateRows<'_> {
     /// are the wall's own values, so no flux crosses it) into `out`.
     fn corners(&self, j: usize, out: &mut [f64]) {
         let nt = self.nt;
+        let rel = |j: usize, k: usize| {
+            let i = j * nt + k;
+            self.psi[i] - self.frame[i]
+        };
         if j == usize::MAX {
-            let wall = self.ring(self.rel, 0);
             for (k, c) in out.iter_mut().enumerate() {
-                *c = 0.5 * (wall[k] + wall[(k + 1) % nt]);
+                *c = 0.5 * (rel(0, k) + rel(0, (k + 1) % nt));
             }
             return;
         }
-        let (a, b) = (self.ring(self.rel, j), self.ring(self.rel, j + 1));
         for (k, c) in out.iter_mut().enumerate() {
             let kp = if k + 1 == nt { 0 } else { k + 1 };
-            *c = 0.25 * (a[k] + a[kp] + b[k] + b[kp]);
+            *c = 0.25 * (rel(j, k) + rel(j, kp) + rel(j + 1, k) + rel(j + 1, kp));
         }
     }
 
@@ -438,17 +443,16 @@ const ROW_SCRATCH: usize = 7;
 
 impl<M: Motion> Flow<M> {
     /// The rates of every interior ring at the step's start (module docs)
-    /// for a step of `dt`: rings in parallel, into `self.rate` (the
-    /// correction), `self.explicit`, `self.radial_old`, `self.radial_speed`,
+    /// for a step of `dt`: rings in parallel, into `self.rate` (the whole
+    /// explicit rate of the first sweep: the correction by Adams–Bashforth
+    /// with the weights `now` and `before` of this step's and the last
+    /// one's, the last one's in `self.previous_rate` and replaced by this
+    /// one's, plus the rest), `self.radial_old`, `self.radial_speed`,
     /// `self.ring_speed`; and the outer face's explicit outflow into
     /// `self.outflow_rate` (correction) and `self.outflow_explicit`.
-    pub(super) fn advection_rates(&mut self, dt: f64) {
+    pub(super) fn advection_rates(&mut self, dt: f64, now: f64, before: f64) {
         let g = &self.grid;
         let (nt, nr) = (g.nt, g.nr);
-        self.relative
-            .par_iter_mut()
-            .zip(self.psi.par_iter().zip(self.frame_psi.par_iter()))
-            .for_each(|(r, (p, f))| *r = p - f);
         let rows = RateRows {
             nt,
             nr,
@@ -460,7 +464,8 @@ impl<M: Motion> Flow<M> {
             slope: &g.slope,
             curvature: g.curvature,
             w: &self.omega,
-            rel: &self.relative,
+            psi: &self.psi,
+            frame: &self.frame_psi,
             inv_jac: &g.inv_jac,
             areas: &self.face_areas,
         };
@@ -468,6 +473,7 @@ impl<M: Motion> Flow<M> {
         radial.fill(&rows);
         self.rate
             .par_chunks_mut(nt)
+            .zip(self.previous_rate.par_chunks_mut(nt))
             .zip(self.explicit.par_chunks_mut(nt))
             .zip(self.radial_old.par_chunks_mut(nt))
             .zip(self.radial_speed.par_chunks_mut(nt))
@@ -475,20 +481,25 @@ impl<M: Motion> Flow<M> {
             .enumerate()
             .for_each_init(
                 || vec![0.0; ROW_SCRATCH * nt + 8],
-                |scratch, (j, ((((correction, explicit), radial_old), radial_speed), ring_speed))| {
+                |scratch, (j, (((((rate, previous), explicit), radial_old), radial_speed), ring_speed))| {
                     if j == 0 || j == nr - 1 {
-                        for out in [correction, explicit, radial_old, radial_speed, ring_speed] {
+                        for out in [rate, previous, explicit, radial_old, radial_speed, ring_speed] {
                             out.fill(0.0);
                         }
-                    } else {
-                        let out = RingRates {
-                            correction,
-                            explicit,
-                            radial_old,
-                            radial_speed,
-                            ring_speed,
-                        };
-                        rows.row(j, &radial, scratch, out);
+                        return;
+                    }
+                    let out = RingRates {
+                        correction: &mut *rate,
+                        explicit: &mut *explicit,
+                        radial_old,
+                        radial_speed,
+                        ring_speed,
+                    };
+                    rows.row(j, &radial, scratch, out);
+                    for ((r, p), e) in rate.iter_mut().zip(previous.iter_mut()).zip(explicit.iter()) {
+                        let current = *r;
+                        *r = now * current + before * *p + e;
+                        *p = current;
                     }
                 },
             );

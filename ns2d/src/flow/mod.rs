@@ -104,13 +104,10 @@ pub struct Flow<M: Motion> {
     omega: Vec<f64>,
     psi: Vec<f64>,
     stream: StreamSolver,
-    /// Work arrays: the rigid streamfunction at the nodes, the source
-    /// `J ω`, the explicit rate (the advection's correction, then all of
-    /// the first sweep's), the relative streamfunction.
+    /// Work arrays: the rigid streamfunction at the nodes, the explicit
+    /// rate of the first sweep.
     frame_psi: Vec<f64>,
-    source: Vec<f64>,
     rate: Vec<f64>,
-    relative: Vec<f64>,
     /// The first sweep's explicit rate but the correction, the radial
     /// sweep's implicit operator applied to the step's start, and the
     /// `θ q` of the radial and ring faces ([`advection`]).
@@ -220,9 +217,7 @@ impl<M: Motion> Flow<M> {
             psi: vec![0.0; n],
             stream,
             frame_psi: vec![0.0; n],
-            source: vec![0.0; n],
             rate: vec![0.0; n],
-            relative: vec![0.0; n],
             explicit: vec![0.0; n],
             radial_old: vec![0.0; n],
             radial_speed: vec![0.0; n],
@@ -300,10 +295,6 @@ impl<M: Motion> Flow<M> {
     fn solve_stream(&mut self, t: f64, homogeneous: bool) {
         let g = &self.grid;
         let nt = g.nt;
-        self.source
-            .par_iter_mut()
-            .zip(g.jac.par_iter().zip(self.omega.par_iter()))
-            .for_each(|(s, (j, w))| *s = j * w);
         if homogeneous {
             self.wall_shape.fill(0.0);
             self.wall_slope.fill(0.0);
@@ -329,8 +320,9 @@ impl<M: Motion> Flow<M> {
         // Far away the fluid is at rest: ψ = 0.
         self.outer.fill(0.0);
         let slope_mean = self.wall_slope.iter().sum::<f64>() / nt as f64;
-        self.stream.solve(
-            &self.source,
+        self.stream.solve_vorticity(
+            &g.jac,
+            &self.omega,
             &self.wall_shape,
             slope_mean,
             &self.outer,
@@ -439,18 +431,9 @@ impl<M: Motion> Flow<M> {
         {
             self.influence = Some(self.wall_influence(dt)?);
         }
-        self.advection_rates(dt);
         let restart = self.steps == 0 || (dt - self.last_dt).abs() > 1e-12 * dt;
         let (now, before) = if restart { (1.0, 0.0) } else { (1.5, -0.5) };
-        self.rate
-            .par_iter_mut()
-            .zip(self.previous_rate.par_iter_mut())
-            .zip(self.explicit.par_iter())
-            .for_each(|((r, p), e)| {
-                let current = *r;
-                *r = now * current + before * *p + e;
-                *p = current;
-            });
+        self.advection_rates(dt, now, before);
         let explicit_outflow =
             now * self.outflow_rate + before * self.previous_outflow + self.outflow_explicit;
         self.previous_outflow = self.outflow_rate;
@@ -545,9 +528,9 @@ impl<M: Motion> Flow<M> {
         let g = &self.grid;
         let (nt, nr) = (g.nt, g.nr);
         g.jac[..(nr - 1) * nt]
-            .par_chunks(nt)
-            .zip(self.omega.par_chunks(nt))
-            .zip(self.widths.par_iter())
+            .chunks(nt)
+            .zip(self.omega.chunks(nt))
+            .zip(&self.widths)
             .map(|((jac, omega), width)| {
                 let ring: f64 = jac.iter().zip(omega).map(|(j, w)| j * w).sum();
                 width * g.d_theta * ring
