@@ -217,12 +217,16 @@ impl StreamSolver {
     ) {
         let nt = self.nt;
         let ring = |j: usize, out: &mut [f64]| out.copy_from_slice(&source[j * nt..(j + 1) * nt]);
-        self.solve_rings(ring, wall_shape, wall_slope_mean, outer, psi);
+        let rings = self.nr;
+        self.solve_rings(ring, wall_shape, wall_slope_mean, outer, psi, rings);
     }
 
     /// [`Self::solve`] with the source `J ω` of the Jacobian `jac` and the
     /// vorticity `omega` at all nodes (formed ring by ring as it is
-    /// transformed).
+    /// transformed), for the first `rings` rings from the wall out only:
+    /// the rest of `psi` is left as it was (the wall vorticity needs two;
+    /// the inverse transforms are about a third of a solve's cost).
+    #[allow(clippy::too_many_arguments)]
     pub fn solve_vorticity(
         &mut self,
         jac: &[f64],
@@ -231,6 +235,7 @@ impl StreamSolver {
         wall_slope_mean: f64,
         outer: &[f64],
         psi: &mut [f64],
+        rings: usize,
     ) {
         let nt = self.nt;
         let ring = |j: usize, out: &mut [f64]| {
@@ -239,10 +244,11 @@ impl StreamSolver {
                 *o = a * w;
             }
         };
-        self.solve_rings(ring, wall_shape, wall_slope_mean, outer, psi);
+        self.solve_rings(ring, wall_shape, wall_slope_mean, outer, psi, rings);
     }
 
-    /// [`Self::solve`] with the source's ring `j` written by `source(j, ring)`.
+    /// [`Self::solve`] with the source's ring `j` written by `source(j,
+    /// ring)`, the first `rings` rings of `psi` written.
     fn solve_rings(
         &mut self,
         source: impl Fn(usize, &mut [f64]) + Sync,
@@ -250,6 +256,7 @@ impl StreamSolver {
         wall_slope_mean: f64,
         outer: &[f64],
         psi: &mut [f64],
+        rings: usize,
     ) {
         let (nt, nr, modes) = (self.nt, self.nr, self.modes);
         let scratch_len = self.fft_scratch.len();
@@ -332,12 +339,13 @@ impl StreamSolver {
                 rows[0].copy_from_slice(wall);
                 rows[nr - 1].copy_from_slice(outer);
             });
-        // Each ring's inverse transform.
+        // Each asked-for ring's inverse transform.
         let inverse = &self.inverse;
         let scale = 1.0 / nt as f64;
-        self.spectrum
+        let rings = rings.min(nr);
+        self.spectrum[..rings * modes]
             .par_chunks_mut(modes)
-            .zip(psi.par_chunks_mut(nt))
+            .zip(psi[..rings * nt].par_chunks_mut(nt))
             .for_each_init(
                 || vec![Complex64::new(0.0, 0.0); scratch_len],
                 |scratch, (row, out)| {

@@ -281,7 +281,7 @@ impl<M: Motion> Flow<M> {
     /// the wall vorticity from it (Thom's), and leave the frame state of
     /// `t`.
     fn evaluate(&mut self, t: f64) {
-        self.solve_stream(t, false);
+        self.solve_stream(t, false, Extent::All);
         let mut wall = std::mem::take(&mut self.wall_scratch);
         self.thom(false, &mut wall);
         self.omega[..self.grid.nt].copy_from_slice(&wall);
@@ -291,8 +291,10 @@ impl<M: Motion> Flow<M> {
     /// The streamfunction of the current vorticity: with the wall's and
     /// far field's conditions at time `t` (and the frame state of `t`
     /// left), or with homogeneous ones (`homogeneous`, for the wall's
-    /// influence matrix).
-    fn solve_stream(&mut self, t: f64, homogeneous: bool) {
+    /// influence matrix); at every node, or (`Extent::Wall`) at the
+    /// wall's two rings only, which are all that Thom's formula reads
+    /// (the rest of `psi` is left as it was).
+    fn solve_stream(&mut self, t: f64, homogeneous: bool, extent: Extent) {
         let g = &self.grid;
         let nt = g.nt;
         if homogeneous {
@@ -327,6 +329,10 @@ impl<M: Motion> Flow<M> {
             slope_mean,
             &self.outer,
             &mut self.psi,
+            match extent {
+                Extent::All => g.nr,
+                Extent::Wall => 2,
+            },
         );
     }
 
@@ -413,7 +419,7 @@ impl<M: Motion> Flow<M> {
     /// the diffusion alone (built for each new `dt`) corrects the current
     /// wall vorticity once; the advection's share in the wall cells is
     /// what is left ([`Self::wall_residual`]). Two implicit sweeps and two
-    /// streamfunction solves.
+    /// streamfunction solves (the first needs the wall's rings only).
     ///
     /// # Errors
     /// [`NsError::Diverged`] when the flow is no longer finite.
@@ -448,7 +454,7 @@ impl<M: Motion> Flow<M> {
         self.outer_condition();
         let mut outer_ring = std::mem::take(&mut self.outer_ring);
         outer_ring.copy_from_slice(&self.omega[(self.grid.nr - 1) * nt..]);
-        self.solve_stream(t, false);
+        self.solve_stream(t, false, Extent::Wall);
         let mut residual = std::mem::take(&mut self.residual_scratch);
         self.wall_mismatch(&wall, &mut residual);
         if let Some(influence) = &self.influence {
@@ -467,7 +473,7 @@ impl<M: Motion> Flow<M> {
         self.time = t;
         self.steps += 1;
         self.last_dt = dt;
-        self.solve_stream(t, false);
+        self.solve_stream(t, false, Extent::All);
         self.wall_mismatch(&wall, &mut residual);
         let largest = wall.iter().fold(0.0_f64, |m, w| m.max(w.abs()));
         self.wall_residual =
@@ -570,7 +576,7 @@ impl<M: Motion> Flow<M> {
             self.radial_crank_nicolson(dt, &unit);
             self.omega[..nt].copy_from_slice(&unit);
             let circulation = self.circulation();
-            self.solve_stream(0.0, true);
+            self.solve_stream(0.0, true, Extent::Wall);
             self.thom(true, &mut column);
             for (i, c) in column.iter().enumerate() {
                 matrix[(i, k)] -= c;
@@ -600,6 +606,15 @@ impl<M: Motion> Flow<M> {
             lu,
         })
     }
+}
+
+/// Where a streamfunction solve is wanted ([`Flow::solve_stream`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Extent {
+    /// At every node.
+    All,
+    /// At the wall's two rings.
+    Wall,
 }
 
 /// The factored `I - M` of the implicit wall vorticity (see

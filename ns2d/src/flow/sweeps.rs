@@ -103,38 +103,47 @@ impl<M: Motion> Flow<M> {
             .collect();
         blocks.into_par_iter().for_each(
             |((((mut w, mut upper_mod), mut solved), mut gain), k0)| {
+                let width = w[0].len();
+                let zeros = vec![0.0; width];
+                let new_wall = &new_wall[k0..k0 + width];
                 for j in 1..nr - 1 {
                     let factor = weight / (g.slope[j] * g.slope[j]);
                     let inv_width = dt / (widths[j] * g.d_theta);
+                    // The ring's slices of the block (no index arithmetic
+                    // in the loop: it vectorizes).
+                    let r = j * nt + k0..j * nt + k0 + width;
+                    let (q_row, inv_jac, old) = (&speed[r.clone()], &g.inv_jac[r.clone()], &radial_old[r.clone()]);
+                    let (first, last) = (j == 1, j == nr - 2);
+                    // Ring 1's lower neighbour is the wall, known: no
+                    // advection through the wall's face, no elimination.
+                    let p_row = if first { &zeros[..] } else { &speed[r.start - nt..r.end - nt] };
                     let (w_lo, w_hi) = w.split_at_mut(j + 1);
                     let (ring, above) = (&*w_lo[j], &*w_hi[0]);
                     let (s_lo, s_hi) = solved.split_at_mut(j);
                     let (u_lo, u_hi) = upper_mod.split_at_mut(j);
-                    let gain_row = &mut *gain[j];
-                    for kk in 0..ring.len() {
-                        let i = j * nt + k0 + kk;
-                        let kappa = factor * g.inv_jac[i];
-                        let s = inv_width * g.inv_jac[i];
-                        let q = speed[i];
-                        let p = if j == 1 { 0.0 } else { speed[i - nt] };
+                    let (prev_upper, prev_rhs) = if first {
+                        (&zeros[..], &zeros[..])
+                    } else {
+                        (&*u_lo[j - 1], &*s_lo[j - 1])
+                    };
+                    let (u_out, s_out, gain_row) = (&mut *u_hi[0], &mut *s_hi[0], &mut *gain[j]);
+                    for kk in 0..width {
+                        let kappa = factor * inv_jac[kk];
+                        let s = inv_width * inv_jac[kk];
+                        let (q, p) = (q_row[kk], p_row[kk]);
                         let lower = -kappa * a - s * p.max(0.0);
                         let diag = 1.0 + 2.0 * kappa * h2 + s * (q.max(0.0) - p.min(0.0));
-                        let mut upper = -kappa * c + s * q.min(0.0);
-                        let mut rhs = ring[kk] - dt * radial_old[i];
-                        if j == nr - 2 {
-                            rhs -= upper * above[kk];
-                            upper = 0.0;
-                        }
-                        // Ring 1's lower neighbour is the wall, known.
-                        let (coupled, prev_upper, prev_rhs) = if j == 1 {
-                            rhs -= lower * new_wall[k0 + kk];
-                            (0.0, 0.0, 0.0)
-                        } else {
-                            (lower, u_lo[j - 1][kk], s_lo[j - 1][kk])
-                        };
-                        let inv = 1.0 / (diag - coupled * prev_upper);
-                        u_hi[0][kk] = upper * inv;
-                        s_hi[0][kk] = (rhs - coupled * prev_rhs) * inv;
+                        let full_upper = -kappa * c + s * q.min(0.0);
+                        let mut rhs = ring[kk] - dt * old[kk];
+                        // The outer ring's value is held: it moves to the
+                        // right-hand side.
+                        rhs -= if last { full_upper * above[kk] } else { 0.0 };
+                        let upper = if last { 0.0 } else { full_upper };
+                        rhs -= if first { lower * new_wall[kk] } else { 0.0 };
+                        let coupled = if first { 0.0 } else { lower };
+                        let inv = 1.0 / (diag - coupled * prev_upper[kk]);
+                        u_out[kk] = upper * inv;
+                        s_out[kk] = (rhs - coupled * prev_rhs[kk]) * inv;
                         gain_row[kk] = -lower * inv;
                     }
                 }
