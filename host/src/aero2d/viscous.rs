@@ -263,11 +263,11 @@ impl ViscousSection {
     /// sampling the loads every `period / 200` (or `duration / 2000`
     /// without a period).
     ///
-    /// Cost: measured 67 ns per cell per step (wall time, both cores of
+    /// Cost: measured 39.7 ns per cell per step (wall time, both cores of
     /// this 2-core machine) on the default FWAV section, 256 × 160 cells;
     /// the number of steps is set by the Courant number in the small
     /// cells at a thin section's ends: 42,438 for that section's 4 cycles
-    /// at Courant number 2, 116 s (see [`ViscousError::TooManySteps`]).
+    /// at Courant number 2, 69 s (see [`ViscousError::TooManySteps`]).
     ///
     /// # Errors
     /// [`ViscousError`]: a bad thickness, the solver's, a time step that

@@ -55,10 +55,10 @@ const DEFAULT_STEPS: f64 = 240.0;
 const DEFAULT_MEMORY: f64 = 680e6;
 
 /// Wall time of one Navier–Stokes evaluation of the mid-span section at
-/// the default resolution, s: 116 s measured for the default section's 4
+/// the default resolution, s: 69 s measured for the default section's 4
 /// cycles on two cores (README, "Viscous section analysis": 42,438 steps
-/// of 256 × 160 cells at Courant number 2).
-pub const NS_EVALUATION_SECONDS: f64 = 116.0;
+/// of 256 × 160 cells at Courant number 2, 39.7 ns per cell per step).
+pub const NS_EVALUATION_SECONDS: f64 = 69.0;
 
 /// Navier–Stokes evaluations of a design run: the first cycle's 21, then
 /// the two confirmations of each later cycle (the array's rows and the

@@ -269,7 +269,7 @@ impl SectionCase {
     /// summarizes its last two periods.
     ///
     /// Cost: the LDVM a fraction of a second; the Navier–Stokes model at
-    /// the default resolution about 116 s for 4 cycles on two cores
+    /// the default resolution about 69 s for 4 cycles on two cores
     /// ([`crate::aero2d::viscous::ViscousSection::run`]).
     ///
     /// # Errors
