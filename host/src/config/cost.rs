@@ -193,9 +193,11 @@ mod tests {
     }
 
     /// The Navier–Stokes section model's evaluations are in the built-in
-    /// design's estimate, which says what they cost. At 116 s each they
-    /// make it about 7.6 times the LDVM run: not far beyond it (845 s
-    /// each, before the solver's implicit advection, made it 49 times).
+    /// design's estimate, which says what they cost. At 69 s each they
+    /// make it about 4.9 times the LDVM run (the NS design run measured
+    /// 1,661 s, 3.8 times, with 24 new evaluations over 5 cycles): not
+    /// far beyond it (845 s each, before the solver's implicit
+    /// advection, made it 49 times).
     #[test]
     fn the_ns_section_model_is_in_the_estimate() {
         let mut ns = SystemConfig::default();
@@ -204,7 +206,7 @@ mod tests {
         assert_eq!(e.section_seconds, NS_EVALUATIONS * NS_EVALUATION_SECONDS);
         let ldvm = CostEstimate::of(&SystemConfig::default());
         assert!((e.seconds - ldvm.seconds - e.section_seconds).abs() < 1e-9);
-        assert!(e.time_ratio > 5.0 && !e.is_far_beyond_default(), "{e}");
+        assert!(e.time_ratio > 3.0 && !e.is_far_beyond_default(), "{e}");
         assert!(e.to_string().contains("Navier–Stokes"), "{e}");
     }
 }
