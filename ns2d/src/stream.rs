@@ -293,8 +293,7 @@ impl StreamSolver {
             *c = self.spectrum[j * modes];
         }
         let n = nr - 1;
-        column[0] =
-            Complex64::new(wall_slope_mean * nt as f64, 0.0) - column[1] * (w2 / upper_c);
+        column[0] = Complex64::new(wall_slope_mean * nt as f64, 0.0) - column[1] * (w2 / upper_c);
         column[n - 1] -= outer_modes[0] * upper_c;
         self.mean_factors.solve(&mut column[..n]);
         column[nr - 1] = outer_modes[0];

@@ -70,7 +70,13 @@ impl FaceAreas {
             .collect();
         let n = node.len();
         let radial = (0..n)
-            .map(|i| if i + nt < n { node[i].max(node[i + nt]) } else { node[i] })
+            .map(|i| {
+                if i + nt < n {
+                    node[i].max(node[i + nt])
+                } else {
+                    node[i]
+                }
+            })
             .collect();
         let ring = (0..n)
             .map(|i| {

@@ -112,11 +112,19 @@ impl<M: Motion> Flow<M> {
                     // The ring's slices of the block (no index arithmetic
                     // in the loop: it vectorizes).
                     let r = j * nt + k0..j * nt + k0 + width;
-                    let (q_row, inv_jac, old) = (&speed[r.clone()], &g.inv_jac[r.clone()], &radial_old[r.clone()]);
+                    let (q_row, inv_jac, old) = (
+                        &speed[r.clone()],
+                        &g.inv_jac[r.clone()],
+                        &radial_old[r.clone()],
+                    );
                     let (first, last) = (j == 1, j == nr - 2);
                     // Ring 1's lower neighbour is the wall, known: no
                     // advection through the wall's face, no elimination.
-                    let p_row = if first { &zeros[..] } else { &speed[r.start - nt..r.end - nt] };
+                    let p_row = if first {
+                        &zeros[..]
+                    } else {
+                        &speed[r.start - nt..r.end - nt]
+                    };
                     let (w_lo, w_hi) = w.split_at_mut(j + 1);
                     let (ring, above) = (&*w_lo[j], &*w_hi[0]);
                     let (s_lo, s_hi) = solved.split_at_mut(j);
@@ -183,7 +191,11 @@ impl<M: Motion> Flow<M> {
                     if carried.iter().fold(0.0_f64, |m, c| m.max(c.abs())) <= 1e-17 * largest {
                         break;
                     }
-                    for ((c, s), g) in carried.iter_mut().zip(solved[j].iter_mut()).zip(gain[j].iter()) {
+                    for ((c, s), g) in carried
+                        .iter_mut()
+                        .zip(solved[j].iter_mut())
+                        .zip(gain[j].iter())
+                    {
                         *c *= g;
                         *s += *c;
                     }
@@ -326,6 +338,8 @@ mod tests {
     /// different one in each lane.
     #[test]
     fn the_periodic_tridiagonal_solve_satisfies_its_system() {
+        /// Lower, diagonal, upper, right-hand side.
+        type System = (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>);
         let n = 9;
         let lane = |l: usize| {
             let f = |k: usize, a: f64| ((k as f64) * a + l as f64).sin();
@@ -336,15 +350,13 @@ mod tests {
                 .collect();
             let upper: Vec<f64> = (0..n).map(|k| -sigma[k] + speed[k].min(0.0)).collect();
             let diag: Vec<f64> = (0..n)
-                .map(|k| {
-                    1.0 + 2.0 * sigma[k] + speed[k].max(0.0) - speed[(k + n - 1) % n].min(0.0)
-                })
+                .map(|k| 1.0 + 2.0 * sigma[k] + speed[k].max(0.0) - speed[(k + n - 1) % n].min(0.0))
                 .collect();
             let b: Vec<f64> = (0..n).map(|k| f(k, 1.3).cos()).collect();
             (lower, diag, upper, b)
         };
         let systems: Vec<_> = (0..LANES).map(lane).collect();
-        let interleave = |pick: &dyn Fn(&(Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>)) -> &Vec<f64>| {
+        let interleave = |pick: &dyn Fn(&System) -> &Vec<f64>| {
             let mut out = vec![0.0; n * LANES];
             for (l, s) in systems.iter().enumerate() {
                 for k in 0..n {
@@ -373,7 +385,11 @@ mod tests {
                 let (km, kp) = ((k + n - 1) % n, (k + 1) % n);
                 let xs = |kk: usize| x[kk * LANES + l];
                 let lhs = lo[k] * xs(km) + d[k] * xs(k) + up[k] * xs(kp);
-                assert!((lhs - rhs[k]).abs() < 1e-13, "system {l}, row {k}: {lhs} vs {}", rhs[k]);
+                assert!(
+                    (lhs - rhs[k]).abs() < 1e-13,
+                    "system {l}, row {k}: {lhs} vs {}",
+                    rhs[k]
+                );
             }
         }
     }
