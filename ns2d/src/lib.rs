@@ -56,6 +56,7 @@
 #![warn(missing_docs)]
 #![warn(clippy::too_many_lines)]
 
+mod blocks;
 pub mod cases;
 mod contour;
 mod correspondence;

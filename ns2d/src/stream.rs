@@ -22,6 +22,7 @@ use rayon::prelude::*;
 use realfft::num_complex::Complex64;
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 
+use crate::blocks;
 use crate::grid::OGrid;
 
 /// One mode's tridiagonal factors (Thomas algorithm): sub-diagonal, the
@@ -303,8 +304,8 @@ impl StreamSolver {
         // The other modes' radial systems side by side along the rings,
         // blocks of modes in parallel: wall and outer values given.
         let (lower, inv_pivot, upper) = (&self.mode_lower, &self.mode_inv_pivot, &self.mode_upper);
-        let bounds = mode_blocks(modes);
-        ring_pieces(&mut self.spectrum, modes, &bounds)
+        let bounds = blocks::bounds(1, modes);
+        blocks::pieces(&mut self.spectrum, modes, &bounds)
             .into_par_iter()
             .zip(bounds[..bounds.len() - 1].par_iter())
             .for_each(|(mut rows, &m0)| {
@@ -383,35 +384,6 @@ impl StreamSolver {
             .inverse
             .process_with_scratch(&mut spec, out, &mut self.fft_scratch);
     }
-}
-
-/// The bounds of the blocks of modes `1..modes` solved in parallel: one
-/// per worker thread.
-fn mode_blocks(modes: usize) -> Vec<usize> {
-    let blocks = rayon::current_num_threads().clamp(1, modes - 1);
-    (0..=blocks).map(|b| 1 + b * (modes - 1) / blocks).collect()
-}
-
-/// Each ring of `data` (rings of `modes`) cut at the modes `bounds`: per
-/// block, its pieces of every ring.
-fn ring_pieces<'a>(
-    data: &'a mut [Complex64],
-    modes: usize,
-    bounds: &[usize],
-) -> Vec<Vec<&'a mut [Complex64]>> {
-    let blocks = bounds.len() - 1;
-    let mut out: Vec<Vec<&mut [Complex64]>> = (0..blocks)
-        .map(|_| Vec::with_capacity(data.len() / modes))
-        .collect();
-    for ring in data.chunks_mut(modes) {
-        let (_, mut rest) = ring.split_at_mut(bounds[0]);
-        for (b, block) in out.iter_mut().enumerate() {
-            let (piece, tail) = rest.split_at_mut(bounds[b + 1] - bounds[b]);
-            block.push(piece);
-            rest = tail;
-        }
-    }
-    out
 }
 
 #[cfg(test)]

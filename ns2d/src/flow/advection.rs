@@ -139,7 +139,9 @@ pub(super) struct FaceRow<'a> {
 /// `1..nr - 1`) the faces between rings `j` and `j + 1` and the corners
 /// `(j + ½, k + ½)` they run between ([`RateRows::corners`]); ring 1's
 /// lower corners are the wall's, and its lower face is the wall's, which
-/// no flux crosses (row 0 is not used). Reused from step to step.
+/// no flux crosses (row 0 is not used). Reused from step to step (the
+/// empty default only stands in while a step holds it).
+#[derive(Default)]
 pub(super) struct RadialFaces {
     nt: usize,
     corners: Vec<f64>,
@@ -475,7 +477,7 @@ impl<M: Motion> Flow<M> {
             inv_jac: &g.inv_jac,
             areas: &self.face_areas,
         };
-        let mut radial = std::mem::replace(&mut self.radial_faces, RadialFaces::new(1, 1));
+        let mut radial = std::mem::take(&mut self.radial_faces);
         radial.fill(&rows);
         self.rate
             .par_chunks_mut(nt)

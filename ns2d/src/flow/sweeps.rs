@@ -7,6 +7,7 @@
 use rayon::prelude::*;
 
 use super::Flow;
+use crate::blocks;
 use crate::motion::Motion;
 
 impl<M: Motion> Flow<M> {
@@ -91,18 +92,18 @@ impl<M: Motion> Flow<M> {
         let h2 = 1.0 / (g.d_eta * g.d_eta);
         let half = g.curvature / (2.0 * g.d_eta);
         let (a, c) = (h2 + half, h2 - half);
-        let bounds = line_blocks(nt);
         let (speed, radial_old, widths) = (&self.radial_speed, &self.radial_old, &self.widths);
         let weight = self.diffusion_weight * dt * self.viscosity;
-        let blocks: Vec<_> = column_blocks(&mut self.omega, nt, &bounds)
-            .into_iter()
-            .zip(column_blocks(&mut self.sweep_upper, nt, &bounds))
-            .zip(column_blocks(&mut self.sweep_rhs, nt, &bounds))
-            .zip(column_blocks(&mut self.sweep_gain, nt, &bounds))
-            .zip(bounds.iter().copied())
-            .collect();
-        blocks.into_par_iter().for_each(
-            |((((mut w, mut upper_mod), mut solved), mut gain), k0)| {
+        let lines = line_blocks(
+            &mut self.omega,
+            &mut self.sweep_upper,
+            &mut self.sweep_rhs,
+            &mut self.sweep_gain,
+            nt,
+        );
+        lines
+            .into_par_iter()
+            .for_each(|((((mut w, mut upper_mod), mut solved), mut gain), k0)| {
                 let width = w[0].len();
                 let zeros = vec![0.0; width];
                 let new_wall = &new_wall[k0..k0 + width];
@@ -157,8 +158,7 @@ impl<M: Motion> Flow<M> {
                 }
                 let top = w.len() - 2;
                 back_substitute(&mut w, &upper_mod, &solved, top);
-            },
-        );
+            });
     }
 
     /// The radial sweep of [`Self::radial_crank_nicolson`] again with the
@@ -166,15 +166,14 @@ impl<M: Motion> Flow<M> {
     /// change carried through it (linear), and the back substitution.
     pub(super) fn radial_wall_change(&mut self, change: &[f64]) {
         let nt = self.grid.nt;
-        let bounds = line_blocks(nt);
-        let blocks: Vec<_> = column_blocks(&mut self.omega, nt, &bounds)
-            .into_iter()
-            .zip(column_blocks(&mut self.sweep_upper, nt, &bounds))
-            .zip(column_blocks(&mut self.sweep_rhs, nt, &bounds))
-            .zip(column_blocks(&mut self.sweep_gain, nt, &bounds))
-            .zip(bounds.iter().copied())
-            .collect();
-        blocks
+        let lines = line_blocks(
+            &mut self.omega,
+            &mut self.sweep_upper,
+            &mut self.sweep_rhs,
+            &mut self.sweep_gain,
+            nt,
+        );
+        lines
             .into_par_iter()
             .for_each(|((((mut w, upper_mod), mut solved), gain), k0)| {
                 let rings = solved.len();
@@ -206,29 +205,32 @@ impl<M: Motion> Flow<M> {
     }
 }
 
-/// The bounds of the blocks of radial lines the sweeps run in parallel:
-/// one per worker thread.
-fn line_blocks(nt: usize) -> Vec<usize> {
-    let blocks = rayon::current_num_threads().clamp(1, nt);
-    (0..=blocks).map(|b| b * nt / blocks).collect()
-}
+/// One block's pieces of every ring of a field ([`blocks::pieces`]).
+type Pieces<'a> = Vec<&'a mut [f64]>;
 
-/// Each ring of `data` (rings of `nt`) cut at the columns `bounds`: per
-/// block, its pieces of every ring.
-fn column_blocks<'a>(data: &'a mut [f64], nt: usize, bounds: &[usize]) -> Vec<Vec<&'a mut [f64]>> {
-    let blocks = bounds.len() - 1;
-    let mut out: Vec<Vec<&mut [f64]>> = (0..blocks)
-        .map(|_| Vec::with_capacity(data.len() / nt))
-        .collect();
-    for ring in data.chunks_mut(nt) {
-        let mut rest = ring;
-        for (b, block) in out.iter_mut().enumerate() {
-            let (piece, tail) = rest.split_at_mut(bounds[b + 1] - bounds[b]);
-            block.push(piece);
-            rest = tail;
-        }
-    }
-    out
+/// A block of radial lines: its pieces of the vorticity and of the kept
+/// elimination (modified upper diagonal, right-hand side, gains), and its
+/// first line.
+type LineBlock<'a> = ((((Pieces<'a>, Pieces<'a>), Pieces<'a>), Pieces<'a>), usize);
+
+/// The radial sweeps' blocks of lines, one per worker thread, over the
+/// vorticity and the elimination's `upper`, `rhs` and `gain` (rings of
+/// `nt`).
+fn line_blocks<'a>(
+    omega: &'a mut [f64],
+    upper: &'a mut [f64],
+    rhs: &'a mut [f64],
+    gain: &'a mut [f64],
+    nt: usize,
+) -> Vec<LineBlock<'a>> {
+    let bounds = blocks::bounds(0, nt);
+    blocks::pieces(omega, nt, &bounds)
+        .into_iter()
+        .zip(blocks::pieces(upper, nt, &bounds))
+        .zip(blocks::pieces(rhs, nt, &bounds))
+        .zip(blocks::pieces(gain, nt, &bounds))
+        .zip(bounds.iter().copied())
+        .collect()
 }
 
 /// The radial sweep's back substitution on one block of lines: rings
