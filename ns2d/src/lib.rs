@@ -43,7 +43,9 @@
 //!
 //! Any simple closed section ([`Contour`]: points, NACA 4-digit with a
 //! rounded trailing edge, a thin plate or cambered membrane of finite
-//! thickness) gets its map from [`SectionMap::from_contour`] (Wegmann's
+//! thickness; a coordinate file's sharp trailing edge made blunt first,
+//! [`Contour::with_blunt_trailing_edge`], as a corner has no conformal
+//! map) gets its map from [`SectionMap::from_contour`] (Wegmann's
 //! Newton method after a Joukowski/circular-arc pre-map; about 2-4 ms for
 //! 256 points on this loaded machine, `examples/fit_timing.rs`).
 //!

@@ -6,7 +6,8 @@
 //! least 8 distinct points, every coordinate finite, no two consecutive
 //! points equal, no segment meeting another (a figure-eight, a bow-tie, a
 //! spike going back on itself), a non-zero enclosed area. Points may come
-//! in either orientation and with or without the closing duplicate; they
+//! in either orientation and with or without the closing duplicate (a
+//! last point within 1e-5 of the perimeter of the first is one); they
 //! are kept counterclockwise (the section on the left) without it, so
 //! indices in errors are those of the points as given.
 //!
@@ -21,10 +22,15 @@
 
 mod naca;
 mod plate;
+mod trailing_edge;
 
 use realfft::num_complex::Complex64;
 
 use crate::error::NsError;
+
+/// The largest distance, as a fraction of the perimeter, at which the last
+/// point given is taken as the first one repeated.
+const CLOSING_GAP: f64 = 1e-5;
 
 /// A closed, simple, counterclockwise polygon round a section (module docs).
 #[derive(Debug, Clone, PartialEq)]
@@ -48,8 +54,14 @@ impl Contour {
             }
         }
         let mut z: Vec<Complex64> = points.iter().map(|&(x, y)| Complex64::new(x, y)).collect();
-        if z.len() > 1 && z[0] == z[z.len() - 1] {
-            z.pop();
+        // A closing point: the first repeated, or within 1e-5 of the
+        // perimeter of it (a coordinate file's trailing edge closed as
+        // `1.00001 -0.00000`, which would cross the first segment).
+        if z.len() > 1 {
+            let gap = (z[0] - z[z.len() - 1]).norm();
+            if gap == 0.0 || gap < CLOSING_GAP * perimeter(&z) {
+                z.pop();
+            }
         }
         if z.len() < 8 {
             return Err(NsError::ContourTooFewPoints { count: z.len() });
