@@ -22,13 +22,14 @@ use super::panel::{
     PanelError, PanelSettings, PanelSolver, SectionShape, ShapeError, ShapeHistory,
 };
 use super::theory::garrick_plunge;
-use super::viscous::{
-    SectionPath, ViscousError, ViscousSection, ViscousShape, NACA_TRAILING_EDGE_RADIUS,
-};
-use fwav_ns2d::Contour;
+use super::viscous::{SectionPath, ViscousError, ViscousSection, ViscousShape};
 
 /// Fewest chord stations a thin section's deformation is resampled onto.
 const MIN_CAMBER_STATIONS: usize = 21;
+
+/// Points on each side of a NACA section given to the viscous model (cosine
+/// spacing; its contour is resampled from them).
+const NACA_SIDE_POINTS: usize = 200;
 
 /// Fewest time steps a cycle: the default step is shortened to this at
 /// high reduced frequencies.
@@ -239,25 +240,18 @@ impl SectionModel {
 
     /// The section a name means to the viscous model: `flat` (a plate of
     /// `plate_thickness` chords with semicircular ends), a NACA 4-digit
-    /// name (its trailing edge rounded by
-    /// [`NACA_TRAILING_EDGE_RADIUS`]), or a point file (any closed
-    /// contour, chords; a sharp corner must be rounded by the file, a
-    /// corner has no conformal map).
+    /// name or a point file (any closed contour, chords): a sharp trailing
+    /// edge is opened to [`super::viscous::TRAILING_EDGE_THICKNESS`], see
+    /// [`ViscousShape::from_points`].
     pub fn named_viscous(name: &str, plate_thickness: f64) -> Result<ViscousShape, CaseError> {
         if name == "flat" {
             return Ok(ViscousShape::Plate(plate_thickness));
         }
-        match name.parse::<Naca4>() {
-            Ok(_) => {
-                let digits: String = name.chars().filter(char::is_ascii_digit).collect();
-                let contour = Contour::naca4(&digits, 512, NACA_TRAILING_EDGE_RADIUS)
-                    .map_err(ViscousError::from)?;
-                Ok(ViscousShape::Contour(
-                    contour.points().iter().map(|z| (z.re, z.im)).collect(),
-                ))
-            }
-            Err(naca) => Ok(ViscousShape::Contour(point_file(name, naca)?)),
-        }
+        let points = match name.parse::<Naca4>() {
+            Ok(naca) => naca.points(2 * NACA_SIDE_POINTS, TrailingEdge::Closed)?,
+            Err(naca) => point_file(name, naca)?,
+        };
+        Ok(ViscousShape::from_points(&points)?)
     }
 
     /// Whether it is the thin line.

@@ -163,6 +163,16 @@ impl PitchRamp {
         (scale * self.g(t), scale * rate)
     }
 
+    /// `alpha''` at time `t` (rad per chord travelled squared), the
+    /// derivative of [`Self::at`]'s rate: `a² Σ ± sech²`.
+    pub fn acceleration(&self, t: f64) -> f64 {
+        let [t1, t2, t3, t4] = self.corners();
+        let scale = self.amplitude / self.g(0.5 * (t2 + t3));
+        let a = self.smoothing;
+        let sech2 = |x: f64| 1.0 / (a * x).cosh().powi(2);
+        scale * a * a * (sech2(t - t1) + sech2(t - t4) - sech2(t - t2) - sech2(t - t3))
+    }
+
     /// End of the return, `t4`, chords travelled.
     pub fn end(&self) -> f64 {
         self.corners()[3]
@@ -195,6 +205,8 @@ mod tests {
             let t = k as f64 * 0.07;
             let d = (r.at(t + 1e-6).0 - r.at(t - 1e-6).0) / 2e-6;
             assert!((d - r.at(t).1).abs() < 1e-6, "{t}");
+            let dd = (r.at(t + 1e-6).1 - r.at(t - 1e-6).1) / 2e-6;
+            assert!((dd - r.acceleration(t)).abs() < 1e-5, "{t}");
         }
     }
 }

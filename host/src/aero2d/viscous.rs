@@ -30,7 +30,7 @@ use fwav_ns2d::{Complex64, Contour, Flow, FrameState, GridSpec, NsError, Section
 
 use super::history::History;
 use super::ldvm::FreeVortex;
-use super::motion::{Motion, SectionFlapping};
+use super::motion::{Motion, PitchRamp, SectionFlapping};
 
 /// Steps between checks of the stable time step (a check costs about a
 /// tenth of a step).
@@ -62,6 +62,29 @@ pub enum ViscousShape {
     Contour(Vec<(f64, f64)>),
 }
 
+impl ViscousShape {
+    /// The contour through `points` (chords, either orientation, closed
+    /// or not); when its sharpest vertex turns by more than
+    /// [`CORNER_TURNING`] (an airfoil file's sharp trailing edge: a corner
+    /// has no conformal map), that edge opened to
+    /// [`TRAILING_EDGE_THICKNESS`] and closed by a semicircle, on 512
+    /// points (the chord is kept).
+    ///
+    /// # Errors
+    /// The contour's checks ([`Contour::from_points`],
+    /// [`Contour::with_blunt_trailing_edge`]).
+    pub fn from_points(points: &[(f64, f64)]) -> Result<Self, ViscousError> {
+        let contour = Contour::from_points(points)?;
+        if contour.sharpest_vertex().1 <= CORNER_TURNING {
+            return Ok(Self::Contour(points.to_vec()));
+        }
+        let rounded = contour.with_blunt_trailing_edge(TRAILING_EDGE_THICKNESS, CONTOUR_POINTS)?;
+        Ok(Self::Contour(
+            rounded.points().iter().map(|z| (z.re, z.im)).collect(),
+        ))
+    }
+}
+
 /// The viscous model's section and resolution.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ViscousSection {
@@ -83,9 +106,16 @@ pub struct ViscousSection {
     pub courant: f64,
 }
 
-/// Radius of the circle that rounds a NACA section's trailing edge for
-/// the viscous model, chords (a corner has no conformal map).
-pub const NACA_TRAILING_EDGE_RADIUS: f64 = 0.005;
+/// Thickness, chords, to which a sharp trailing edge (a NACA section's, a
+/// point file's) is opened for the viscous model (a corner has no
+/// conformal map; [`Contour::with_blunt_trailing_edge`]).
+pub const TRAILING_EDGE_THICKNESS: f64 = 0.005;
+
+/// A point file's vertex that turns by more than this (radians) is a
+/// corner, its sharp trailing edge, made blunt by
+/// [`TRAILING_EDGE_THICKNESS`] (an airfoil's sharp trailing edge turns by
+/// nearly π; a smooth contour's points by a few degrees each).
+pub const CORNER_TURNING: f64 = std::f64::consts::FRAC_PI_2;
 
 /// Points on a NACA section or a plate's contour for the map's fit.
 const CONTOUR_POINTS: usize = 512;
@@ -336,6 +366,15 @@ pub enum SectionPath {
     /// of an inclined stroke plane, no pitch (the aerodynamic
     /// discipline's); the frame's origin is at mid-chord.
     Flapping(SectionFlapping),
+    /// A section at rest in the stream pitched nose-up by Eldredge's ramp
+    /// about `pivot` (chords from the leading edge): the LDVM paper's
+    /// case 1 (no period).
+    Ramp {
+        /// The pitch axis, chords from the leading edge.
+        pivot: f64,
+        /// The pitch history.
+        ramp: PitchRamp,
+    },
 }
 
 impl SectionPath {
@@ -344,6 +383,7 @@ impl SectionPath {
         match self {
             Self::Harmonic(m) => m.pivot,
             Self::Flapping(_) => 0.5,
+            Self::Ramp { pivot, .. } => *pivot,
         }
     }
 
@@ -351,6 +391,7 @@ impl SectionPath {
         match self {
             Self::Harmonic(m) => m.reduced_frequency,
             Self::Flapping(f) => f.reduced_frequency,
+            Self::Ramp { .. } => 0.0,
         }
     }
 
@@ -366,6 +407,7 @@ impl SectionPath {
                 let (x, _, h, _) = f.at(t);
                 (x, h, 0.0)
             }
+            Self::Ramp { ramp, .. } => (0.0, 0.0, ramp.at(t).0),
         }
     }
 
@@ -385,6 +427,10 @@ impl SectionPath {
                 let w = 2.0 * f.reduced_frequency;
                 let (_, dx, _, dh) = f.at(0.0);
                 (1.0 + f.radius * f.amplitude.abs() * w, (1.0 - dx).hypot(dh))
+            }
+            Self::Ramp { pivot, ramp } => {
+                let arm = pivot.max(1.0 - pivot);
+                (1.0 + 2.0 * ramp.pitch_rate * arm, 1.0)
             }
         };
         peak / start
@@ -416,6 +462,16 @@ impl fwav_ns2d::Motion for SectionPath {
                 FrameState {
                     velocity: Complex64::new(dx - 1.0, dh),
                     acceleration: Complex64::new(ddx, ddh),
+                    ..FrameState::default()
+                }
+            }
+            Self::Ramp { ramp, .. } => {
+                let (alpha, dalpha) = ramp.at(t);
+                FrameState {
+                    velocity: Complex64::new(-1.0, 0.0),
+                    angle: -alpha,
+                    rate: -dalpha,
+                    angular_acceleration: -ramp.acceleration(t),
                     ..FrameState::default()
                 }
             }

@@ -18,8 +18,8 @@ pub struct Aero2dArgs {
     /// The flow model: `inviscid` (the section chooses: LDVM for `flat`,
     /// the panel method for a contour) or `ns` (laminar Navier–Stokes at
     /// `--reynolds`; `flat` is a thin plate of `--ns-thickness`, a NACA
-    /// section has its trailing edge rounded, a point file may be any
-    /// closed contour without corners).
+    /// section or a point file any closed contour, a sharp trailing edge
+    /// opened to 0.005 chords).
     #[arg(long, value_enum, default_value_t = FlowModel::Inviscid)]
     pub model: FlowModel,
     /// Thickness of the plate that models a `flat` section in the

@@ -9,8 +9,15 @@
 //! source). These cases take minutes each (the wakes need 150 shedding
 //! times); the crate's tests run the quick ones.
 
+use std::sync::Arc;
+
 use fwav_ns2d::cases::{CylinderWake, HoveringEllipse, ImpulsiveCylinder};
 use fwav_ns2d::{NsError, ReferenceCurve, WakeStatistics};
+
+use super::aero2d::{ldvm_case1_cfd, window_mean};
+use crate::aero2d::motion::PitchRamp;
+use crate::aero2d::naca::parse_points;
+use crate::aero2d::viscous::{SectionPath, ViscousRun, ViscousSection, ViscousShape};
 
 use super::{
     missing, shared, ErrorKind, Measured, Memo, Solver, Spec, Validation, ValidationError,
@@ -34,6 +41,8 @@ pub fn cases() -> Vec<Validation> {
         impulsive(550),
         impulsive(3000),
         hovering_lift(),
+        case1_mean_lift(),
+        case1_peak_lift(),
     ]
 }
 
@@ -270,5 +279,113 @@ fn hovering_lift() -> Validation {
                 note: Some(format!("worst at t/T = {x:.3}")),
             })
         },
+    }
+}
+
+/// The LDVM paper's case 1 (Ramesh et al. 2014, J. Fluid Mech. 751) under
+/// the Navier–Stokes model: the SD7003 (`tests/data/sd7003.dat`, its
+/// sharp trailing edge rounded by 0.005 c) at rest in the stream at
+/// Re 30,000, pitched 0 -> 25 deg about the leading edge by Eldredge's
+/// ramp (K = 0.11, a = 11, from t = 1), to t = 4.1 chords travelled, at
+/// the resolution `section` (its shape is replaced by the SD7003).
+pub fn case1_run(section: &ViscousSection) -> Result<ViscousRun, ValidationError> {
+    let points = parse_points(include_str!("../../tests/data/sd7003.dat"))
+        .map_err(|e| missing(format!("sd7003.dat: {e}")))?;
+    let shape = ViscousShape::from_points(&points.points)
+        .map_err(|e| missing(format!("sd7003.dat: {e}")))?;
+    let section = ViscousSection {
+        shape,
+        ..section.clone()
+    };
+    let path = SectionPath::Ramp {
+        pivot: 0.0,
+        ramp: PitchRamp {
+            amplitude: 25f64.to_radians(),
+            pitch_rate: 0.11,
+            smoothing: 11.0,
+            start: 1.0,
+        },
+    };
+    section
+        .run(path, CASE1_REYNOLDS, 4.1)
+        .map_err(|e| missing(format!("Navier-Stokes, case 1: {e}")))
+}
+
+/// The chord Reynolds number of the LDVM paper's case 1.
+pub const CASE1_REYNOLDS: f64 = 30_000.0;
+
+/// [`case1_run`] at the viscous model's default resolution (256 x 160,
+/// Courant 2), run once per process (the case-1 cases share it).
+fn case1_default() -> Result<Arc<ViscousRun>, ValidationError> {
+    static RUN: Memo<Arc<ViscousRun>> = Memo::new();
+    shared(&RUN, || {
+        Ok(Arc::new(case1_run(&ViscousSection::plate(
+            ViscousSection::DEFAULT_THICKNESS,
+        ))?))
+    })
+}
+
+/// The CFD's `(t, CL)` of case 1.
+fn case1_cfd_lift() -> (Vec<f64>, Vec<f64>) {
+    ldvm_case1_cfd().map_or_else(
+        |_| (Vec::new(), Vec::new()),
+        |cfd| cfd.iter().map(|p| (p.0, p.2)).unzip(),
+    )
+}
+
+const CASE1_REFERENCE: &str = "Ramesh et al. (2014) J. Fluid Mech. 751, case 1, CFL3D lift \
+                               (tests/data/ldvm_case1_cfd.dat)";
+
+/// Largest of `values` (NaN for none).
+fn largest(values: &[f64]) -> f64 {
+    values.iter().copied().reduce(f64::max).unwrap_or(f64::NAN)
+}
+
+/// Case 1's mean lift over the shedding phase, `U t / c` from 2 to 4 (as
+/// the LDVM's case, [`super::aero2d::ldvm_case1_mean_lift`]), against the
+/// CFD's over the same window, within 10% (issue 23), at the viscous
+/// model's default resolution.
+fn case1_mean_lift() -> Validation {
+    Validation {
+        spec: Spec {
+            name: "ns2d/ldvm-case1-mean-lift",
+            solver: Solver::Ns2d,
+            reference: CASE1_REFERENCE,
+            quantity: "mean CL over U t / c = 2..4, SD7003 pitch ramp 0-25 deg about the leading \
+                       edge, Re 30,000, 256 x 160, Courant 2",
+            units: "1",
+            error_kind: ErrorKind::Relative,
+            tolerance: 0.10,
+        },
+        reference: || {
+            let (t, cl) = case1_cfd_lift();
+            window_mean(&t, &cl, 2.0, 4.0)
+        },
+        compute: || {
+            let run = case1_default()?;
+            let h = &run.history;
+            Ok(Measured {
+                value: window_mean(&h.time, &h.cl, 2.0, 4.0),
+                note: Some(format!("{} steps", run.steps)),
+            })
+        },
+    }
+}
+
+/// Case 1's peak lift against the CFD's, within 10%.
+fn case1_peak_lift() -> Validation {
+    Validation {
+        spec: Spec {
+            name: "ns2d/ldvm-case1-peak-lift",
+            solver: Solver::Ns2d,
+            reference: CASE1_REFERENCE,
+            quantity: "peak CL to U t / c = 4.1, SD7003 pitch ramp 0-25 deg about the leading \
+                       edge, Re 30,000, 256 x 160, Courant 2",
+            units: "1",
+            error_kind: ErrorKind::Relative,
+            tolerance: 0.10,
+        },
+        reference: || largest(&case1_cfd_lift().1),
+        compute: || Ok(largest(&case1_default()?.history.cl).into()),
     }
 }
