@@ -80,7 +80,8 @@ pub const DESIGN: Table<DesignConfig> = Table {
           variable for the L18 array, and the weights of the combined objective \
           w_ct CT/CT_0 + w_eta eta/eta_0, where CT is the net thrust coefficient (the \
           LDVM's thrust less the laminar friction estimate, or the Navier-Stokes model's \
-          thrust, friction included) and eta = CT/CP the net efficiency.",
+          thrust, friction included), eta = CT/CP the net efficiency, and CT_0, eta_0 the \
+          initial design's (the first cycle's, for the whole design).",
     settings: &[
         Setting {
             key: "frequency_hz",

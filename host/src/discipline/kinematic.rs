@@ -12,8 +12,15 @@
 //!    best combined objective, and a confirmation run.
 //!
 //! The combined objective (the stated rule for choosing): `w_ct CT / CT_0 +
-//! w_eta eta / eta_0`, each objective relative to the initial design's, so
-//! the weights say how much a relative gain in each is worth. CT is the net
+//! w_eta eta / eta_0`, each objective relative to the reference design's
+//! (the weights say how much a relative gain in each is worth). The
+//! reference is fixed for the whole design: the initial design of the
+//! first cycle ([`ObjectiveReference`]; the design driver hands it to the
+//! later cycles). Taken from each cycle's own design instead, the
+//! objective changed from cycle to cycle, and two designs on a front could
+//! each beat the other relative to itself: the default design on the
+//! Navier–Stokes model alternated between them until its cycle cap
+//! (docs/ns-design). CT is the net
 //! thrust ([`SectionResult::ct_net`]: the LDVM's thrust, with leading-edge
 //! shedding, less the laminar friction estimate) and eta the net efficiency
 //! `CT_net / CP` ([`SectionResult::efficiency_net`]); the response surfaces
@@ -176,6 +183,10 @@ pub struct KinematicResult {
     pub candidates: Vec<Candidate>,
     /// Index of the chosen candidate, None: the initial design stays.
     pub chosen: Option<usize>,
+    /// The objective's reference (None in records written before it was
+    /// recorded: the initial design's run).
+    #[serde(default)]
+    pub reference: Option<ObjectiveReference>,
     /// The evaluations' flow model and what it leaves out of the section
     /// (None in records written before it was recorded: the LDVM).
     #[serde(default)]
@@ -208,6 +219,38 @@ pub enum KinematicError {
     /// Design of experiments, ANOM, RSM or NSGA-II refused their input.
     #[error("{0}")]
     Method(String),
+}
+
+/// The combined objective's reference: the net thrust coefficient and net
+/// efficiency the design's objectives are divided by (the first cycle's
+/// initial design's: see the module docs).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ObjectiveReference {
+    /// `CT_0`, net.
+    pub ct_net: f64,
+    /// `eta_0`, net.
+    pub efficiency_net: f64,
+}
+
+impl ObjectiveReference {
+    /// The reference a run's result gives: refused unless both are
+    /// positive (the ratios would flip sign).
+    ///
+    /// # Errors
+    /// [`KinematicError::NoNetThrust`].
+    pub fn of(result: &SectionResult) -> Result<Self, KinematicError> {
+        if !(result.ct_net > 0.0 && result.efficiency_net > 0.0) {
+            return Err(KinematicError::NoNetThrust {
+                ct_net: result.ct_net,
+                ct: result.ct,
+                efficiency_net: result.efficiency_net,
+            });
+        }
+        Ok(Self {
+            ct_net: result.ct_net,
+            efficiency_net: result.efficiency_net,
+        })
+    }
 }
 
 /// Weights of the combined objective.
@@ -254,13 +297,15 @@ pub fn optimize_feasible(
         initial,
         weights,
         nsga,
+        None,
         cache,
         violation,
         &|_, _| {},
     )
 }
 
-/// [`optimize_feasible`], calling `progress(done, total)` after each
+/// [`optimize_feasible`] with the objective's `reference` (None: the
+/// initial design's run), calling `progress(done, total)` after each
 /// direct evaluation (cached ones included; `total` is [`EVALUATIONS`])
 /// from whichever thread made it.
 #[allow(clippy::too_many_arguments)]
@@ -270,6 +315,7 @@ pub fn optimize_reporting(
     initial: FlappingKinematics,
     weights: Weights,
     nsga: &Nsga2Config,
+    reference: Option<ObjectiveReference>,
     cache: &EvaluationCache,
     violation: Violation,
     progress: &(dyn Fn(usize, usize) + Sync),
@@ -282,14 +328,11 @@ pub fn optimize_reporting(
     };
     let initial_violation = violation(&initial);
     let initial = evaluations.run(initial);
-    let reference = initial.result.clone().map_err(KinematicError::Initial)?;
-    if !(reference.ct_net > 0.0 && reference.efficiency_net > 0.0) {
-        return Err(KinematicError::NoNetThrust {
-            ct_net: reference.ct_net,
-            ct: reference.ct,
-            efficiency_net: reference.efficiency_net,
-        });
-    }
+    let initial_result = initial.result.clone().map_err(KinematicError::Initial)?;
+    let reference = match reference {
+        Some(r) => r,
+        None => ObjectiveReference::of(&initial_result)?,
+    };
     let objective = Objective {
         weights,
         reference,
@@ -328,7 +371,7 @@ pub fn optimize_reporting(
     // An infeasible initial design is no bar to beat (the design driver
     // stops before the disciplines if it cannot be flown).
     let initial_score = if initial_violation == 0.0 {
-        weights.thrust + weights.efficiency
+        objective.combined(&initial_result)
     } else {
         f64::NEG_INFINITY
     };
@@ -349,6 +392,7 @@ pub fn optimize_reporting(
         pareto: surfaces.pareto,
         candidates,
         chosen,
+        reference: Some(reference),
         section: Some(section),
     })
 }
@@ -445,7 +489,7 @@ impl Evaluations<'_> {
 /// the actuator's constraint.
 struct Objective<'a> {
     weights: Weights,
-    reference: SectionResult,
+    reference: ObjectiveReference,
     violation: Violation<'a>,
 }
 

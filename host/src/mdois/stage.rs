@@ -28,7 +28,9 @@ use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::aeroelastic::{run, SystemResult, WingModel};
 use crate::config::SystemConfig;
 use crate::discipline::cache::EvaluationCache;
-use crate::discipline::kinematic::{optimize_reporting, KinematicResult, Weights};
+use crate::discipline::kinematic::{
+    optimize_reporting, KinematicError, KinematicResult, ObjectiveReference, Weights,
+};
 use crate::discipline::section::SectionCase;
 use crate::files::write_atomic;
 use crate::optimize::nsga2::Nsga2Config;
@@ -281,6 +283,7 @@ impl Context<'_> {
             design.kinematics,
             weights,
             &nsga,
+            self.objective_reference(running.cycle)?,
             &self.cache,
             &|k: &FlappingKinematics| vehicle.violation(k),
             &|done, total| self.advanced(running, done, total, None),
@@ -289,6 +292,29 @@ impl Context<'_> {
             cycle: running.cycle,
             source,
         })
+    }
+
+    /// The combined objective's reference of `cycle`'s aerodynamic
+    /// discipline: the first cycle's (its initial design's run, from its
+    /// `kinematics.json`), so the objective stays the same through the
+    /// design; None in the first cycle, which sets it.
+    fn objective_reference(&self, cycle: usize) -> Result<Option<ObjectiveReference>, DesignError> {
+        if cycle <= 1 {
+            return Ok(None);
+        }
+        let first = load_kinematics(&self.dir, 1)?.result;
+        let reference = match (first.reference, &first.initial.result) {
+            (Some(r), _) => r,
+            (None, Ok(initial)) => ObjectiveReference::of(initial)
+                .map_err(|source| DesignError::Kinematics { cycle: 1, source })?,
+            (None, Err(e)) => {
+                return Err(DesignError::Kinematics {
+                    cycle: 1,
+                    source: KinematicError::Initial(e.clone()),
+                })
+            }
+        };
+        Ok(Some(reference))
     }
 
     /// The structural discipline of `cycle`, on the pressure history of

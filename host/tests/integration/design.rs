@@ -205,6 +205,20 @@ fn coarse_design_converges_writes_everything_and_resumes() {
     }
     assert_eq!(cycles[1]["change"]["design_unchanged"], true);
     assert_eq!(cycles[0]["change"]["design_unchanged"], false);
+    // One objective for the whole design: cycle 2's aerodynamic
+    // discipline divides by cycle 1's initial design's net CT and
+    // efficiency, not by its own design's.
+    let first = json(&dir.join("cycle-1/kinematics.json"));
+    let second = json(&dir.join("cycle-2/kinematics.json"));
+    let initial = &first["result"]["initial"]["result"]["Ok"];
+    let reference = &first["result"]["reference"];
+    assert_eq!(reference["ct_net"], initial["ct_net"], "{reference}");
+    assert_eq!(reference["efficiency_net"], initial["efficiency_net"]);
+    assert_eq!(&second["result"]["reference"], reference);
+    assert_ne!(
+        second["result"]["initial"]["result"]["Ok"]["ct_net"], initial["ct_net"],
+        "cycle 2 analyses another design (or section) than cycle 1"
+    );
     for key in ["initial", "final"] {
         assert!(summary[key]["ct"].is_f64(), "{key}");
     }

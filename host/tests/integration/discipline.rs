@@ -375,3 +375,58 @@ fn kinematic_discipline_never_proposes_an_infeasible_design() {
         assert!(verdict.limiting.margin >= limits.reserve);
     }
 }
+
+/// The combined objective divides by the reference it is given (the
+/// design driver gives the first cycle's initial design's to the later
+/// cycles): every candidate's combined objective is `CT/CT_0 + eta/eta_0`
+/// of its confirmation run with that reference, and the result records it;
+/// without one, the reference is the initial design's run. The equal-weights
+/// run's evaluations come from its cache.
+#[test]
+fn the_objective_divides_by_the_reference_given() {
+    use fwav::discipline::kinematic::{
+        optimize_reporting, unconstrained, DesignSpace, ObjectiveReference, Weights,
+    };
+    use fwav::optimize::nsga2::Nsga2Config;
+    let run = equal_weights_run();
+    let initial = run.result.initial.result.clone().unwrap();
+    assert_eq!(
+        run.result.reference,
+        Some(ObjectiveReference::of(&initial).unwrap())
+    );
+    let given = ObjectiveReference {
+        ct_net: 2.0 * initial.ct_net,
+        efficiency_net: 0.5 * initial.efficiency_net,
+    };
+    let result = optimize_reporting(
+        &run.case,
+        &DesignSpace::fwav(),
+        run.result.initial.design,
+        Weights {
+            thrust: 1.0,
+            efficiency: 1.0,
+        },
+        &Nsga2Config::default(),
+        Some(given),
+        &run.cache,
+        &unconstrained,
+        &|_, _| {},
+    )
+    .unwrap();
+    assert_eq!(result.reference, Some(given));
+    for c in &result.candidates {
+        let r = c.confirmation.result.as_ref().unwrap();
+        let expected = r.ct_net / given.ct_net + r.efficiency_net / given.efficiency_net;
+        let combined = c.combined.unwrap();
+        assert!(
+            (combined - expected).abs() < 1e-12 * expected.abs(),
+            "{}: {combined} {expected}",
+            c.method
+        );
+    }
+    // The initial design scores 1/2 + 2 = 2.5 against this reference:
+    // a candidate is chosen only above it.
+    if let Some(i) = result.chosen {
+        assert!(result.candidates[i].combined.unwrap() > 2.5);
+    }
+}
