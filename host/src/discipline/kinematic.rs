@@ -167,6 +167,11 @@ pub fn unconstrained(_: &FlappingKinematics) -> f64 {
 pub struct KinematicResult {
     /// The initial design's run.
     pub initial: Evaluated,
+    /// The initial design's constraint violation on the actuator (0:
+    /// feasible; an infeasible initial design is no bar a candidate must
+    /// beat). 0 in records written before it was recorded.
+    #[serde(default)]
+    pub initial_violation: f64,
     /// The 18 runs of the array.
     pub runs: Vec<Evaluated>,
     /// The actuator's constraint violation of each run (0: feasible).
@@ -385,6 +390,7 @@ pub fn optimize_reporting(
     let section = case.modelled_section(&initial.design);
     Ok(KinematicResult {
         initial,
+        initial_violation,
         runs: array.runs,
         run_violations,
         level_means: anom.level_means.clone(),

@@ -355,6 +355,7 @@ fn kinematic_discipline_never_proposes_an_infeasible_design() {
         &|k: &FlappingKinematics| vehicle.violation(k),
     )
     .unwrap();
+    assert_eq!(result.initial_violation, vehicle.violation(&initial));
     let infeasible_rows = result.run_violations.iter().filter(|&&v| v > 0.0).count();
     println!("{infeasible_rows} of 18 L18 rows infeasible");
     assert!(infeasible_rows > 0, "the constraint does not bind");
