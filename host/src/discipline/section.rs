@@ -34,9 +34,11 @@ use serde::{Deserialize, Serialize};
 
 use crate::aero2d::camber::{CamberError, CamberHistory};
 use crate::aero2d::case::MAX_STEPS;
+use crate::aero2d::friction::streamwise_friction;
 use crate::aero2d::ldvm::{
     cycle_mean_of, cycle_means, cycle_means_until, History, Ldvm, Motion, SectionFlapping, Settings,
 };
+use crate::aero2d::panel::{PanelError, PanelSettings, PanelSolver, SectionShape};
 use crate::aero2d::viscous::{SectionPath, ViscousError};
 use crate::aeroelastic::kinematics::{FlappingKinematics, KinematicsError};
 use crate::aeroelastic::model::FlightCondition;
@@ -128,6 +130,10 @@ pub enum EvaluationError {
     /// A case value out of range.
     #[error("section case: {0}")]
     Case(String),
+    /// The panel method refused the section
+    /// ([`SectionCase::evaluate_panel`]).
+    #[error("the panel section analysis: {0}")]
+    Panel(#[from] PanelError),
     /// The Navier–Stokes model failed (the solver refused the case or
     /// diverged, a bad plate thickness, a time step that kept falling).
     #[error("the Navier–Stokes section analysis: {0}")]
@@ -285,13 +291,7 @@ impl SectionCase {
         self.check_work(kinematics.frequency)?;
         let k = self.reduced_frequency(kinematics.frequency);
         let period = std::f64::consts::PI / k;
-        let flapping = SectionFlapping {
-            reduced_frequency: k,
-            radius: self.radius / self.chord,
-            amplitude: kinematics.amplitude,
-            mean_angle: kinematics.mean_angle,
-            stroke_plane: kinematics.stroke_plane,
-        };
+        let flapping = self.flapping(kinematics);
         let history = match &self.model {
             SectionFlowModel::Ldvm => self.ldvm_history(flapping, period)?,
             SectionFlowModel::Ns(plate) => {
@@ -307,6 +307,60 @@ impl SectionCase {
             }
         };
         summarize(&history, period, k)
+    }
+
+    /// The section's motion when the wing flaps by `kinematics`.
+    fn flapping(&self, kinematics: &FlappingKinematics) -> SectionFlapping {
+        SectionFlapping {
+            reduced_frequency: self.reduced_frequency(kinematics.frequency),
+            radius: self.radius / self.chord,
+            amplitude: kinematics.amplitude,
+            mean_angle: kinematics.mean_angle,
+            stroke_plane: kinematics.stroke_plane,
+        }
+    }
+
+    /// The section flapping by `kinematics` as the rigid thick section
+    /// `shape` by the unsteady panel method
+    /// ([`PanelSolver::with_flapping`]), with the LDVM's steps and the
+    /// same laminar friction estimate subtracted for the net values: the
+    /// third model of the comparison over the L18 rows (docs/ns-design),
+    /// not one of the discipline's (no deformation, no leading-edge
+    /// shedding). Cost: about a second for the default section on 160
+    /// panels.
+    ///
+    /// # Errors
+    /// As [`Self::evaluate`]; [`EvaluationError::Panel`] when the solver
+    /// refuses the section.
+    pub fn evaluate_panel(
+        &self,
+        kinematics: &FlappingKinematics,
+        shape: &SectionShape,
+    ) -> Result<SectionResult, EvaluationError> {
+        kinematics.validate()?;
+        self.check()?;
+        self.check_work(kinematics.frequency)?;
+        let k = self.reduced_frequency(kinematics.frequency);
+        let flapping = self.flapping(kinematics);
+        let steps = self.settings(k);
+        let settings = PanelSettings {
+            dt: steps.dt,
+            duration: steps.duration,
+            ..PanelSettings::default()
+        };
+        let mut history = PanelSolver::new(shape, Motion::plunge(k, 0.0), settings)?
+            .with_flapping(flapping)
+            .run();
+        let reynolds = self.reynolds();
+        history.cd_friction = history
+            .time
+            .iter()
+            .map(|&t| {
+                let (_, x_dot, _, h_dot) = flapping.at(t);
+                streamwise_friction(reynolds, 0.0, h_dot, x_dot)
+            })
+            .collect();
+        summarize(&history, std::f64::consts::PI / k, k)
     }
 
     /// Refuses case values out of range: a chord, radius or speed not

@@ -491,3 +491,85 @@ fn bad_inputs_are_refused() {
         })
     ));
 }
+
+/// The flapping section's path ([`PanelSolver::with_flapping`], the
+/// aerodynamic discipline's motion: plunge and the surge of an inclined
+/// stroke plane) against the harmonic path it generalizes. A vertical
+/// stroke plane is pure plunge, `h = r sin(A cos wt)`: at radius 10 chords
+/// and `A = asin(0.005)`, within 1e-6 of `h0 cos(wt)`, `h0 = 0.05 c`,
+/// whose cycle means are those of `h0 sin(wt)` (Garrick, NACA Rep. 567:
+/// the means do not depend on the phase). NACA 0006, k = 1, last 2 of 4
+/// cycles: the mean CT and CP of the two paths within 0.5% of each other.
+/// Measured: CT 0.009593 against 0.009566 (+0.28%), CP +0.11%.
+#[test]
+fn flapping_in_a_vertical_stroke_plane_is_harmonic_plunge() {
+    use fwav::aero2d::motion::SectionFlapping;
+    let (k, period) = (1.0, PI);
+    let section = naca("0006", DEFAULT_PANELS);
+    let settings = PanelSettings {
+        duration: 4.0 * period,
+        ..PanelSettings::default()
+    };
+    let flapping = SectionFlapping {
+        reduced_frequency: k,
+        radius: 10.0,
+        amplitude: 0.005_f64.asin(),
+        mean_angle: 0.0,
+        stroke_plane: std::f64::consts::FRAC_PI_2,
+    };
+    let flapped = PanelSolver::new(&section, Motion::plunge(k, 0.0), settings)
+        .unwrap()
+        .with_flapping(flapping)
+        .run();
+    let (ct_f, cp_f, _) = cycle_means(&flapped, period, 2);
+    let (ct_h, cp_h, _) = plunge_means(&section);
+    println!("flapping CT {ct_f:.6} CP {cp_f:.6}; harmonic plunge CT {ct_h:.6} CP {cp_h:.6}");
+    assert!(
+        (ct_f / ct_h - 1.0).abs() < 0.005,
+        "CT {ct_f} against {ct_h}"
+    );
+    assert!(
+        (cp_f / cp_h - 1.0).abs() < 0.005,
+        "CP {cp_f} against {cp_h}"
+    );
+}
+
+/// A horizontal stroke plane is pure surge: a symmetric section moving
+/// fore and aft along its chord in the stream keeps its symmetry, so it
+/// neither lifts nor sheds (d'Alembert: no mean force in potential flow
+/// without circulation; the added-mass force of the surge averages to
+/// zero over a period). NACA 0012 surging `x = -r sin(A cos wt)` with
+/// r = 2 chords, A = 30°, k = 0.7 (the air's speed over it swings between
+/// about -0.5 and 2.5): |CL| below 1e-9 at every sample and the mean CT
+/// and CP over the last 2 of 4 cycles below 1e-3. Measured: 1.4e-12,
+/// -1.2e-5, 4.9e-5.
+#[test]
+fn flapping_in_a_horizontal_stroke_plane_is_pure_surge() {
+    use fwav::aero2d::motion::SectionFlapping;
+    let k = 0.7;
+    let period = PI / k;
+    let settings = PanelSettings {
+        duration: 4.0 * period,
+        ..PanelSettings::default()
+    };
+    let flapping = SectionFlapping {
+        reduced_frequency: k,
+        radius: 2.0,
+        amplitude: 30f64.to_radians(),
+        mean_angle: 0.0,
+        stroke_plane: 0.0,
+    };
+    let history = PanelSolver::new(
+        &naca("0012", DEFAULT_PANELS),
+        Motion::plunge(k, 0.0),
+        settings,
+    )
+    .unwrap()
+    .with_flapping(flapping)
+    .run();
+    let lift = history.cl.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
+    let (ct, cp, _) = cycle_means(&history, period, 2);
+    println!("pure surge: max |CL| {lift:.2e}, mean CT {ct:.2e}, CP {cp:.2e}");
+    assert!(lift < 1e-9, "{lift}");
+    assert!(ct.abs() < 1e-3 && cp.abs() < 1e-3, "CT {ct}, CP {cp}");
+}

@@ -427,3 +427,41 @@ fn design_report_says_the_ns_section_is_rigid() {
         "{report}"
     );
 }
+
+/// The speed target for the discipline: the whole aerodynamic
+/// discipline (the initial design, the 18 L18 rows and the ANOM and RSM
+/// confirmations, each a 4-stroke Navier–Stokes evaluation of the rigid
+/// 4 % plate at the default resolution, in parallel) on the built-in
+/// FWAV's mid-span section from the built-in initial design, equal
+/// weights, under 10 minutes on this 2-core machine. The same work as
+/// the first cycle's discipline of `fwav design` with `section_model =
+/// "ns"` (548 s in the design run of docs/ns-design, commit 13d3dc1).
+#[test]
+#[ignore = "benchmark (about 9 min): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_discipline_benchmark`"]
+fn ns_discipline_benchmark() {
+    use fwav::discipline::kinematic::{optimize, DesignSpace, Weights};
+    use fwav::optimize::nsga2::Nsga2Config;
+    let case = ns_case(ViscousPlate::new(0.04));
+    let cache = EvaluationCache::new();
+    let clock = std::time::Instant::now();
+    let result = optimize(
+        &case,
+        &DesignSpace::fwav(),
+        SystemConfig::default().kinematics(),
+        Weights {
+            thrust: 1.0,
+            efficiency: 1.0,
+        },
+        &Nsga2Config::default(),
+        &cache,
+    )
+    .unwrap();
+    let seconds = clock.elapsed().as_secs_f64();
+    println!(
+        "NS discipline: {} evaluations in {seconds:.1} s; chosen {:?}",
+        cache.len(),
+        result.chosen.map(|i| &result.candidates[i].method)
+    );
+    assert!(result.runs.iter().all(|e| e.result.is_ok()));
+    assert!(seconds < 600.0, "{seconds:.1} s against the issue's 600 s");
+}

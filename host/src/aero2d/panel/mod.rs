@@ -78,6 +78,7 @@ use std::f64::consts::PI;
 pub use shape::{SectionShape, ShapeError, ShapeHistory};
 
 use super::ldvm::{FreeVortex, History, Motion};
+use super::motion::SectionFlapping;
 use expansion::{chain_potential, clusters};
 use influence::{doublet_potential, Matrices, Outline};
 use shape::V2;
@@ -165,10 +166,13 @@ fn dot(a: V2, b: V2) -> f64 {
 }
 
 /// The rigid-body transform of [`super::ldvm`]: body point `X` sits at
-/// `(p, h) + R (X - (p, 0))`, `R` the clockwise rotation by `alpha`.
+/// `(p + x, h) + R (X - (p, 0))`, `R` the clockwise rotation by `alpha`,
+/// `x` the surge downstream (a flapping section's; zero otherwise).
 #[derive(Clone, Copy, Debug)]
 struct Frame {
     pivot: f64,
+    x: f64,
+    x_dot: f64,
     h: f64,
     h_dot: f64,
     sin: f64,
@@ -177,11 +181,19 @@ struct Frame {
 }
 
 impl Frame {
-    fn at(motion: &Motion, t: f64) -> Self {
-        let (h, h_dot, alpha, alpha_dot) = motion.at(t);
+    /// The frame at `t`: the motion's plunge and pitch, or a flapping
+    /// section's surge and plunge with the motion's pitch.
+    fn at(motion: &Motion, flapping: Option<&SectionFlapping>, t: f64) -> Self {
+        let (mut h, mut h_dot, alpha, alpha_dot) = motion.at(t);
+        let (mut x, mut x_dot) = (0.0, 0.0);
+        if let Some(f) = flapping {
+            (x, x_dot, h, h_dot) = f.at(t);
+        }
         let (sin, cos) = alpha.sin_cos();
         Self {
             pivot: motion.pivot,
+            x,
+            x_dot,
             h,
             h_dot,
             sin,
@@ -200,22 +212,23 @@ impl Frame {
 
     fn to_global(self, x: V2) -> V2 {
         let r = self.rotate([x[0] - self.pivot, x[1]]);
-        [self.pivot + r[0], self.h + r[1]]
+        [self.pivot + self.x + r[0], self.h + r[1]]
     }
 
     fn to_body(self, r: V2) -> V2 {
-        let (dx, dy) = (r[0] - self.pivot, r[1] - self.h);
+        let (dx, dy) = (r[0] - self.pivot - self.x, r[1] - self.h);
         [
             self.pivot + self.cos * dx - self.sin * dy,
             self.sin * dx + self.cos * dy,
         ]
     }
 
-    /// Velocity of the rigid body at body point `x`, body axes.
+    /// Velocity of the rigid body at body point `x`, body axes: the
+    /// pivot's `(x', h')` turned into the body axes, and the rotation.
     fn body_velocity(&self, x: V2) -> V2 {
         [
-            -self.sin * self.h_dot + self.alpha_dot * x[1],
-            self.cos * self.h_dot - self.alpha_dot * (x[0] - self.pivot),
+            self.cos * self.x_dot - self.sin * self.h_dot + self.alpha_dot * x[1],
+            self.sin * self.x_dot + self.cos * self.h_dot - self.alpha_dot * (x[0] - self.pivot),
         ]
     }
 
@@ -319,6 +332,8 @@ struct Step {
 /// optionally deforming ([`ShapeHistory`]), started impulsively from rest.
 pub struct PanelSolver {
     motion: Motion,
+    /// A flapping section's surge and plunge replacing the harmonic plunge.
+    flapping: Option<SectionFlapping>,
     settings: PanelSettings,
     shape: Option<ShapeHistory>,
     /// The contour now (body frame) and its factored system.
@@ -368,6 +383,7 @@ impl PanelSolver {
         let core = 1.3 * settings.dt;
         Ok(Self {
             motion,
+            flapping: None,
             settings,
             shape: None,
             outline,
@@ -379,6 +395,16 @@ impl PanelSolver {
             time: 0.0,
             core2: core * core,
         })
+    }
+
+    /// Surge and plunge of a flapping wing's section instead of the
+    /// harmonic plunge (pitch and pivot still from the motion), as
+    /// [`super::ldvm::Ldvm::with_flapping`]: the surge velocity `x'`
+    /// changes the air's speed over the section to `1 - x'`; coefficients
+    /// stay referred to the flight speed.
+    pub fn with_flapping(mut self, flapping: SectionFlapping) -> Self {
+        self.flapping = Some(flapping);
+        self
     }
 
     /// A deforming section: the contour follows `history` (same vertex
@@ -444,7 +470,7 @@ impl PanelSolver {
         let dt = self.settings.dt;
         self.time += dt;
         let t = self.time;
-        let frame = Frame::at(&self.motion, t);
+        let frame = Frame::at(&self.motion, self.flapping.as_ref(), t);
         let m = self.outline.len();
         let deformation = match self.contour_at(t) {
             Some((outline, velocity)) => {
@@ -574,7 +600,7 @@ impl PanelSolver {
         let dt = self.settings.dt;
         let (mu, mu_prev, q, q_prev) = (&now.mu, &previous.mu, &now.q, &previous.q);
         let m = mu.len();
-        let frame = Frame::at(&self.motion, tm);
+        let frame = Frame::at(&self.motion, self.flapping.as_ref(), tm);
         let deformed = self.contour_at(tm);
         let rigid = vec![[0.0; 2]; m];
         let (outline, deformation) = match &deformed {
