@@ -55,10 +55,10 @@ const DEFAULT_STEPS: f64 = 240.0;
 const DEFAULT_MEMORY: f64 = 680e6;
 
 /// Wall time of one Navier–Stokes evaluation of the mid-span section at
-/// the default resolution, s: 69 s measured for the default section's 4
+/// the default resolution, s: 34.4 s measured for the default section's 4
 /// cycles on two cores (README, "Viscous section analysis": 42,438 steps
-/// of 256 × 160 cells at Courant number 2, 39.7 ns per cell per step).
-pub const NS_EVALUATION_SECONDS: f64 = 69.0;
+/// of 256 × 160 cells at Courant number 2, 19.8 ns per cell per step).
+pub const NS_EVALUATION_SECONDS: f64 = 34.4;
 
 /// Navier–Stokes evaluations of a design run: the first cycle's 21, then
 /// the two confirmations of each later cycle (the array's rows and the
@@ -193,11 +193,11 @@ mod tests {
     }
 
     /// The Navier–Stokes section model's evaluations are in the built-in
-    /// design's estimate, which says what they cost. At 69 s each they
-    /// make it about 4.9 times the LDVM run (the NS design run measured
-    /// 1,661 s, 3.8 times, with 24 new evaluations over 5 cycles): not
-    /// far beyond it (845 s each, before the solver's implicit
-    /// advection, made it 49 times).
+    /// design's estimate, which says what they cost. At 34.4 s each they
+    /// make it about 2.95 times the LDVM run (the NS design run measured
+    /// 863 s, 2.8 times the LDVM run's 307 s measured the same day, with
+    /// 22 new evaluations over 4 cycles): not far beyond it (845 s each,
+    /// before the solver's implicit advection, made it 49 times).
     #[test]
     fn the_ns_section_model_is_in_the_estimate() {
         let mut ns = SystemConfig::default();
@@ -206,7 +206,7 @@ mod tests {
         assert_eq!(e.section_seconds, NS_EVALUATIONS * NS_EVALUATION_SECONDS);
         let ldvm = CostEstimate::of(&SystemConfig::default());
         assert!((e.seconds - ldvm.seconds - e.section_seconds).abs() < 1e-9);
-        assert!(e.time_ratio > 3.0 && !e.is_far_beyond_default(), "{e}");
+        assert!(e.time_ratio > 2.5 && !e.is_far_beyond_default(), "{e}");
         assert!(e.to_string().contains("Navier–Stokes"), "{e}");
     }
 }

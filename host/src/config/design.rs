@@ -152,8 +152,9 @@ pub const DESIGN: Table<DesignConfig> = Table {
                   \"ns\": laminar Navier-Stokes of a thin plate (ns_thickness) with its \
                   friction and separation; the RIGID section (the deformation is not \
                   modelled yet, and the reports say so); lesp_critical does not apply. \
-                  Cost: 69 s measured for one 4-cycle evaluation of the default section on \
-                  two cores, so about 24 minutes for a discipline run of 21 evaluations",
+                  Cost: 34 s measured for one 4-cycle evaluation of the default section on \
+                  two cores; a discipline run of 21 evaluations, two at a time, 9 to 10 \
+                  minutes",
             value: |d| Value::Choice(d.section_model.word()),
         },
         Setting {

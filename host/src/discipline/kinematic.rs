@@ -374,7 +374,8 @@ pub fn optimize_reporting(
         (surfaces.knee_design, surfaces.knee_prediction),
     );
     // An infeasible initial design is no bar to beat (the design driver
-    // stops before the disciplines if it cannot be flown).
+    // stops before the disciplines if cycle 1's cannot be flown; a later
+    // cycle's vehicle may no longer fly the design it analyses).
     let initial_score = if initial_violation == 0.0 {
         objective.combined(&initial_result)
     } else {

@@ -275,7 +275,7 @@ impl SectionCase {
     /// summarizes its last two periods.
     ///
     /// Cost: the LDVM a fraction of a second; the Navier–Stokes model at
-    /// the default resolution about 69 s for 4 cycles on two cores
+    /// the default resolution about 34 s for 4 cycles on two cores
     /// ([`crate::aero2d::viscous::ViscousSection::run`]).
     ///
     /// # Errors

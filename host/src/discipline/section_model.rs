@@ -13,7 +13,7 @@
 //!   It does not take a deformation history yet
 //!   ([`crate::aero2d::viscous::ViscousError::Deforming`]), so it analyses
 //!   the **rigid** section and every report says so
-//!   ([`ModelledSection`]). Cost: 69 s measured for the default section's
+//!   ([`ModelledSection`]). Cost: 34.4 s measured for the default section's
 //!   4 cycles at the default resolution on the 2-core development machine
 //!   (42,438 steps of 256 × 160 cells at Courant number 2,
 //!   [`ViscousSection::run`]), some 600 times the LDVM's.

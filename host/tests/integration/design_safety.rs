@@ -499,14 +499,22 @@ fn the_progress_line_fits_the_terminal() {
         }
     });
     const REDRAW: &str = "\r\x1b[2K";
+    // The live redraws in `text`: the pieces between two redraws that
+    // start a cycle's line and end without a newline (a stage's end is a
+    // line of its own, printed once). The last piece is left out: the
+    // reading may have cut it mid-line (a stage's end line read up to
+    // "done in 0.5 s [" is no redraw).
+    fn redraws(text: &str) -> Vec<&str> {
+        let pieces: Vec<&str> = text.split(REDRAW).collect();
+        pieces[..pieces.len().saturating_sub(1)]
+            .iter()
+            .copied()
+            .filter(|s| s.starts_with("cycle") && !s.contains('\n'))
+            .collect()
+    }
     let mut seen = Vec::new();
     let clock = Instant::now();
-    let live = |seen: &[u8]| {
-        let text = String::from_utf8_lossy(seen);
-        text.split(REDRAW)
-            .filter(|s| s.starts_with("cycle") && !s.contains('\n'))
-            .count()
-    };
+    let live = |seen: &[u8]| redraws(&String::from_utf8_lossy(seen)).len();
     while live(&seen) < 4 && clock.elapsed() < Duration::from_secs(60) {
         if let Ok(chunk) = chunks.recv_timeout(Duration::from_millis(100)) {
             seen.extend(chunk);
@@ -514,12 +522,7 @@ fn the_progress_line_fits_the_terminal() {
     }
     kill(child);
     let text = String::from_utf8_lossy(&seen).into_owned();
-    // A live redraw ends without a newline (a stage's end is a line of
-    // its own, printed once).
-    let redraws: Vec<&str> = text
-        .split(REDRAW)
-        .filter(|s| s.starts_with("cycle") && !s.contains('\n'))
-        .collect();
+    let redraws = redraws(&text);
     assert!(redraws.len() >= 3, "too few redraws: {text:?}");
     for line in &redraws {
         let width = line.chars().count();
