@@ -286,12 +286,9 @@ impl SectionCase {
         &self,
         kinematics: &FlappingKinematics,
     ) -> Result<SectionResult, EvaluationError> {
-        kinematics.validate()?;
-        self.check()?;
-        self.check_work(kinematics.frequency)?;
-        let k = self.reduced_frequency(kinematics.frequency);
+        let flapping = self.flapping(kinematics)?;
+        let k = flapping.reduced_frequency;
         let period = std::f64::consts::PI / k;
-        let flapping = self.flapping(kinematics);
         let history = match &self.model {
             SectionFlowModel::Ldvm => self.ldvm_history(flapping, period)?,
             SectionFlowModel::Ns(plate) => {
@@ -309,15 +306,22 @@ impl SectionCase {
         summarize(&history, period, k)
     }
 
-    /// The section's motion when the wing flaps by `kinematics`.
-    fn flapping(&self, kinematics: &FlappingKinematics) -> SectionFlapping {
-        SectionFlapping {
+    /// The section's motion when the wing flaps by `kinematics`, once
+    /// the kinematics, the case and the analysis's length are checked.
+    fn flapping(
+        &self,
+        kinematics: &FlappingKinematics,
+    ) -> Result<SectionFlapping, EvaluationError> {
+        kinematics.validate()?;
+        self.check()?;
+        self.check_work(kinematics.frequency)?;
+        Ok(SectionFlapping {
             reduced_frequency: self.reduced_frequency(kinematics.frequency),
             radius: self.radius / self.chord,
             amplitude: kinematics.amplitude,
             mean_angle: kinematics.mean_angle,
             stroke_plane: kinematics.stroke_plane,
-        }
+        })
     }
 
     /// The section flapping by `kinematics` as the rigid thick section
@@ -337,11 +341,8 @@ impl SectionCase {
         kinematics: &FlappingKinematics,
         shape: &SectionShape,
     ) -> Result<SectionResult, EvaluationError> {
-        kinematics.validate()?;
-        self.check()?;
-        self.check_work(kinematics.frequency)?;
-        let k = self.reduced_frequency(kinematics.frequency);
-        let flapping = self.flapping(kinematics);
+        let flapping = self.flapping(kinematics)?;
+        let k = flapping.reduced_frequency;
         let steps = self.settings(k);
         let settings = PanelSettings {
             dt: steps.dt,

@@ -336,6 +336,19 @@ fn case1_cfd_lift() -> (Vec<f64>, Vec<f64>) {
 const CASE1_REFERENCE: &str = "Ramesh et al. (2014) J. Fluid Mech. 751, case 1, CFL3D lift \
                                (tests/data/ldvm_case1_cfd.dat)";
 
+/// A case-1 comparison of `quantity` against the CFD, within 10%.
+fn case1_spec(name: &'static str, quantity: &'static str) -> Spec {
+    Spec {
+        name,
+        solver: Solver::Ns2d,
+        reference: CASE1_REFERENCE,
+        quantity,
+        units: "1",
+        error_kind: ErrorKind::Relative,
+        tolerance: 0.10,
+    }
+}
+
 /// Largest of `values` (NaN for none).
 fn largest(values: &[f64]) -> f64 {
     values.iter().copied().reduce(f64::max).unwrap_or(f64::NAN)
@@ -347,16 +360,11 @@ fn largest(values: &[f64]) -> f64 {
 /// model's default resolution.
 fn case1_mean_lift() -> Validation {
     Validation {
-        spec: Spec {
-            name: "ns2d/ldvm-case1-mean-lift",
-            solver: Solver::Ns2d,
-            reference: CASE1_REFERENCE,
-            quantity: "mean CL over U t / c = 2..4, SD7003 pitch ramp 0-25 deg about the leading \
-                       edge, Re 30,000, 256 x 160, Courant 2",
-            units: "1",
-            error_kind: ErrorKind::Relative,
-            tolerance: 0.10,
-        },
+        spec: case1_spec(
+            "ns2d/ldvm-case1-mean-lift",
+            "mean CL over U t / c = 2..4, SD7003 pitch ramp 0-25 deg about the leading edge, \
+             Re 30,000, 256 x 160, Courant 2",
+        ),
         reference: || {
             let (t, cl) = case1_cfd_lift();
             window_mean(&t, &cl, 2.0, 4.0)
@@ -375,16 +383,11 @@ fn case1_mean_lift() -> Validation {
 /// Case 1's peak lift against the CFD's, within 10%.
 fn case1_peak_lift() -> Validation {
     Validation {
-        spec: Spec {
-            name: "ns2d/ldvm-case1-peak-lift",
-            solver: Solver::Ns2d,
-            reference: CASE1_REFERENCE,
-            quantity: "peak CL to U t / c = 4.1, SD7003 pitch ramp 0-25 deg about the leading \
-                       edge, Re 30,000, 256 x 160, Courant 2",
-            units: "1",
-            error_kind: ErrorKind::Relative,
-            tolerance: 0.10,
-        },
+        spec: case1_spec(
+            "ns2d/ldvm-case1-peak-lift",
+            "peak CL to U t / c = 4.1, SD7003 pitch ramp 0-25 deg about the leading edge, \
+             Re 30,000, 256 x 160, Courant 2",
+        ),
         reference: || largest(&case1_cfd_lift().1),
         compute: || Ok(largest(&case1_default()?.history.cl).into()),
     }
