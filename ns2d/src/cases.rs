@@ -59,11 +59,6 @@ impl CylinderWake {
     /// # Errors
     /// The solver's.
     pub fn run(&self, resolution: Resolution) -> Result<WakeStatistics, NsError> {
-        // On a worker of rayon's pool (the crate docs: speed).
-        rayon::scope(|_| self.run_in_pool(resolution))
-    }
-
-    fn run_in_pool(&self, resolution: Resolution) -> Result<WakeStatistics, NsError> {
         let map = SectionMap::circle(0.5)?;
         let motion = SteadyStream {
             speed: 1.0,
@@ -128,11 +123,6 @@ impl ImpulsiveCylinder {
     /// # Errors
     /// The solver's.
     pub fn run(&self, resolution: Resolution) -> Result<Vec<(f64, f64)>, NsError> {
-        // On a worker of rayon's pool (the crate docs: speed).
-        rayon::scope(|_| self.run_in_pool(resolution))
-    }
-
-    fn run_in_pool(&self, resolution: Resolution) -> Result<Vec<(f64, f64)>, NsError> {
         let map = SectionMap::circle(0.5)?;
         let motion = SteadyStream {
             speed: 1.0,
@@ -240,11 +230,6 @@ impl HoveringEllipse {
     /// # Errors
     /// The solver's.
     pub fn run(&self, resolution: Resolution) -> Result<Vec<(f64, f64)>, NsError> {
-        // On a worker of rayon's pool (the crate docs: speed).
-        rayon::scope(|_| self.run_in_pool(resolution))
-    }
-
-    fn run_in_pool(&self, resolution: Resolution) -> Result<Vec<(f64, f64)>, NsError> {
         let map = SectionMap::ellipse(0.5, 0.06, (0.0, 0.0))?;
         let stroke = HoveringStroke::wang_2004();
         let speed = stroke.peak_speed();

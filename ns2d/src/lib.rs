@@ -32,13 +32,10 @@
 //!   second-order Crank–Nicolson elsewhere ([`Flow`]'s docs).
 //!
 //! Measured cost on this project's 2-core machine: the stream solve and
-//! the sweeps run on both cores. Step a [`Flow`] from a worker of rayon's
-//! pool (inside `rayon::scope`, as [`cases`] and the host do): called from
-//! an outside thread, each of a step's parallel regions is handed to the
-//! pool while the caller sleeps until a worker wakes it, and the default
-//! FWAV section's four strokes took 40.1 s instead of 34.4 s. (The
-//! impulsively started cylinder at Re 550 to U t/R = 3 on 256 × 192, dt
-//! 0.004: 2.1 s in release, on a machine shared with other builds.)
+//! the sweeps run on both cores, each step on a worker of rayon's pool
+//! ([`Flow::step`]). (The impulsively started cylinder at Re 550 to
+//! U t/R = 3 on 256 × 192, dt 0.004: 2.1 s in release, on a machine
+//! shared with other builds.)
 //!
 //! The validation cases (cylinders at Re 100, 200, impulsively started
 //! cylinders, the hovering ellipse of Wang, Birch & Dickinson 2004) are in

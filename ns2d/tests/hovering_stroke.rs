@@ -49,7 +49,7 @@ struct Sample {
 
 /// The history of `motion` round Wang's ellipse on the coarse grid, two
 /// periods.
-fn run<M: Motion>(motion: M) -> Vec<Sample> {
+fn run<M: Motion + Send>(motion: M) -> Vec<Sample> {
     let stroke = HoveringStroke::wang_2004();
     let map = SectionMap::ellipse(0.5, 0.06, (0.0, 0.0)).unwrap();
     let grid = GridSpec {

@@ -311,19 +311,6 @@ impl ViscousSection {
         reynolds: f64,
         duration: f64,
     ) -> Result<ViscousRun, ViscousError> {
-        // On a worker of rayon's pool: each step's parallel regions are
-        // then joins among the pool's threads, not a job handed in from an
-        // outside thread that sleeps until a worker wakes it again.
-        rayon::scope(|_| self.run_in_pool(path, reynolds, duration))
-    }
-
-    /// [`Self::run`], on the calling thread.
-    fn run_in_pool(
-        &self,
-        path: SectionPath,
-        reynolds: f64,
-        duration: f64,
-    ) -> Result<ViscousRun, ViscousError> {
         let map = self.map(path.pivot())?;
         let spec = self.grid(&map, reynolds);
         let mut flow = Flow::new(&map, spec, path, 1.0 / reynolds)?;

@@ -421,9 +421,23 @@ impl<M: Motion> Flow<M> {
     /// what is left ([`Self::wall_residual`]). Two implicit sweeps and two
     /// streamfunction solves (the first needs the wall's rings only).
     ///
+    /// The step runs on a worker of rayon's pool (in place when called
+    /// from one): its parallel regions are then joins among the pool's
+    /// threads. Called from an outside thread, each region was handed to
+    /// the pool while the caller slept until a worker woke it: the default
+    /// FWAV section's four strokes took 40.1 s instead of 34.4 s.
+    ///
     /// # Errors
     /// [`NsError::Diverged`] when the flow is no longer finite.
-    pub fn step(&mut self, dt: f64) -> Result<(), NsError> {
+    pub fn step(&mut self, dt: f64) -> Result<(), NsError>
+    where
+        M: Send,
+    {
+        rayon::scope(|_| self.step_in_pool(dt))
+    }
+
+    /// [`Self::step`], on the calling thread.
+    fn step_in_pool(&mut self, dt: f64) -> Result<(), NsError> {
         let nt = self.grid.nt;
         self.diffusion_weight = if self.steps < DAMPED_START_STEPS {
             1.0
