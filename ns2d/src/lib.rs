@@ -52,8 +52,10 @@
 //!
 //! The host runs it behind `fwav aero2d --model ns` (`fwav::aero2d::viscous`:
 //! harmonic plunge and pitch, and the discipline's flapping section).
-//! Not yet here (issue 23 goes on): deformation (the map recomputed each
-//! step, warm-started, or a transpiration condition on the rigid grid).
+//! A deforming section ([`Deformation`]: a periodic history of maps,
+//! each coefficient interpolated in time) runs on the grid moved to each
+//! step's map ([`Flow::deforming`]; arbitrary Lagrangian–Eulerian, the
+//! streamfunction's factored operator unchanged: `flow/deforming.rs`).
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -63,6 +65,7 @@ mod blocks;
 pub mod cases;
 mod contour;
 mod correspondence;
+mod deformation;
 mod error;
 mod flow;
 mod grid;
@@ -74,6 +77,7 @@ mod spline;
 mod stream;
 
 pub use contour::Contour;
+pub use deformation::{Deformation, MapState};
 pub use error::NsError;
 pub use flow::{Flow, WallLoads};
 pub use grid::{GridSpec, OGrid, RadialStretch};

@@ -121,6 +121,28 @@ impl SectionMap {
         Ok(map)
     }
 
+    /// The map of the coefficients `[a, z0, b_1, …]` (at least two;
+    /// not checked for univalence: [`Self::derivative_zeros_outside`]).
+    pub(crate) fn from_coefficients(c: &[Complex64]) -> Self {
+        Self {
+            a: c[0],
+            z0: c[1],
+            b: c[2..].to_vec(),
+        }
+    }
+
+    /// This section turned counter-clockwise by `angle` (radians) about
+    /// the origin and then moved by `offset`: the map `e^{i angle} F + offset`.
+    #[must_use]
+    pub fn moved(&self, angle: f64, offset: Complex64) -> Self {
+        let turn = Complex64::from_polar(1.0, angle);
+        Self {
+            a: turn * self.a,
+            z0: turn * self.z0 + offset,
+            b: self.b.iter().map(|b| turn * b).collect(),
+        }
+    }
+
     /// The coefficients `(a, z0, [b_1, b_2, ...])`.
     #[must_use]
     pub fn coefficients(&self) -> (Complex64, Complex64, &[Complex64]) {

@@ -265,6 +265,10 @@ pub(super) struct RateRows<'a> {
     pub(super) inv_jac: &'a [f64],
     /// The inverse cell areas ([`FaceAreas`]).
     pub(super) areas: &'a FaceAreas,
+    /// A deforming grid's swept fluxes of the radial faces (above each
+    /// node) and ring faces (`k + ½`), taken off the fluid's
+    /// (`flow/deforming.rs`); `None` for a rigid grid.
+    pub(super) swept: Option<(&'a [f64], &'a [f64])>,
 }
 
 impl RateRows<'_> {
@@ -303,6 +307,11 @@ impl RateRows<'_> {
         faces.speed[0] = corners[0] - corners[nt - 1];
         for k in 1..nt {
             faces.speed[k] = corners[k] - corners[k - 1];
+        }
+        if let Some((swept, _)) = self.swept {
+            for (q, s) in faces.speed.iter_mut().zip(self.ring(swept, j)) {
+                *q -= s;
+            }
         }
         let (below, here, above) = (
             self.ring(self.w, j - 1),
@@ -354,8 +363,9 @@ impl RateRows<'_> {
     ) {
         let nt = self.nt;
         let area = &self.areas.ring[j * nt..(j + 1) * nt];
+        let swept = self.swept.map(|(_, ring)| self.ring(ring, j));
         for k in 0..nt {
-            let q = lower[k] - upper[k];
+            let q = lower[k] - upper[k] - swept.map_or(0.0, |s| s[k]);
             // Nodes k - 1, k, k + 1, k + 2.
             let (km, k0, kp, kpp) = (padded[k], padded[k + 1], padded[k + 2], padded[k + 3]);
             let forward = q >= 0.0;
@@ -439,6 +449,12 @@ impl RateRows<'_> {
             let ring_explicit = explicit_before[k + 1] - explicit_before[k];
             out.explicit[k] = radial_diffusion + (1.0 - theta_d) * ring_diffusion
                 - s * (radial_all + ring_explicit);
+            if self.swept.is_some() {
+                // The moving cell's share, `ω Σ F_f` (`flow/deforming.rs`).
+                let km = if k == 0 { nt - 1 } else { k - 1 };
+                let net = above.speed[k] - below.speed[k] + round.speed[k] - round.speed[km];
+                out.explicit[k] += s * w0[k] * net;
+            }
             out.radial_old[k] = theta_d * radial_diffusion - s * radial_implicit;
             out.radial_speed[k] = above.weight[k] * above.speed[k];
             out.ring_speed[k] = round.weight[k] * round.speed[k];
@@ -476,6 +492,10 @@ impl<M: Motion> Flow<M> {
             frame: &self.frame_psi,
             inv_jac: &g.inv_jac,
             areas: &self.face_areas,
+            swept: self
+                .deforming
+                .as_ref()
+                .map(|d| (&d.swept_radial[..], &d.swept_ring[..])),
         };
         let mut radial = std::mem::take(&mut self.radial_faces);
         radial.fill(&rows);

@@ -26,8 +26,9 @@ pub struct WallLoads {
     /// (zero for the exact solution: a measure of the discrete no-slip
     /// condition's consistency).
     pub closure: f64,
-    /// Wall vorticity relative to the section's rotation, `ω - 2Ω`
-    /// (the skin friction is `ν` times it, along the counter-clockwise tangent).
+    /// Wall vorticity relative to the section's rotation, `ω - 2Ω` (and,
+    /// for a deforming wall, `+ 2 n·∂w/∂s`: `flow/deforming.rs`); the
+    /// skin friction is `ν` times it, along the counter-clockwise tangent.
     pub wall_vorticity: Vec<f64>,
 }
 
@@ -48,7 +49,7 @@ impl<M: Motion> Flow<M> {
             let w = &self.omega;
             let w_eta = (-3.0 * w[k] + 4.0 * w[nt + k] - w[2 * nt + k]) / (2.0 * de);
             let z_theta = i * g.dz_dxi[k];
-            let accel = frame.point_acceleration(g.z[k]);
+            let accel = frame.point_acceleration(g.z[k]) + self.wall_deformation(k).0;
             *d = nu / g.slope[0] * w_eta - (accel.conj() * z_theta).re;
         }
         // Integrate round the wall (trapezoid); spread the closure error.
@@ -64,7 +65,9 @@ impl<M: Motion> Flow<M> {
         for p in &mut pressure {
             *p -= mean;
         }
-        let wall_vorticity: Vec<f64> = (0..nt).map(|k| self.omega[k] - 2.0 * frame.rate).collect();
+        let wall_vorticity: Vec<f64> = (0..nt)
+            .map(|k| self.omega[k] - 2.0 * frame.rate + self.wall_deformation(k).2)
+            .collect();
         let mut force = Complex64::new(0.0, 0.0);
         let mut moment = 0.0;
         let mut power = 0.0;
@@ -73,7 +76,8 @@ impl<M: Motion> Flow<M> {
             let f = (i * pressure[k] + nu * wall_vorticity[k]) * z_theta * g.d_theta;
             force += f;
             moment += (g.z[k].conj() * f).im;
-            power -= (f.conj() * frame.point_velocity(g.z[k])).re;
+            let velocity = frame.point_velocity(g.z[k]) + self.wall_deformation(k).1;
+            power -= (f.conj() * velocity).re;
         }
         WallLoads {
             time: self.time,

@@ -72,6 +72,7 @@
 //! reported as [`WallLoads::closure`]), and the friction `ν (ω - 2Ω)`.
 
 mod advection;
+mod deforming;
 mod loads;
 mod sweeps;
 
@@ -146,6 +147,10 @@ pub struct Flow<M: Motion> {
     /// The width in `ξ` of each ring's cell (trapezoid: half the distance
     /// between its neighbours; the wall's and the outer ring's half cells).
     widths: Vec<f64>,
+    /// `1/(w_j Δθ)` per ring (the cell areas are `J` times its inverse).
+    inv_cell: Vec<f64>,
+    /// A deforming section's grid (`flow/deforming.rs`); `None`: rigid.
+    deforming: Option<deforming::DeformingGrid>,
     /// The inverse cell areas of the advection's faces.
     face_areas: advection::FaceAreas,
     frame: FrameState,
@@ -207,6 +212,7 @@ impl<M: Motion> Flow<M> {
             .collect();
         let widths_inv: Vec<f64> = widths.iter().map(|w| 1.0 / (w * grid.d_theta)).collect();
         let face_areas = advection::FaceAreas::new(nt, &grid.inv_jac, &widths_inv);
+        let inv_cell = widths_inv;
         let mut flow = Self {
             grid,
             motion,
@@ -236,6 +242,8 @@ impl<M: Motion> Flow<M> {
             wall_residual: 0.0,
             face_areas,
             widths,
+            inv_cell,
+            deforming: None,
             previous_rate: vec![0.0; n],
             last_dt: 0.0,
             diffusion_weight: 0.5,
@@ -318,6 +326,13 @@ impl<M: Motion> Flow<M> {
                 let grad = frame.streamfunction_gradient(g.z[k]);
                 self.wall_slope[k] = (grad.conj() * g.dz_dxi[k]).re;
             }
+            // A deforming wall's own normal flux and tangential velocity.
+            if let Some(d) = &self.deforming {
+                for k in 0..nt {
+                    self.wall_shape[k] += d.wall_psi[k];
+                    self.wall_slope[k] += d.wall_slope[k];
+                }
+            }
         }
         // Far away the fluid is at rest: ψ = 0.
         self.outer.fill(0.0);
@@ -396,8 +411,10 @@ impl<M: Motion> Flow<M> {
                 let i = j * nt + k;
                 let rel = |n: usize| self.psi[n] - self.frame_psi[n];
                 let jac = g.jac[i];
-                let psi_t = (rel(j * nt + kp) - rel(j * nt + km)) / (2.0 * dt);
-                let psi_e = (rel(i + nt) - rel(i - nt)) / (2.0 * de);
+                // Less the grid's own motion where the section deforms.
+                let swept = g.dz_dxi[i].conj() * self.grid_velocity(i);
+                let psi_t = (rel(j * nt + kp) - rel(j * nt + km)) / (2.0 * dt) - swept.re;
+                let psi_e = (rel(i + nt) - rel(i - nt)) / (2.0 * de) + swept.im * gp;
                 let adv = (psi_t / (jac * gp)).abs() / de + (psi_e / (gp * jac)).abs() / dt;
                 worst_adv = worst_adv.max(adv);
             }
@@ -448,8 +465,10 @@ impl<M: Motion> Flow<M> {
             .influence
             .as_ref()
             .is_none_or(|w| w.dt != dt || w.diffusion_weight != self.diffusion_weight)
+            || self.influence_drifted()
         {
             self.influence = Some(self.wall_influence(dt)?);
+            self.note_influence_grid();
         }
         let restart = self.steps == 0 || (dt - self.last_dt).abs() > 1e-12 * dt;
         let (now, before) = if restart { (1.0, 0.0) } else { (1.5, -0.5) };
@@ -458,6 +477,9 @@ impl<M: Motion> Flow<M> {
             now * self.outflow_rate + before * self.previous_outflow + self.outflow_explicit;
         self.previous_outflow = self.outflow_rate;
         let t = self.time + dt;
+        // The explicit part was the step start's grid; the rest is the
+        // end's (`flow/deforming.rs`).
+        self.move_grid(t);
         self.start_outer
             .copy_from_slice(&self.omega[(self.grid.nr - 1) * nt..]);
         self.ring_implicit(dt);
@@ -530,7 +552,8 @@ impl<M: Motion> Flow<M> {
     fn wall_mismatch(&mut self, wall: &[f64], out: &mut [f64]) {
         let nt = self.grid.nt;
         self.thom(false, out);
-        let target = -2.0 * self.frame.rate * self.area - self.exited;
+        let own = self.deforming.as_ref().map_or(0.0, |d| d.circulation);
+        let target = -2.0 * self.frame.rate * self.area - own - self.exited;
         let free = self.circulation();
         let mean = out.iter().sum::<f64>() / nt as f64;
         let wall_mean = wall.iter().sum::<f64>() / nt as f64;

@@ -1,0 +1,392 @@
+//! The grid of a deforming section ([`crate::Deformation`]): the
+//! conformal grid moved to each step's map, and what its motion changes
+//! in the step (arbitrary Lagrangian–Eulerian, ALE).
+//!
+//! The grid's nodes keep their `(ξ, θ)` and move with the map: at fixed
+//! `ζ`, `z(ζ, t) = F(ζ, t)`, so the grid velocity `w = ∂F/∂t` is the map's
+//! own (an inverse FFT round each ring gives `z`, `∂z/∂ξ` and `w` at its
+//! nodes). The streamfunction's operator is the polar Laplacian whatever
+//! the map, so the factored [`crate::StreamSolver`] serves every step; the
+//! map enters through `J` and the wall's conditions:
+//!
+//! - **Advection relative to the moving cells.** A face's flux is the
+//!   fluid's (the difference of the relative streamfunction at its
+//!   corners) less the flux the face sweeps, `∫ w·n ds` by the midpoint
+//!   rule: `Re(conj(z_ξ) w) Δθ` through a radial face, `Im(conj(z_ξ) w) Δξ`
+//!   through a ring face. The grid velocity is not solenoidal (`w` is
+//!   analytic in `z`: `div w = 2 ∂(Re w)/∂x`), so the fluxes round a cell
+//!   sum to minus its area's growth; the transport is taken in the form
+//!   `A dω/dt = -Σ F_f ω_f + ω Σ F_f`, which keeps a uniform vorticity
+//!   uniform whatever the grid does (the discrete geometric conservation
+//!   law: Thomas & Lombard 1979, *AIAA J.* 17; Demirdžić & Perić 1988),
+//!   the added term explicit.
+//! - **The wall moves with the grid.** The wall's velocity is the grid's
+//!   there (the contour's points slide along it as the map's
+//!   correspondence changes; for a membrane whose surfaces neither
+//!   stretch nor slide this tangential sliding is the one approximation of
+//!   the wall condition): its streamfunction varies along the wall by the
+//!   normal flux `∫ Re(conj(z_ξ) w) dθ` (a net flux, the area's change, is
+//!   spread round), its `ψ_ξ` by `Im(conj(w) z_ξ)`, and Kelvin's
+//!   bookkeeping counts the wall's own circulation `∮ w·ds` with the
+//!   rotation's `2ΩA`.
+//! - **Loads**: the wall's acceleration adds `∂²F/∂t² + 2iΩw` to the
+//!   frame's, the power `-∮ f·w ds`, and the friction is
+//!   `ν (ω - 2Ω + 2 n·∂w/∂s)` (the tangential stress `μ(ω + 2 n·∂u/∂s)` of
+//!   a no-slip wall moving at `u`).
+//!
+//! The step moves the grid once, between its explicit part (at the
+//! step's start, with the start's grid and swept fluxes) and its implicit
+//! sweeps and streamfunction solves (at the step's end): first order in
+//! the grid's motion, whose time scale (a flapping period) is thousands
+//! of steps. The wall's influence matrix is built on the grid of its time
+//! and rebuilt when `J` in the wall's two rings has moved by more than
+//! [`INFLUENCE_DRIFT`] since ([`super::Flow::wall_residual`] shows what
+//! the drift leaves).
+
+use std::sync::Arc;
+
+use rayon::prelude::*;
+use realfft::num_complex::Complex64;
+use rustfft::{Fft, FftPlanner};
+
+use super::advection::FaceAreas;
+use super::Flow;
+use crate::deformation::{Deformation, MapState};
+use crate::error::NsError;
+use crate::grid::OGrid;
+use crate::motion::Motion;
+
+/// The relative change of `J` at the wall's two rings since the wall's
+/// influence matrix was built beyond which it is built again.
+pub(super) const INFLUENCE_DRIFT: f64 = 0.02;
+
+/// The deforming grid's state (module docs).
+pub(super) struct DeformingGrid {
+    deformation: Deformation,
+    fft: Arc<dyn Fft<f64>>,
+    /// `∂z/∂t` at the nodes (body axes).
+    velocity: Vec<Complex64>,
+    /// The flux each radial face (above its node) and ring face (`k + ½`)
+    /// sweeps per unit time, outward and forward.
+    pub(super) swept_radial: Vec<f64>,
+    pub(super) swept_ring: Vec<f64>,
+    /// At the wall: the deformation's streamfunction and `ψ_ξ`, its
+    /// acceleration `∂²z/∂t²` and `∂w/∂θ`.
+    pub(super) wall_psi: Vec<f64>,
+    pub(super) wall_slope: Vec<f64>,
+    wall_acceleration: Vec<Complex64>,
+    wall_velocity_theta: Vec<Complex64>,
+    /// The circulation of the wall's deformation velocity, `∮ w·ds`.
+    pub(super) circulation: f64,
+    /// `J` at the wall's two rings when the influence matrix was built.
+    pub(super) influence_jac: Vec<f64>,
+}
+
+/// Which series of a ring's inverse FFT ([`fill`]).
+#[derive(Clone, Copy)]
+enum Series {
+    /// `F` (or its time derivatives, given theirs).
+    Value,
+    /// `ζ F' = ∂/∂ξ`.
+    Radial,
+    /// `∂/∂θ`.
+    Around,
+}
+
+/// The ring `|ζ| = rho`'s spectrum of the coefficients `c` = `[a, z0,
+/// b_1 …]` into `buf` (length `nt`; frequency `-k` at `nt - k`).
+fn fill(buf: &mut [Complex64], c: &[Complex64], rho: f64, series: Series) {
+    let nt = buf.len();
+    buf.fill(Complex64::new(0.0, 0.0));
+    let i = Complex64::new(0.0, 1.0);
+    let (first, tail) = match series {
+        Series::Value => (c[0] * rho, 1.0),
+        Series::Radial => (c[0] * rho, -1.0),
+        Series::Around => (i * c[0] * rho, 1.0),
+    };
+    buf[1] += first;
+    if let Series::Value = series {
+        buf[0] += c[1];
+    }
+    let inv = 1.0 / rho;
+    let mut power = inv;
+    for (k, b) in c[2..].iter().enumerate() {
+        let m = (k + 1) as f64;
+        let factor = match series {
+            Series::Value => Complex64::new(tail, 0.0),
+            Series::Radial => Complex64::new(tail * m, 0.0),
+            Series::Around => -i * m,
+        };
+        buf[nt - k - 1] += factor * b * power;
+        power *= inv;
+        if power == 0.0 {
+            break;
+        }
+    }
+}
+
+impl DeformingGrid {
+    /// The state for `deformation` on a grid of `nt` nodes round.
+    fn new(deformation: Deformation, grid: &OGrid) -> Self {
+        let (nt, n) = (grid.nt, grid.len());
+        let zero = Complex64::new(0.0, 0.0);
+        Self {
+            deformation,
+            fft: FftPlanner::new().plan_fft_inverse(nt),
+            velocity: vec![zero; n],
+            swept_radial: vec![0.0; n],
+            swept_ring: vec![0.0; n],
+            wall_psi: vec![0.0; nt],
+            wall_slope: vec![0.0; nt],
+            wall_acceleration: vec![zero; nt],
+            wall_velocity_theta: vec![zero; nt],
+            circulation: 0.0,
+            influence_jac: Vec::new(),
+        }
+    }
+
+    /// The wall's series of `state`: its acceleration and `∂w/∂θ`.
+    fn wall_series(&mut self, state: &MapState) {
+        let fft = &self.fft;
+        for (buf, coefficients, series) in [
+            (
+                &mut self.wall_acceleration,
+                &state.acceleration,
+                Series::Value,
+            ),
+            (&mut self.wall_velocity_theta, &state.rate, Series::Around),
+        ] {
+            fill(buf, coefficients, 1.0, series);
+            fft.process(buf);
+        }
+    }
+
+    /// The wall's streamfunction, `ψ_ξ` and circulation of the grid's
+    /// velocity (module docs), from the wall ring of `grid`.
+    fn wall_conditions(&mut self, grid: &OGrid) {
+        let nt = grid.nt;
+        let normal: Vec<f64> = (0..nt)
+            .map(|k| (grid.dz_dxi[k].conj() * self.velocity[k]).re)
+            .collect();
+        self.wall_psi[0] = 0.0;
+        for k in 1..nt {
+            self.wall_psi[k] =
+                self.wall_psi[k - 1] + 0.5 * (normal[k - 1] + normal[k]) * grid.d_theta;
+        }
+        // A net flux (the area's change) spread round the wall.
+        let closure = self.wall_psi[nt - 1] + 0.5 * (normal[nt - 1] + normal[0]) * grid.d_theta;
+        for (k, p) in self.wall_psi.iter_mut().enumerate() {
+            *p -= closure * k as f64 / nt as f64;
+        }
+        let i = Complex64::new(0.0, 1.0);
+        let mut circulation = 0.0;
+        for k in 0..nt {
+            let (w, d) = (self.velocity[k], grid.dz_dxi[k]);
+            self.wall_slope[k] = (w.conj() * d).im;
+            circulation += (w.conj() * i * d).re * grid.d_theta;
+        }
+        self.circulation = circulation;
+    }
+
+    /// The fluxes the faces sweep (module docs), rows in parallel.
+    fn swept_fluxes(&mut self, grid: &OGrid) {
+        let (nt, nr) = (grid.nt, grid.nr);
+        let radial_rate = |i: usize| (grid.dz_dxi[i].conj() * self.velocity[i]).re;
+        let ring_rate = |i: usize| (grid.dz_dxi[i].conj() * self.velocity[i]).im;
+        self.swept_radial
+            .par_chunks_mut(nt)
+            .zip(self.swept_ring.par_chunks_mut(nt))
+            .enumerate()
+            .for_each(|(j, (radial, ring))| {
+                if j + 1 < nr {
+                    for (k, r) in radial.iter_mut().enumerate() {
+                        let i = j * nt + k;
+                        *r = 0.5 * (radial_rate(i) + radial_rate(i + nt)) * grid.d_theta;
+                    }
+                }
+                if j == 0 || j + 1 == nr {
+                    ring.fill(0.0);
+                    return;
+                }
+                // The ring face spans the corners below and above: the
+                // wall itself below ring 1.
+                let below = if j == 1 {
+                    grid.xi[0]
+                } else {
+                    0.5 * (grid.xi[j - 1] + grid.xi[j])
+                };
+                let span = 0.5 * (grid.xi[j] + grid.xi[j + 1]) - below;
+                for (k, r) in ring.iter_mut().enumerate() {
+                    let kp = if k + 1 == nt { 0 } else { k + 1 };
+                    *r = 0.5 * (ring_rate(j * nt + k) + ring_rate(j * nt + kp)) * span;
+                }
+            });
+    }
+}
+
+impl<M: Motion> Flow<M> {
+    /// A flow at rest round the section deforming by `deformation` (its
+    /// map at `t = 0` the grid's start) and moving by `motion` (module
+    /// docs of `flow/deforming.rs`); as [`Flow::new`] otherwise.
+    ///
+    /// # Errors
+    /// [`Flow::new`]'s; [`NsError::BadGrid`] when the maps have more
+    /// Laurent terms than the grid has nodes round, less two.
+    pub fn deforming(
+        deformation: Deformation,
+        spec: crate::GridSpec,
+        motion: M,
+        viscosity: f64,
+    ) -> Result<Self, NsError> {
+        let terms = deformation.terms();
+        if terms + 2 > spec.around {
+            return Err(NsError::BadGrid {
+                what: "around (at least the deformation's Laurent terms + 2)",
+                value: spec.around as f64,
+                min: (terms + 2) as f64,
+                max: 8192.0,
+            });
+        }
+        let map = deformation.map_at(0.0);
+        let mut flow = Self::new(&map, spec, motion, viscosity)?;
+        flow.deforming = Some(DeformingGrid::new(deformation, &flow.grid));
+        flow.move_grid(0.0);
+        flow.evaluate(0.0);
+        Ok(flow)
+    }
+
+    /// Whether the section deforms.
+    #[must_use]
+    pub fn is_deforming(&self) -> bool {
+        self.deforming.is_some()
+    }
+
+    /// Move a deforming section's grid to the map of time `t`: nodes,
+    /// metrics, cell areas, the grid's velocity, the faces' swept fluxes
+    /// and the wall's conditions (module docs). Cost: three inverse FFTs a
+    /// ring and `O(N)` passes.
+    pub(super) fn move_grid(&mut self, t: f64) {
+        let Some(d) = self.deforming.as_mut() else {
+            return;
+        };
+        let state = d.deformation.state(t);
+        let g = &mut self.grid;
+        let nt = g.nt;
+        let fft = Arc::clone(&d.fft);
+        let scratch_len = fft.get_inplace_scratch_len();
+        let zero = Complex64::new(0.0, 0.0);
+        g.z.par_chunks_mut(nt)
+            .zip(g.dz_dxi.par_chunks_mut(nt))
+            .zip(d.velocity.par_chunks_mut(nt))
+            .zip(g.jac.par_chunks_mut(nt))
+            .zip(g.inv_jac.par_chunks_mut(nt))
+            .zip(g.xi.par_iter())
+            .for_each_init(
+                || (vec![zero; nt], vec![zero; scratch_len]),
+                |(buf, scratch), (((((z, dz), v), jac), inv_jac), xi)| {
+                    let rho = xi.exp();
+                    for (series, coefficients, out) in [
+                        (Series::Value, &state.coefficients, &mut *z),
+                        (Series::Radial, &state.coefficients, &mut *dz),
+                        (Series::Value, &state.rate, &mut *v),
+                    ] {
+                        fill(buf, coefficients, rho, series);
+                        fft.process_with_scratch(buf, scratch);
+                        out.copy_from_slice(buf);
+                    }
+                    for ((j, ij), d) in jac.iter_mut().zip(inv_jac.iter_mut()).zip(dz.iter()) {
+                        *j = d.norm_sqr();
+                        *ij = 1.0 / *j;
+                    }
+                },
+            );
+        d.wall_series(&state);
+        d.wall_conditions(g);
+        d.swept_fluxes(g);
+        self.area = state.map().area();
+        self.face_areas = FaceAreas::new(nt, &g.inv_jac, &self.inv_cell);
+        // The rigid field's streamfunction moves with the nodes.
+        self.frame_time = None;
+    }
+
+    /// Whether a deforming grid has moved so far since the wall's
+    /// influence matrix was built that it is built again.
+    pub(super) fn influence_drifted(&self) -> bool {
+        let Some(d) = &self.deforming else {
+            return false;
+        };
+        let n = 2 * self.grid.nt;
+        d.influence_jac.len() != n
+            || d.influence_jac
+                .iter()
+                .zip(&self.grid.jac[..n])
+                .any(|(before, now)| (now / before - 1.0).abs() > INFLUENCE_DRIFT)
+    }
+
+    /// Record the wall's `J` the influence matrix is built on.
+    pub(super) fn note_influence_grid(&mut self) {
+        let n = 2 * self.grid.nt;
+        if let Some(d) = self.deforming.as_mut() {
+            d.influence_jac.clear();
+            d.influence_jac.extend_from_slice(&self.grid.jac[..n]);
+        }
+    }
+
+    /// The deformation's share of the wall's acceleration at node `k`
+    /// (body axes): `∂²F/∂t² + 2iΩw`; its velocity `w`; and its share of
+    /// the friction's vorticity, `2 n·∂w/∂s` (zero without deformation).
+    pub(super) fn wall_deformation(&self, k: usize) -> (Complex64, Complex64, f64) {
+        let Some(d) = &self.deforming else {
+            let zero = Complex64::new(0.0, 0.0);
+            return (zero, zero, 0.0);
+        };
+        let w = d.velocity[k];
+        let accel = d.wall_acceleration[k] + Complex64::new(0.0, 2.0 * self.frame.rate) * w;
+        let dz = self.grid.dz_dxi[k];
+        let stretch = 2.0 * (dz.conj() * d.wall_velocity_theta[k]).re * self.grid.inv_jac[k];
+        (accel, w, stretch)
+    }
+
+    /// The grid's velocity at node `i` (zero for a rigid section).
+    pub(super) fn grid_velocity(&self, i: usize) -> Complex64 {
+        self.deforming
+            .as_ref()
+            .map_or(Complex64::new(0.0, 0.0), |d| d.velocity[i])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The ring series are the map's: `F`, `ζF'` and `∂F/∂θ` of an
+    /// ellipse moved off the origin and turned, at `|ζ| = 1.3`.
+    #[test]
+    fn the_ring_series_are_the_maps() {
+        let map = crate::SectionMap::ellipse(0.5, 0.2, (0.1, 0.0))
+            .unwrap()
+            .moved(0.4, Complex64::new(0.0, 0.2));
+        let (a, z0, b) = map.coefficients();
+        let mut c = vec![a, z0];
+        c.extend_from_slice(b);
+        let nt = 16;
+        let fft = FftPlanner::new().plan_fft_inverse(nt);
+        let rho: f64 = 1.3;
+        let mut out = vec![vec![Complex64::new(0.0, 0.0); nt]; 3];
+        for (buf, s) in out
+            .iter_mut()
+            .zip([Series::Value, Series::Radial, Series::Around])
+        {
+            fill(buf, &c, rho, s);
+            fft.process(buf);
+        }
+        let (value, rest) = out.split_first().unwrap();
+        for (k, ((z, radial), around)) in value.iter().zip(&rest[0]).zip(&rest[1]).enumerate() {
+            let zeta = Complex64::from_polar(rho, std::f64::consts::TAU * k as f64 / nt as f64);
+            assert!((z - map.point(zeta)).norm() < 1e-13);
+            let d = map.radial_derivative(zeta);
+            assert!((radial - d).norm() < 1e-13);
+            assert!((around - Complex64::new(0.0, 1.0) * d).norm() < 1e-13);
+        }
+    }
+}
