@@ -108,6 +108,37 @@ const FILTER_ORDER: i32 = 8;
 pub(crate) struct Correspondence {
     /// `c_k` of `F(e^{it}) = Σ c_k e^{ikt}`, FFT order (`c_{-k}` at `N - k`).
     pub(crate) modes: Vec<Complex64>,
+    /// The correspondence `S(t_j)` at `t_j = 2πj/N` (increasing by the
+    /// curve's period over the circle).
+    parameters: Vec<f64>,
+    /// The curve's parameter period.
+    period: f64,
+}
+
+impl Correspondence {
+    /// The angles `t` on the unit circle the curve's parameters `s` map
+    /// from (inverse of the monotone `S`, linear between samples).
+    pub(crate) fn angles(&self, s: &[f64]) -> Vec<f64> {
+        let n = self.parameters.len();
+        let start = self.parameters[0];
+        let end = start + self.period;
+        s.iter()
+            .map(|&x| {
+                let x = start + (x - start).rem_euclid(self.period);
+                let i = self.parameters.partition_point(|&p| p <= x).clamp(1, n);
+                let (below, above) = (
+                    self.parameters[i - 1],
+                    self.parameters.get(i).copied().unwrap_or(end),
+                );
+                let frac = if above > below {
+                    (x - below) / (above - below)
+                } else {
+                    0.0
+                };
+                TAU * (i as f64 - 1.0 + frac) / n as f64
+            })
+            .collect()
+    }
 }
 
 /// The conjugations and transforms of one size.
@@ -424,6 +455,8 @@ fn solve_curve(
             let values: Vec<Complex64> = s.iter().map(|&x| spline.boundary(x)).collect();
             return Ok(Correspondence {
                 modes: fft.modes(&values),
+                parameters: s,
+                period: length,
             });
         }
         last = correction;

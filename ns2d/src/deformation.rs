@@ -122,6 +122,48 @@ impl Deformation {
         Ok(deformation)
     }
 
+    /// The history of a section's shapes, each a map with the angles on
+    /// the unit circle of the same material points (the `i`-th point of
+    /// every shape is the same point of the section:
+    /// [`SectionMap::from_contour_with_angles`] of contours with their
+    /// points in step), sample `i` at `i · period / n`. Each map's circle
+    /// is first turned ([`SectionMap::turned_circle`]) to put the points,
+    /// on the mean, at the first shape's angles: the exterior map is
+    /// fixed only up to that turn, and [`SectionMap::from_contour`]'s
+    /// choice (`a` real) would make the wall's grid points slide round a
+    /// section that merely pitches, by the pitch angle. Turned, a pitch
+    /// given as shapes is the pitched map ([`SectionMap::moved`]), and the
+    /// wall's grid points slide only as far as the shape's change moves
+    /// the map's correspondence.
+    ///
+    /// # Errors
+    /// As [`Self::periodic`]; [`NsError::BadSection`] when the shapes do
+    /// not have the same number of points.
+    pub fn of_shapes(shapes: &[(SectionMap, Vec<f64>)], period: f64) -> Result<Self, NsError> {
+        let Some((_, reference)) = shapes.first() else {
+            return Self::periodic(&[], period);
+        };
+        let maps = shapes
+            .iter()
+            .map(|(map, angles)| {
+                if angles.len() != reference.len() {
+                    return Err(NsError::BadSection {
+                        what: "points of a deformation's shape (as many as the first shape's)",
+                        value: angles.len() as f64,
+                    });
+                }
+                // The circular mean of the angles' differences.
+                let mean: Complex64 = angles
+                    .iter()
+                    .zip(reference)
+                    .map(|(a, r)| Complex64::from_polar(1.0, a - r))
+                    .sum();
+                Ok(map.turned_circle(mean.arg()))
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Self::periodic(&maps, period)
+    }
+
     /// The period.
     #[must_use]
     pub fn period(&self) -> f64 {
@@ -216,6 +258,42 @@ mod tests {
                 (s.coefficients[0] - a).norm()
             );
         }
+    }
+
+    /// A membrane pitched by 0.1 rad, fitted afresh (`a` real, so its
+    /// circle turned by the pitch), becomes the first shape's map turned
+    /// by the pitch once its points are followed: the pitched map.
+    #[test]
+    fn a_pitched_shape_is_the_turned_map_once_its_points_are_followed() {
+        let midline = [(-0.5, 0.0), (0.0, 0.02), (0.5, 0.0)];
+        let pitch = 0.1;
+        let turn = Complex64::from_polar(1.0, pitch);
+        let turned: Vec<(f64, f64)> = midline
+            .iter()
+            .map(|&(x, y)| {
+                let z = turn * Complex64::new(x, y);
+                (z.re, z.im)
+            })
+            .collect();
+        let fit = |m: &[(f64, f64)]| {
+            let contour = crate::Contour::membrane(m, 0.04, 256).unwrap();
+            SectionMap::from_contour_with_angles(&contour, 64).unwrap()
+        };
+        let shapes = [fit(&midline), fit(&turned)];
+        let a = shapes[1].0.coefficients().0;
+        assert!(a.im.abs() < 1e-6 * a.re, "a real as fitted: {a}");
+        let history = Deformation::of_shapes(&shapes, 1.0).unwrap();
+        let expected = shapes[0].0.moved(pitch, Complex64::new(0.0, 0.0));
+        let got = history.map_at(0.5);
+        let (a, z0, b) = expected.coefficients();
+        let (ga, gz0, gb) = got.coefficients();
+        let error = (a - ga).norm()
+            + (z0 - gz0).norm()
+            + b.iter()
+                .zip(gb)
+                .map(|(x, y)| (x - y).norm())
+                .fold(0.0, f64::max);
+        assert!(error < 1e-4, "{error:.3e}");
     }
 
     #[test]

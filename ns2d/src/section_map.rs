@@ -94,6 +94,20 @@ impl SectionMap {
     /// or sharp for its points), [`NsError::MapNotUnivalent`] when the
     /// truncated series is not one-to-one outside the circle.
     pub fn from_contour(contour: &Contour, terms: usize) -> Result<Self, NsError> {
+        Ok(Self::from_contour_with_angles(contour, terms)?.0)
+    }
+
+    /// [`Self::from_contour`], and the angle `θ` on the unit circle of each
+    /// of the contour's points (where the map puts it: `F(e^{iθ})` is the
+    /// point, to the fit's accuracy), for following the points of a
+    /// deforming section ([`crate::Deformation::of_shapes`]).
+    ///
+    /// # Errors
+    /// As [`Self::from_contour`].
+    pub fn from_contour_with_angles(
+        contour: &Contour,
+        terms: usize,
+    ) -> Result<(Self, Vec<f64>), NsError> {
         if !(1..=4096).contains(&terms) {
             return Err(NsError::BadSection {
                 what: "number of Laurent terms (1 to 4096)",
@@ -118,7 +132,28 @@ impl SectionMap {
         if zeros != 0 {
             return Err(NsError::MapNotUnivalent { terms, zeros });
         }
-        Ok(map)
+        let knots = crate::spline::CurveSpline::closed(contour.points())
+            .knots()
+            .to_vec();
+        let angles = fit.angles(&knots[..contour.len()]);
+        Ok((map, angles))
+    }
+
+    /// The same section with its circle turned: `F(e^{iφ} ζ)` (the one
+    /// freedom of the exterior map; the point at angle `θ` moves to
+    /// `θ - φ`).
+    #[must_use]
+    pub fn turned_circle(&self, phi: f64) -> Self {
+        Self {
+            a: self.a * Complex64::from_polar(1.0, phi),
+            z0: self.z0,
+            b: self
+                .b
+                .iter()
+                .enumerate()
+                .map(|(k, b)| b * Complex64::from_polar(1.0, -(k as f64 + 1.0) * phi))
+                .collect(),
+        }
     }
 
     /// The map of the coefficients `[a, z0, b_1, …]` (at least two;

@@ -549,11 +549,12 @@ impl Case {
         if self.lesp_critical.is_some() {
             return Err(CaseError::LespOnThick);
         }
-        if self.deformation.is_some() {
-            return Err(ViscousError::Deforming.into());
-        }
         let duration = self.settings().duration;
-        let run = section.run(SectionPath::Harmonic(self.motion), self.reynolds, duration)?;
+        let path = SectionPath::Harmonic(self.motion);
+        let run = match &self.deformation {
+            Some(samples) => section.run_deforming(path, self.reynolds, duration, samples)?,
+            None => section.run(path, self.reynolds, duration)?,
+        };
         Ok(CaseRun {
             history: run.history,
             period: self.period(),

@@ -26,7 +26,7 @@
 //! linear interpolation between steps, so the cycle means of
 //! [`super::history`] see uniform samples.
 
-use fwav_ns2d::{Complex64, Contour, Flow, FrameState, GridSpec, NsError, SectionMap};
+use fwav_ns2d::{Complex64, Contour, Deformation, Flow, FrameState, GridSpec, NsError, SectionMap};
 
 use super::history::History;
 use super::ldvm::FreeVortex;
@@ -151,7 +151,7 @@ impl ViscousSection {
     /// The conformal map of the section, the pitch axis `pivot` (chords
     /// from the leading edge) at the origin.
     fn map(&self, pivot: f64) -> Result<SectionMap, ViscousError> {
-        let terms = self.around / 2;
+        let terms = self.laurent_terms();
         let shifted = |points: &[(f64, f64)]| -> Vec<(f64, f64)> {
             points.iter().map(|&(x, y)| (x - pivot, y)).collect()
         };
@@ -174,6 +174,65 @@ impl ViscousSection {
             ViscousShape::Contour(points) => Contour::from_points(&shifted(points))?,
         };
         Ok(SectionMap::from_contour(&contour, terms)?)
+    }
+
+    /// The Laurent terms of the section's maps: half the nodes round.
+    fn laurent_terms(&self) -> usize {
+        self.around / 2
+    }
+
+    /// The deformation history through `samples` over `period` (chords
+    /// travelled), sample `i` at `i · period / n`, in the section's
+    /// kinematic frame (chords, leading edge at (0, 0)), the pitch axis
+    /// `pivot` put at the origin: for the plate, mid-lines from the
+    /// leading to the trailing edge, each the mid-line of a membrane of
+    /// the plate's thickness ([`Contour::membrane`]) shortened by half the
+    /// thickness at each end, so that a flat sample is the rigid plate;
+    /// for a contour or an ellipse, whole contours
+    /// ([`ViscousShape::from_points`]). Each shape is drawn on the same
+    /// number of points, the `i`-th the same point of the section, which
+    /// [`Deformation::of_shapes`] follows. Cost: a map fit a sample (a
+    /// few ms each).
+    fn deformation(
+        &self,
+        pivot: f64,
+        samples: &[Vec<(f64, f64)>],
+        period: f64,
+    ) -> Result<Deformation, ViscousError> {
+        let terms = self.laurent_terms();
+        let n = samples.len();
+        let shift = |z: &Complex64| (z.re - pivot, z.im);
+        let maps = samples
+            .iter()
+            .enumerate()
+            .map(|(sample, points)| {
+                let failed = |source: NsError| ViscousError::DeformedShape {
+                    sample,
+                    samples: n,
+                    source,
+                };
+                let contour = match &self.shape {
+                    ViscousShape::Plate(t) => {
+                        let midline = shortened_midline(points, 0.5 * t);
+                        Contour::membrane(&midline, *t, CONTOUR_POINTS).map_err(failed)?
+                    }
+                    ViscousShape::Ellipse(_) | ViscousShape::Contour(_) => {
+                        match ViscousShape::from_points(points) {
+                            Ok(ViscousShape::Contour(p)) => {
+                                Contour::from_points(&p).map_err(failed)?
+                            }
+                            Ok(_) => unreachable!("from_points gives a contour"),
+                            Err(ViscousError::Solver(e)) => return Err(failed(e)),
+                            Err(e) => return Err(e),
+                        }
+                    }
+                };
+                let points: Vec<(f64, f64)> = contour.points().iter().map(shift).collect();
+                let contour = Contour::from_points(&points).map_err(failed)?;
+                SectionMap::from_contour_with_angles(&contour, terms).map_err(failed)
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Deformation::of_shapes(&maps, period)?)
     }
 
     /// The grid of this resolution for the map `map` at `reynolds`.
@@ -209,12 +268,25 @@ pub enum ViscousError {
          (thinner plates crowd the grid at the edges beyond any usable time step)"
     )]
     Thickness(f64),
-    /// A deforming section (not yet in the viscous model).
+    /// A deformation history given for a motion without a period.
     #[error(
-        "the Navier–Stokes model does not take a deformation history yet: run it rigid, or \
-         use the inviscid model for the deforming section"
+        "a deformation history is periodic, and this motion has no period (a pitch ramp): run \
+         the section rigid, or give a periodic motion"
     )]
-    Deforming,
+    DeformingWithoutPeriod,
+    /// A deformation sample the solver cannot map.
+    #[error(
+        "deformation sample {sample} of {samples}: {source}; check the section history (a \
+         mid-line bent tighter than half the plate's thickness, or a contour that crosses itself)"
+    )]
+    DeformedShape {
+        /// The sample (0-based).
+        sample: usize,
+        /// Samples in the history.
+        samples: usize,
+        /// What the solver found.
+        source: NsError,
+    },
     /// The stable time step keeps falling: the run would take too long.
     #[error(
         "the stable time step fell to {dt:.2e} chords travelled at t = {time:.3} \
@@ -281,6 +353,43 @@ fn shortened_step(
     Ok(dt)
 }
 
+/// The mid-line `points` (leading to trailing edge) shortened by `cut`
+/// of its length at each end (the membrane's semicircular ends add it
+/// back); unchanged when shorter than `4 cut`.
+fn shortened_midline(points: &[(f64, f64)], cut: f64) -> Vec<(f64, f64)> {
+    let length: f64 = points
+        .windows(2)
+        .map(|p| (p[1].0 - p[0].0).hypot(p[1].1 - p[0].1))
+        .sum();
+    if length.is_nan() || length <= 4.0 * cut {
+        return points.to_vec();
+    }
+    // The leading end's cut; then the reversed line's.
+    let trim = |line: &[(f64, f64)]| -> Vec<(f64, f64)> {
+        let mut left = cut;
+        for (i, p) in line.windows(2).enumerate() {
+            let d = (p[1].0 - p[0].0).hypot(p[1].1 - p[0].1);
+            if d > left {
+                let f = left / d;
+                let start = (
+                    p[0].0 + f * (p[1].0 - p[0].0),
+                    p[0].1 + f * (p[1].1 - p[0].1),
+                );
+                let mut out = vec![start];
+                out.extend_from_slice(&line[i + 1..]);
+                return out;
+            }
+            left -= d;
+        }
+        line.to_vec()
+    };
+    let mut reversed = trim(points);
+    reversed.reverse();
+    let mut out = trim(&reversed);
+    out.reverse();
+    out
+}
+
 /// The loads at one instant: `(CL, CT, CP)`.
 fn coefficients<M: fwav_ns2d::Motion>(flow: &Flow<M>) -> [f64; 3] {
     let loads = flow.loads();
@@ -313,7 +422,50 @@ impl ViscousSection {
     ) -> Result<ViscousRun, ViscousError> {
         let map = self.map(path.pivot())?;
         let spec = self.grid(&map, reynolds);
-        let mut flow = Flow::new(&map, spec, path, 1.0 / reynolds)?;
+        self.run_flow(Flow::new(&map, spec, path, 1.0 / reynolds)?, path, duration)
+    }
+
+    /// [`Self::run`] with the section deforming through `samples` over
+    /// each period of `path` (sample `i` at `i · period / n`), in the
+    /// section's kinematic frame (chords, leading edge at (0, 0)): for the
+    /// plate, mid-lines from the leading to the trailing edge, each the
+    /// mid-line of a membrane of the plate's thickness shortened by half
+    /// the thickness at each end (so that a flat sample is the rigid
+    /// plate); for a contour or an ellipse, whole contours. The grid moves
+    /// to each step's map ([`Flow::deforming`]). Cost: the rigid run's
+    /// and the grid's motion, three inverse FFTs a ring a step: 48.5 s
+    /// for the default section deforming as the built-in design's first
+    /// system analysis found, 25.9 s rigid
+    /// (`discipline_ns::ns_deforming_evaluation_benchmark`).
+    ///
+    /// # Errors
+    /// As [`Self::run`]; [`ViscousError::DeformingWithoutPeriod`] for a
+    /// path without a period, [`ViscousError::DeformedShape`] for a
+    /// sample that cannot be mapped.
+    pub fn run_deforming(
+        &self,
+        path: SectionPath,
+        reynolds: f64,
+        duration: f64,
+        samples: &[Vec<(f64, f64)>],
+    ) -> Result<ViscousRun, ViscousError> {
+        let k = path.reduced_frequency();
+        if k.is_nan() || k <= 0.0 {
+            return Err(ViscousError::DeformingWithoutPeriod);
+        }
+        let deformation = self.deformation(path.pivot(), samples, std::f64::consts::PI / k)?;
+        let spec = self.grid(&deformation.map_at(0.0), reynolds);
+        let flow = Flow::deforming(deformation, spec, path, 1.0 / reynolds)?;
+        self.run_flow(flow, path, duration)
+    }
+
+    /// Steps `flow` of `path` to `duration`, sampling its loads.
+    fn run_flow(
+        &self,
+        mut flow: Flow<SectionPath>,
+        path: SectionPath,
+        duration: f64,
+    ) -> Result<ViscousRun, ViscousError> {
         let k = path.reduced_frequency();
         let sample = if k > 0.0 {
             std::f64::consts::PI / k / SAMPLES_PER_PERIOD

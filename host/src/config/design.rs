@@ -150,11 +150,11 @@ pub const DESIGN: Table<DesignConfig> = Table {
                   leading-edge shedding and a laminar friction estimate, of the deforming \
                   section; a fraction of a second an evaluation, seconds a discipline run. \
                   \"ns\": laminar Navier-Stokes of a thin plate (ns_thickness) with its \
-                  friction and separation; the RIGID section (the deformation is not \
-                  modelled yet, and the reports say so); lesp_critical does not apply. \
-                  Cost: 34 s measured for one 4-cycle evaluation of the default section on \
-                  two cores; a discipline run of 21 evaluations, two at a time, 9 to 10 \
-                  minutes",
+                  friction and separation, the plate's mid-line deforming as the system \
+                  analysis found (on a moving grid); lesp_critical does not apply. Cost: \
+                  26 s measured for one 4-cycle evaluation of the default section on two \
+                  cores when rigid, 49 s deforming as the default design's first system \
+                  analysis found",
             value: |d| Value::Choice(d.section_model.word()),
         },
         Setting {

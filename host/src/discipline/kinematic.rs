@@ -388,7 +388,7 @@ pub fn optimize_reporting(
             let s = |i: usize| candidates[i].combined.unwrap_or(f64::NEG_INFINITY);
             s(a).total_cmp(&s(b))
         });
-    let section = case.modelled_section(&initial.design);
+    let section = case.modelled_section();
     Ok(KinematicResult {
         initial,
         initial_violation,

@@ -43,7 +43,7 @@ use crate::aero2d::viscous::{SectionPath, ViscousError};
 use crate::aeroelastic::kinematics::{FlappingKinematics, KinematicsError};
 use crate::aeroelastic::model::FlightCondition;
 
-use super::section_model::{DeformationEffect, ModelledSection, SectionFlowModel};
+use super::section_model::{ModelledSection, SectionFlowModel};
 
 /// Kinematic viscosity of sea-level air, m²/s (for the chord Reynolds
 /// number of the friction estimate).
@@ -180,15 +180,13 @@ impl SectionCase {
     }
 
     /// The case as its model reads it: for the Navier–Stokes model,
-    /// without the deformation and the critical LESP, which it does not
-    /// take (so the evaluation cache serves its rigid result to every
-    /// deformation, as the evaluation would compute it); the LDVM's case
-    /// as it is.
+    /// without the critical LESP, which it does not take (so the
+    /// evaluation cache does not tell apart cases it would compute
+    /// alike); the LDVM's case as it is.
     pub fn modelled(&self) -> SectionCase {
         match self.model {
             SectionFlowModel::Ldvm => self.clone(),
             SectionFlowModel::Ns(_) => SectionCase {
-                deformation: Vec::new(),
                 lesp_critical: None,
                 ..self.clone()
             },
@@ -196,32 +194,9 @@ impl SectionCase {
     }
 
     /// What this case's evaluations model of the section, for the
-    /// reports; for a deformation the model leaves out, its effect on
-    /// `initial` by the LDVM (two LDVM runs, a fraction of a second each).
-    pub fn modelled_section(&self, initial: &FlappingKinematics) -> ModelledSection {
-        let given = !self.deformation.is_empty();
-        let effect = (given && !self.model.takes_deformation())
-            .then(|| {
-                let ldvm = |deformation: Vec<Vec<[f64; 2]>>| {
-                    SectionCase {
-                        deformation,
-                        model: SectionFlowModel::Ldvm,
-                        ..self.clone()
-                    }
-                    .evaluate(initial)
-                    .ok()
-                };
-                let rigid = ldvm(Vec::new())?;
-                let deforming = ldvm(self.deformation.clone())?;
-                Some(DeformationEffect {
-                    ct_net_rigid: rigid.ct_net,
-                    ct_net_deforming: deforming.ct_net,
-                    efficiency_net_rigid: rigid.efficiency_net,
-                    efficiency_net_deforming: deforming.efficiency_net,
-                })
-            })
-            .flatten();
-        ModelledSection::new(&self.model, given, effect)
+    /// reports.
+    pub fn modelled_section(&self) -> ModelledSection {
+        ModelledSection::new(&self.model, !self.deformation.is_empty())
     }
 
     /// The chord Reynolds number `U c / nu` in sea-level air.
@@ -292,15 +267,15 @@ impl SectionCase {
         let history = match &self.model {
             SectionFlowModel::Ldvm => self.ldvm_history(flapping, period)?,
             SectionFlowModel::Ns(plate) => {
-                // Rigid: the model takes no deformation (see `modelled`).
-                plate
-                    .section()
-                    .run(
-                        SectionPath::Flapping(flapping),
-                        self.reynolds(),
-                        self.cycles as f64 * period,
-                    )?
-                    .history
+                let (path, duration) =
+                    (SectionPath::Flapping(flapping), self.cycles as f64 * period);
+                let section = plate.section();
+                let run = if self.deformation.is_empty() {
+                    section.run(path, self.reynolds(), duration)?
+                } else {
+                    section.run_deforming(path, self.reynolds(), duration, &self.samples())?
+                };
+                run.history
             }
         };
         summarize(&history, period, k)
@@ -391,6 +366,21 @@ impl SectionCase {
         Ok(())
     }
 
+    /// The deformation's mid-lines, sample `i` at `i` periods over their
+    /// number after a cycle's start (the system analysis's sample `k` is
+    /// at `(k + 1) dt`: its last is the cycle's start).
+    fn samples(&self) -> Vec<Vec<(f64, f64)>> {
+        let n = self.deformation.len();
+        (0..n)
+            .map(|i| {
+                self.deformation[(i + n - 1) % n]
+                    .iter()
+                    .map(|p| (p[0], p[1]))
+                    .collect()
+            })
+            .collect()
+    }
+
     /// The LDVM's history of the section flapping as `flapping` (period
     /// `period` chords travelled), deforming as [`Self::deformation`].
     fn ldvm_history(
@@ -402,16 +392,7 @@ impl SectionCase {
         let mut solver =
             Ldvm::new(Motion::plunge(k, 0.0), self.settings(k)).with_flapping(flapping);
         if !self.deformation.is_empty() {
-            // Sample k is at (k + 1) dt: the last one is the cycle's start.
-            let n = self.deformation.len();
-            let samples: Vec<Vec<(f64, f64)>> = (0..n)
-                .map(|i| {
-                    self.deformation[(i + n - 1) % n]
-                        .iter()
-                        .map(|p| (p[0], p[1]))
-                        .collect()
-                })
-                .collect();
+            let samples = self.samples();
             let stations = samples.iter().map(Vec::len).max().unwrap_or(0).max(21);
             solver = solver.with_camber(CamberHistory::from_section_points(
                 &samples, period, stations,

@@ -10,10 +10,9 @@
 //!   ([`crate::aero2d::viscous`]) of a thin plate of finite thickness with
 //!   semicircular ends ([`ViscousPlate`]; the 0.1 mm membrane is far
 //!   thinner than the solver can grid); its forces include the friction.
-//!   It does not take a deformation history yet
-//!   ([`crate::aero2d::viscous::ViscousError::Deforming`]), so it analyses
-//!   the **rigid** section and every report says so
-//!   ([`ModelledSection`]). Cost: 34.4 s measured for the default section's
+//!   The deformation history bends the plate's mid-line, on a grid that
+//!   moves with it ([`ViscousSection::run_deforming`]); the reports say
+//!   what was modelled ([`ModelledSection`]). Cost of a rigid section: 34.4 s measured for the default section's
 //!   4 cycles at the default resolution on the 2-core development machine
 //!   (42,438 steps of 256 × 160 cells at Courant number 2,
 //!   [`ViscousSection::run`]), some 600 times the LDVM's.
@@ -78,9 +77,11 @@ impl SectionFlowModel {
         matches!(self, Self::Ldvm)
     }
 
-    /// Whether the model takes the section's deformation history.
+    /// Whether the model takes the section's deformation history (both
+    /// do: the LDVM as its camber, the Navier–Stokes model as the plate's
+    /// mid-line on a moving grid).
     pub fn takes_deformation(&self) -> bool {
-        self.is_ldvm()
+        true
     }
 }
 
@@ -137,21 +138,6 @@ impl ViscousPlate {
     }
 }
 
-/// The LDVM's net results of the initial design on the rigid and on the
-/// deforming section: the size of what a model that leaves the
-/// deformation out misses, by the model that takes it.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct DeformationEffect {
-    /// Net thrust coefficient, rigid section.
-    pub ct_net_rigid: f64,
-    /// Net thrust coefficient, deforming section.
-    pub ct_net_deforming: f64,
-    /// Net efficiency, rigid section.
-    pub efficiency_net_rigid: f64,
-    /// Net efficiency, deforming section.
-    pub efficiency_net_deforming: f64,
-}
-
 /// What the discipline's evaluations modelled of the section: written
 /// with its results (`fwav kinematics`, `kinematics.json`,
 /// `summary.json`, `report.md`).
@@ -163,9 +149,6 @@ pub struct ModelledSection {
     pub deformation_given: bool,
     /// Whether the evaluations took it.
     pub deformation_modelled: bool,
-    /// For a deformation given but not modelled: its effect on the
-    /// initial design by the LDVM (None if those runs failed).
-    pub ldvm_deformation_effect: Option<DeformationEffect>,
     /// The above as a sentence, e.g. `"ns: rigid section, the
     /// deformation is not modelled ..."`.
     pub note: String,
@@ -173,12 +156,8 @@ pub struct ModelledSection {
 
 impl ModelledSection {
     /// The record of `model` on a section whose deformation was given or
-    /// not; `effect` is the LDVM's estimate of a deformation left out.
-    pub fn new(
-        model: &SectionFlowModel,
-        deformation_given: bool,
-        effect: Option<DeformationEffect>,
-    ) -> Self {
+    /// not.
+    pub fn new(model: &SectionFlowModel, deformation_given: bool) -> Self {
         let deformation_modelled = deformation_given && model.takes_deformation();
         let word = model.name().word();
         let note = match (model, deformation_given) {
@@ -193,27 +172,15 @@ impl ModelledSection {
                 p.thickness
             ),
             (SectionFlowModel::Ns(p), true) => format!(
-                "{word}: rigid section, the deformation is not modelled (plate {} chords thick); \
-                 {}",
-                p.thickness,
-                effect.map_or_else(
-                    || "the LDVM's estimate of its effect failed".to_string(),
-                    |e| format!(
-                        "by the LDVM, the deformation changes the initial design's net CT \
-                         {:.4} -> {:.4} and net efficiency {:.4} -> {:.4}",
-                        e.ct_net_rigid,
-                        e.ct_net_deforming,
-                        e.efficiency_net_rigid,
-                        e.efficiency_net_deforming
-                    )
-                )
+                "{word}: the section deforms as the system analysis found (a plate {} chords \
+                 thick round the deforming mid-line)",
+                p.thickness
             ),
         };
         Self {
             model: model.name(),
             deformation_given,
             deformation_modelled,
-            ldvm_deformation_effect: effect.filter(|_| deformation_given && !deformation_modelled),
             note,
         }
     }

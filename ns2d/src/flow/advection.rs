@@ -63,28 +63,57 @@ impl FaceAreas {
     /// The areas of a grid of `nt` nodes round with `1/J` at the nodes
     /// and `inv_cell` = `1/(w_j Δθ)` per ring.
     pub(super) fn new(nt: usize, inv_jac: &[f64], inv_cell: &[f64]) -> Self {
-        let node: Vec<f64> = inv_jac
-            .iter()
-            .enumerate()
-            .map(|(i, v)| v * inv_cell[i / nt])
-            .collect();
-        let n = node.len();
-        let radial = (0..n)
-            .map(|i| {
-                if i + nt < n {
-                    node[i].max(node[i + nt])
-                } else {
-                    node[i]
+        let n = inv_jac.len();
+        let mut areas = Self {
+            node: vec![0.0; n],
+            radial: vec![0.0; n],
+            ring: vec![0.0; n],
+        };
+        areas.update(nt, inv_jac, inv_cell);
+        areas
+    }
+
+    /// The areas again for a grid's new `1/J` (a deforming section's),
+    /// in place, rings in parallel.
+    pub(super) fn update(&mut self, nt: usize, inv_jac: &[f64], inv_cell: &[f64]) {
+        self.node
+            .par_chunks_mut(nt)
+            .zip(inv_jac.par_chunks(nt))
+            .zip(inv_cell.par_iter())
+            .for_each(|((node, inv_jac), cell)| {
+                for (n, v) in node.iter_mut().zip(inv_jac) {
+                    *n = v * cell;
                 }
-            })
-            .collect();
-        let ring = (0..n)
-            .map(|i| {
-                let next = if (i + 1) % nt == 0 { i + 1 - nt } else { i + 1 };
-                node[i].max(node[next])
-            })
-            .collect();
-        Self { node, radial, ring }
+            });
+        self.update_faces(nt);
+    }
+
+    /// Each node's `1/(J w_j Δθ)`, to be set before [`Self::update_faces`].
+    pub(super) fn node_mut(&mut self) -> &mut [f64] {
+        &mut self.node
+    }
+
+    /// The faces' areas from the nodes', rings in parallel.
+    pub(super) fn update_faces(&mut self, nt: usize) {
+        let node = &self.node;
+        let n = node.len();
+        self.radial
+            .par_chunks_mut(nt)
+            .zip(self.ring.par_chunks_mut(nt))
+            .enumerate()
+            .for_each(|(j, (radial, ring))| {
+                let at = j * nt;
+                for k in 0..nt {
+                    let i = at + k;
+                    radial[k] = if i + nt < n {
+                        node[i].max(node[i + nt])
+                    } else {
+                        node[i]
+                    };
+                    let next = if k + 1 == nt { at } else { i + 1 };
+                    ring[k] = node[i].max(node[next]);
+                }
+            });
     }
 }
 
@@ -363,9 +392,16 @@ impl RateRows<'_> {
     ) {
         let nt = self.nt;
         let area = &self.areas.ring[j * nt..(j + 1) * nt];
-        let swept = self.swept.map(|(_, ring)| self.ring(ring, j));
+        for ((q, l), u) in faces.speed.iter_mut().zip(lower).zip(upper) {
+            *q = l - u;
+        }
+        if let Some((_, swept)) = self.swept {
+            for (q, s) in faces.speed.iter_mut().zip(self.ring(swept, j)) {
+                *q -= s;
+            }
+        }
         for k in 0..nt {
-            let q = lower[k] - upper[k] - swept.map_or(0.0, |s| s[k]);
+            let q = faces.speed[k];
             // Nodes k - 1, k, k + 1, k + 2.
             let (km, k0, kp, kpp) = (padded[k], padded[k + 1], padded[k + 2], padded[k + 3]);
             let forward = q >= 0.0;
@@ -449,15 +485,18 @@ impl RateRows<'_> {
             let ring_explicit = explicit_before[k + 1] - explicit_before[k];
             out.explicit[k] = radial_diffusion + (1.0 - theta_d) * ring_diffusion
                 - s * (radial_all + ring_explicit);
-            if self.swept.is_some() {
-                // The moving cell's share, `ω Σ F_f` (`flow/deforming.rs`).
-                let km = if k == 0 { nt - 1 } else { k - 1 };
-                let net = above.speed[k] - below.speed[k] + round.speed[k] - round.speed[km];
-                out.explicit[k] += s * w0[k] * net;
-            }
+
             out.radial_old[k] = theta_d * radial_diffusion - s * radial_implicit;
             out.radial_speed[k] = above.weight[k] * above.speed[k];
             out.ring_speed[k] = round.weight[k] * round.speed[k];
+        }
+        if self.swept.is_some() {
+            // The moving cell's share, `ω Σ F_f` (`flow/deforming.rs`).
+            for k in 0..nt {
+                let km = if k == 0 { nt - 1 } else { k - 1 };
+                let net = above.speed[k] - below.speed[k] + round.speed[k] - round.speed[km];
+                out.explicit[k] += area[k] * w0[k] * net;
+            }
         }
     }
 }

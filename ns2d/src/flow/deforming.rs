@@ -49,7 +49,6 @@ use rayon::prelude::*;
 use realfft::num_complex::Complex64;
 use rustfft::{Fft, FftPlanner};
 
-use super::advection::FaceAreas;
 use super::Flow;
 use crate::deformation::{Deformation, MapState};
 use crate::error::NsError;
@@ -64,8 +63,9 @@ pub(super) const INFLUENCE_DRIFT: f64 = 0.02;
 pub(super) struct DeformingGrid {
     deformation: Deformation,
     fft: Arc<dyn Fft<f64>>,
-    /// `∂z/∂t` at the nodes (body axes).
+    /// `∂z/∂t` at the nodes (body axes), and `conj(z_ξ) w` there.
     velocity: Vec<Complex64>,
+    swept_node: Vec<Complex64>,
     /// The flux each radial face (above its node) and ring face (`k + ½`)
     /// sweeps per unit time, outward and forward.
     pub(super) swept_radial: Vec<f64>,
@@ -134,6 +134,7 @@ impl DeformingGrid {
             deformation,
             fft: FftPlanner::new().plan_fft_inverse(nt),
             velocity: vec![zero; n],
+            swept_node: vec![zero; n],
             swept_radial: vec![0.0; n],
             swept_ring: vec![0.0; n],
             wall_psi: vec![0.0; nt],
@@ -188,11 +189,13 @@ impl DeformingGrid {
         self.circulation = circulation;
     }
 
-    /// The fluxes the faces sweep (module docs), rows in parallel.
+    /// The fluxes the faces sweep (module docs) from the nodes'
+    /// `conj(z_ξ) w` (in `swept_node`), rows in parallel.
     fn swept_fluxes(&mut self, grid: &OGrid) {
         let (nt, nr) = (grid.nt, grid.nr);
-        let radial_rate = |i: usize| (grid.dz_dxi[i].conj() * self.velocity[i]).re;
-        let ring_rate = |i: usize| (grid.dz_dxi[i].conj() * self.velocity[i]).im;
+        let node = &self.swept_node;
+        let radial_rate = |i: usize| node[i].re;
+        let ring_rate = |i: usize| node[i].im;
         self.swept_radial
             .par_chunks_mut(nt)
             .zip(self.swept_ring.par_chunks_mut(nt))
@@ -278,12 +281,14 @@ impl<M: Motion> Flow<M> {
         g.z.par_chunks_mut(nt)
             .zip(g.dz_dxi.par_chunks_mut(nt))
             .zip(d.velocity.par_chunks_mut(nt))
+            .zip(d.swept_node.par_chunks_mut(nt))
             .zip(g.jac.par_chunks_mut(nt))
             .zip(g.inv_jac.par_chunks_mut(nt))
-            .zip(g.xi.par_iter())
+            .zip(self.face_areas.node_mut().par_chunks_mut(nt))
+            .zip(g.xi.par_iter().zip(self.inv_cell.par_iter()))
             .for_each_init(
                 || (vec![zero; nt], vec![zero; scratch_len]),
-                |(buf, scratch), (((((z, dz), v), jac), inv_jac), xi)| {
+                |(buf, scratch), (((((((z, dz), v), swept), jac), inv_jac), area), (xi, cell))| {
                     let rho = xi.exp();
                     for (series, coefficients, out) in [
                         (Series::Value, &state.coefficients, &mut *z),
@@ -294,9 +299,14 @@ impl<M: Motion> Flow<M> {
                         fft.process_with_scratch(buf, scratch);
                         out.copy_from_slice(buf);
                     }
-                    for ((j, ij), d) in jac.iter_mut().zip(inv_jac.iter_mut()).zip(dz.iter()) {
+                    let nodes = jac.iter_mut().zip(inv_jac.iter_mut()).zip(area.iter_mut());
+                    for (((((j, ij), a), d), w), s) in
+                        nodes.zip(dz.iter()).zip(v.iter()).zip(swept.iter_mut())
+                    {
                         *j = d.norm_sqr();
                         *ij = 1.0 / *j;
+                        *a = *ij * cell;
+                        *s = d.conj() * w;
                     }
                 },
             );
@@ -304,7 +314,7 @@ impl<M: Motion> Flow<M> {
         d.wall_conditions(g);
         d.swept_fluxes(g);
         self.area = state.map().area();
-        self.face_areas = FaceAreas::new(nt, &g.inv_jac, &self.inv_cell);
+        self.face_areas.update_faces(nt);
         // The rigid field's streamfunction moves with the nodes.
         self.frame_time = None;
     }
