@@ -217,14 +217,15 @@ impl ViscousSection {
                         Contour::membrane(&midline, *t, CONTOUR_POINTS).map_err(failed)?
                     }
                     ViscousShape::Ellipse(_) | ViscousShape::Contour(_) => {
-                        match ViscousShape::from_points(points) {
-                            Ok(ViscousShape::Contour(p)) => {
-                                Contour::from_points(&p).map_err(failed)?
-                            }
-                            Ok(_) => unreachable!("from_points gives a contour"),
+                        // A sharp trailing edge made blunt, as the rigid
+                        // section's (`from_points` gives a contour).
+                        let blunt = match ViscousShape::from_points(points) {
+                            Ok(ViscousShape::Contour(p)) => p,
+                            Ok(_) => points.clone(),
                             Err(ViscousError::Solver(e)) => return Err(failed(e)),
                             Err(e) => return Err(e),
-                        }
+                        };
+                        Contour::from_points(&blunt).map_err(failed)?
                     }
                 };
                 let points: Vec<(f64, f64)> = contour.points().iter().map(shift).collect();

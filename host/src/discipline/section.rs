@@ -250,7 +250,9 @@ impl SectionCase {
     /// summarizes its last two periods.
     ///
     /// Cost: the LDVM a fraction of a second; the Navier–Stokes model at
-    /// the default resolution about 34 s for 4 cycles on two cores
+    /// the default resolution 26 s (rigid) to 49 s (deforming as the
+    /// built-in design's first system analysis found) for 4 cycles on two
+    /// cores
     /// ([`crate::aero2d::viscous::ViscousSection::run`]).
     ///
     /// # Errors

@@ -12,10 +12,12 @@
 //!   thinner than the solver can grid); its forces include the friction.
 //!   The deformation history bends the plate's mid-line, on a grid that
 //!   moves with it ([`ViscousSection::run_deforming`]); the reports say
-//!   what was modelled ([`ModelledSection`]). Cost of a rigid section: 34.4 s measured for the default section's
-//!   4 cycles at the default resolution on the 2-core development machine
-//!   (42,438 steps of 256 × 160 cells at Courant number 2,
-//!   [`ViscousSection::run`]), some 600 times the LDVM's.
+//!   what was modelled ([`ModelledSection`]). Cost: the default
+//!   section's 4 cycles at the default resolution on the 2-core
+//!   development machine, 25.9 s rigid (42,438 steps of 256 × 160 cells
+//!   at Courant number 2, [`ViscousSection::run`]), 48.5 s deforming as
+//!   the built-in design's first system analysis found; some 600 to 1,100
+//!   times the LDVM's.
 
 use serde::{Deserialize, Serialize};
 
