@@ -194,11 +194,10 @@ mod tests {
     }
 
     /// The Navier–Stokes section model's evaluations are in the built-in
-    /// design's estimate, which says what they cost. At 34.4 s each they
-    /// make it about 2.95 times the LDVM run (the NS design run measured
-    /// 863 s, 2.8 times the LDVM run's 307 s measured the same day, with
-    /// 22 new evaluations over 4 cycles): not far beyond it (845 s each,
-    /// before the solver's implicit advection, made it 49 times).
+    /// design's estimate, which says what they cost. At 48.5 s each, 63 of
+    /// them, they make it about 7.9 times the LDVM run (the deforming NS
+    /// design run measured 66 minutes to its fourth cycle, unconverged,
+    /// docs/ns-design): not far beyond it.
     #[test]
     fn the_ns_section_model_is_in_the_estimate() {
         let mut ns = SystemConfig::default();
