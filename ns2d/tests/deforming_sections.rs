@@ -138,18 +138,23 @@ fn assert_equivalent(
     }
 }
 
+/// The rigid motion in a unit stream at `ω = π`: plunge amplitude
+/// `plunge`, pitch amplitude `pitch` (radians) about the centre.
+fn rigid(plunge: f64, pitch: f64) -> PlungePitch {
+    PlungePitch {
+        speed: 1.0,
+        omega: PI,
+        plunge,
+        mean_pitch: 0.0,
+        pitch,
+        phase: 0.0,
+    }
+}
+
 #[test]
 fn a_plunge_given_as_deformation_is_the_rigid_plunge() {
     let w = PI;
-    let rigid = PlungePitch {
-        speed: 1.0,
-        omega: w,
-        plunge: 0.25,
-        mean_pitch: 0.0,
-        pitch: 0.0,
-        phase: 0.0,
-    };
-    assert_equivalent("plunge", rigid, move |t| {
+    assert_equivalent("plunge", rigid(0.25, 0.0), move |t| {
         (0.0, Complex64::new(0.0, 0.25 * (w * t).sin()))
     });
 }
@@ -157,16 +162,8 @@ fn a_plunge_given_as_deformation_is_the_rigid_plunge() {
 #[test]
 fn a_pitch_given_as_deformation_is_the_rigid_pitch() {
     let w = PI;
-    let rigid = PlungePitch {
-        speed: 1.0,
-        omega: w,
-        plunge: 0.0,
-        mean_pitch: 0.0,
-        pitch: 0.3,
-        phase: 0.0,
-    };
     // Nose-up pitch turns the section clockwise.
-    assert_equivalent("pitch", rigid, move |t| {
+    assert_equivalent("pitch", rigid(0.0, 0.3), move |t| {
         (-0.3 * (w * t).sin(), Complex64::new(0.0, 0.0))
     });
 }

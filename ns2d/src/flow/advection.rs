@@ -69,23 +69,18 @@ impl FaceAreas {
             radial: vec![0.0; n],
             ring: vec![0.0; n],
         };
-        areas.update(nt, inv_jac, inv_cell);
+        for ((node, inv_jac), cell) in areas
+            .node
+            .chunks_mut(nt)
+            .zip(inv_jac.chunks(nt))
+            .zip(inv_cell)
+        {
+            for (n, v) in node.iter_mut().zip(inv_jac) {
+                *n = v * cell;
+            }
+        }
+        areas.update_faces(nt);
         areas
-    }
-
-    /// The areas again for a grid's new `1/J` (a deforming section's),
-    /// in place, rings in parallel.
-    pub(super) fn update(&mut self, nt: usize, inv_jac: &[f64], inv_cell: &[f64]) {
-        self.node
-            .par_chunks_mut(nt)
-            .zip(inv_jac.par_chunks(nt))
-            .zip(inv_cell.par_iter())
-            .for_each(|((node, inv_jac), cell)| {
-                for (n, v) in node.iter_mut().zip(inv_jac) {
-                    *n = v * cell;
-                }
-            });
-        self.update_faces(nt);
     }
 
     /// Each node's `1/(J w_j Δθ)`, to be set before [`Self::update_faces`].
@@ -485,7 +480,6 @@ impl RateRows<'_> {
             let ring_explicit = explicit_before[k + 1] - explicit_before[k];
             out.explicit[k] = radial_diffusion + (1.0 - theta_d) * ring_diffusion
                 - s * (radial_all + ring_explicit);
-
             out.radial_old[k] = theta_d * radial_diffusion - s * radial_implicit;
             out.radial_speed[k] = above.weight[k] * above.speed[k];
             out.ring_speed[k] = round.weight[k] * round.speed[k];

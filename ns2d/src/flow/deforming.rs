@@ -177,30 +177,26 @@ impl DeformingGrid {
     }
 
     /// The wall's streamfunction, `ψ_ξ` and circulation of the grid's
-    /// velocity (module docs), from the wall ring of `grid`.
+    /// velocity (module docs), from the wall ring's `conj(z_ξ) w` (in
+    /// `swept_node`): its real part the normal flux per `dθ`, its
+    /// imaginary part `-ψ_ξ` and the circulation per `dθ`.
     fn wall_conditions(&mut self, grid: &OGrid) {
         let nt = grid.nt;
-        let normal: Vec<f64> = (0..nt)
-            .map(|k| (grid.dz_dxi[k].conj() * self.velocity[k]).re)
-            .collect();
+        let wall = &self.swept_node[..nt];
         self.wall_psi[0] = 0.0;
         for k in 1..nt {
             self.wall_psi[k] =
-                self.wall_psi[k - 1] + 0.5 * (normal[k - 1] + normal[k]) * grid.d_theta;
+                self.wall_psi[k - 1] + 0.5 * (wall[k - 1].re + wall[k].re) * grid.d_theta;
         }
         // A net flux (the area's change) spread round the wall.
-        let closure = self.wall_psi[nt - 1] + 0.5 * (normal[nt - 1] + normal[0]) * grid.d_theta;
+        let closure = self.wall_psi[nt - 1] + 0.5 * (wall[nt - 1].re + wall[0].re) * grid.d_theta;
         for (k, p) in self.wall_psi.iter_mut().enumerate() {
             *p -= closure * k as f64 / nt as f64;
         }
-        let i = Complex64::new(0.0, 1.0);
-        let mut circulation = 0.0;
-        for k in 0..nt {
-            let (w, d) = (self.velocity[k], grid.dz_dxi[k]);
-            self.wall_slope[k] = (w.conj() * d).im;
-            circulation += (w.conj() * i * d).re * grid.d_theta;
+        for (slope, s) in self.wall_slope.iter_mut().zip(wall) {
+            *slope = -s.im;
         }
-        self.circulation = circulation;
+        self.circulation = wall.iter().map(|s| s.im).sum::<f64>() * grid.d_theta;
     }
 
     /// The fluxes the faces sweep (module docs) from the nodes'
@@ -270,12 +266,6 @@ impl<M: Motion> Flow<M> {
         flow.move_grid(0.0);
         flow.evaluate(0.0);
         Ok(flow)
-    }
-
-    /// Whether the section deforms.
-    #[must_use]
-    pub fn is_deforming(&self) -> bool {
-        self.deforming.is_some()
     }
 
     /// Move a deforming section's grid to the map of time `t`: nodes,

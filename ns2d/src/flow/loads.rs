@@ -44,12 +44,13 @@ impl<M: Motion> Flow<M> {
         let i = Complex64::new(0.0, 1.0);
         // dp/dθ = ν/g'0 ω_η - a_wall · z_θ (the momentum equation at the
         // no-slip wall, along it).
+        let deformation: Vec<_> = (0..nt).map(|k| self.wall_deformation(k)).collect();
         let mut dp = vec![0.0; nt];
         for (k, d) in dp.iter_mut().enumerate() {
             let w = &self.omega;
             let w_eta = (-3.0 * w[k] + 4.0 * w[nt + k] - w[2 * nt + k]) / (2.0 * de);
             let z_theta = i * g.dz_dxi[k];
-            let accel = frame.point_acceleration(g.z[k]) + self.wall_deformation(k).0;
+            let accel = frame.point_acceleration(g.z[k]) + deformation[k].0;
             *d = nu / g.slope[0] * w_eta - (accel.conj() * z_theta).re;
         }
         // Integrate round the wall (trapezoid); spread the closure error.
@@ -66,7 +67,7 @@ impl<M: Motion> Flow<M> {
             *p -= mean;
         }
         let wall_vorticity: Vec<f64> = (0..nt)
-            .map(|k| self.omega[k] - 2.0 * frame.rate + self.wall_deformation(k).2)
+            .map(|k| self.omega[k] - 2.0 * frame.rate + deformation[k].2)
             .collect();
         let mut force = Complex64::new(0.0, 0.0);
         let mut moment = 0.0;
@@ -76,7 +77,7 @@ impl<M: Motion> Flow<M> {
             let f = (i * pressure[k] + nu * wall_vorticity[k]) * z_theta * g.d_theta;
             force += f;
             moment += (g.z[k].conj() * f).im;
-            let velocity = frame.point_velocity(g.z[k]) + self.wall_deformation(k).1;
+            let velocity = frame.point_velocity(g.z[k]) + deformation[k].1;
             power -= (f.conj() * velocity).re;
         }
         WallLoads {
