@@ -359,6 +359,32 @@ impl StreamSolver {
             );
     }
 
+    /// The homogeneous solve's streamfunction at the wall's two rings
+    /// (zero wall shape, zero mean wall slope, zero outer ring) for a unit
+    /// source `J ω` at the node of ring `j` and angle index 0, for every
+    /// ring `j` below the outer one: `out[(2 j + r) N_θ + k]` is ring
+    /// `r`'s value at angle index `k`. The operator's coefficients depend
+    /// on the ring only, so a source at angle index `k0` answers with the
+    /// same values turned by `k0`. Cost: `N_r` solves.
+    #[must_use]
+    pub fn wall_responses(&mut self) -> Vec<f64> {
+        let (nt, nr) = (self.nt, self.nr);
+        let zeros = vec![0.0; nt];
+        let mut psi = vec![0.0; nt * nr];
+        let mut out = vec![0.0; 2 * nt * (nr - 1)];
+        for j in 0..nr - 1 {
+            let source = |ring: usize, values: &mut [f64]| {
+                values.fill(0.0);
+                if ring == j {
+                    values[0] = 1.0;
+                }
+            };
+            self.solve_rings(source, &zeros, 0.0, &zeros, &mut psi, 2);
+            out[2 * j * nt..2 * (j + 1) * nt].copy_from_slice(&psi[..2 * nt]);
+        }
+        out
+    }
+
     /// Fourier modes of a ring (unnormalized), into a fresh vector.
     fn modes_of(&mut self, values: &[f64]) -> Vec<Complex64> {
         self.ring.copy_from_slice(values);

@@ -20,9 +20,10 @@
 //! ([`ViscousSection::courant`], [`fwav_ns2d::Flow::stable_dt`]): the
 //! solver's advection is implicit where the Courant number exceeds ½, so
 //! any step is stable and accuracy chooses it. It is checked as the flow
-//! develops and halved when the flow outgrows it; a change of step costs
-//! one build of the wall's influence matrix (`N_θ` radial sweeps and
-//! streamfunction solves). The loads are sampled at a fixed interval by
+//! develops, shortened when the flow outgrows it and lengthened when it
+//! has room, on a ladder of steps a factor 2^¼ apart (`StepControl`);
+//! the first use of a rung costs one build of the wall's influence
+//! matrix (4 ms on the default grid). The loads are sampled at a fixed interval by
 //! linear interpolation between steps, so the cycle means of
 //! [`super::history`] see uniform samples.
 
@@ -127,15 +128,32 @@ impl ViscousSection {
     /// Default thickness of the thin plate, chords.
     pub const DEFAULT_THICKNESS: f64 = 0.04;
 
-    /// Default largest Courant number of a step.
-    pub const DEFAULT_COURANT: f64 = 2.0;
+    /// Default largest Courant number of a step. On the default FWAV
+    /// section's first stroke (deterministic, unlike the later ones) the
+    /// thrust's error falls as the square of the Courant number: on 256 ×
+    /// 160, CT 0.0999, 0.0979, 0.0973 at 1.5, 0.75, 0.375 against 0.0971
+    /// at the explicit scheme's fixed step (Courant 0.35), so 1.5 keeps it
+    /// within 3 % of the converged step; on the default grid a halved step
+    /// moves CT by 1.7 % (0.0839 to 0.0825) and CP by 0.5 %.
+    /// (`viscous_section::default_section_four_cycles_benchmark` with
+    /// `FWAV_NS_CYCLES=1 FWAV_NS_COURANT=...`.)
+    pub const DEFAULT_COURANT: f64 = 1.5;
 
-    /// The default resolution round `shape`: 256 nodes round, 160 out to
+    /// The default resolution round `shape`: 384 nodes round, 160 out to
     /// 30 chords, first cell a tenth of the boundary layer's thickness.
+    /// Chosen on the default FWAV section's first stroke (deterministic,
+    /// unlike the later ones; CT and CP at Courant number 1.5):
+    /// 256 × 160, 0.0999 and 1.862; 320 × 160, 0.0876 and 1.750;
+    /// 384 × 160, 0.0839 and 1.728; 384 × 240, 0.0820 and 1.716;
+    /// 512 × 240, 0.0837 and 1.713; 512 × 320, 0.0848 and 1.712; 768 ×
+    /// 320, 0.0850 and 1.710. The nodes round the section decide it (256
+    /// × 240: 0.0960), and 384 × 160 is within 1.3 % (CT) and 1.0 % (CP)
+    /// of the finest grid, where 256 × 160 was 18 % and 9 % off. (384 ×
+    /// 128 is not enough: 0.0730.)
     pub fn new(shape: ViscousShape) -> Self {
         Self {
             shape,
-            around: 256,
+            around: 384,
             radial: 160,
             outer_chords: 30.0,
             first_cell_layers: 0.1,
@@ -326,32 +344,82 @@ pub struct ViscousRun {
     pub body: Vec<(f64, f64)>,
 }
 
-/// The step `dt`, or a shorter one when the flow has outgrown it: halved
-/// (at most to the step of Courant number `courant`) when the Courant
-/// number exceeds `courant`; refused when the run would then take more
-/// than [`MAX_VISCOUS_STEPS`].
-fn shortened_step(
-    flow: &Flow<SectionPath>,
+/// The ratio of neighbouring rungs of [`StepControl`]'s ladder, 2^¼ (a
+/// ladder of √2 took about 9 % more steps for the same error on the default
+/// section's first stroke).
+const STEP_RATIO: f64 = 1.189_207_115_002_721;
+
+/// A step is lengthened only when the longer one keeps the Courant number
+/// this far within the chosen one, so that it does not go up and down at
+/// every check.
+const LENGTHEN_MARGIN: f64 = 0.9;
+
+/// The time step of a run: a rung `first · 2^(level/4)` of a ladder, at every
+/// check the longest whose largest Courant number is within the chosen
+/// one, up to the load sampling interval. The flow's fastest cells (a thin
+/// plate's edges) are fast only in parts of a stroke: a step fixed at the
+/// stroke's worst (halved when outgrown, never lengthened) ran most of the
+/// default section's stroke at a Courant number of 0.5-0.8. The rungs are
+/// few, so each rung's wall influence matrix is built once
+/// ([`fwav_ns2d::Flow::step`] keeps them).
+struct StepControl {
+    first: f64,
+    level: i32,
+    top: i32,
     courant: f64,
-    dt: f64,
-    duration: f64,
-    steps: usize,
-) -> Result<f64, ViscousError> {
-    let stable = courant * flow.stable_dt(1.0);
-    if dt <= stable {
-        return Ok(dt);
+}
+
+impl StepControl {
+    /// A ladder through `first`, at most `cap`, holding Courant number
+    /// `courant`.
+    fn new(first: f64, cap: f64, courant: f64) -> Self {
+        let top = ((cap / first).ln() / STEP_RATIO.ln() + 1e-9).floor() as i32;
+        Self {
+            first,
+            level: 0,
+            top: top.max(0),
+            courant,
+        }
     }
-    let dt = (0.5 * dt).min(stable);
-    let left = ((duration - flow.time()) / dt).ceil() as usize;
-    if steps + left > MAX_VISCOUS_STEPS {
-        return Err(ViscousError::TooManySteps {
-            dt,
-            time: flow.time(),
-            steps: steps + left,
-            max: MAX_VISCOUS_STEPS,
-        });
+
+    /// The current step.
+    fn dt(&self) -> f64 {
+        self.first * STEP_RATIO.powi(self.level)
     }
-    Ok(dt)
+
+    /// Choose the step for the flow as it is now (shortened when the
+    /// flow has outgrown it, lengthened when it has room).
+    ///
+    /// # Errors
+    /// [`ViscousError::TooManySteps`] when the run would then take more
+    /// than [`MAX_VISCOUS_STEPS`].
+    fn adjust(
+        &mut self,
+        flow: &Flow<SectionPath>,
+        duration: f64,
+        steps: usize,
+    ) -> Result<(), ViscousError> {
+        let target = self.courant * flow.stable_dt(1.0);
+        while self.dt() > target {
+            self.level -= 1;
+        }
+        while self.level < self.top
+            && self.first * STEP_RATIO.powi(self.level + 1) <= LENGTHEN_MARGIN * target
+        {
+            self.level += 1;
+        }
+        let dt = self.dt();
+        let left = ((duration - flow.time()) / dt).ceil() as usize;
+        if steps + left > MAX_VISCOUS_STEPS {
+            return Err(ViscousError::TooManySteps {
+                dt,
+                time: flow.time(),
+                steps: steps + left,
+                max: MAX_VISCOUS_STEPS,
+            });
+        }
+        Ok(())
+    }
 }
 
 /// The mid-line `points` (leading to trailing edge) shortened by `cut`
@@ -406,11 +474,12 @@ impl ViscousSection {
     /// sampling the loads every `period / 200` (or `duration / 2000`
     /// without a period).
     ///
-    /// Cost: measured 19.8 ns per cell per step (wall time, both cores of
-    /// this 2-core machine) on the default FWAV section, 256 × 160 cells;
+    /// Cost: measured 14.1 ns per cell per step (wall time, both cores of
+    /// this 2-core machine) on the default FWAV section, 384 × 160 cells;
     /// the number of steps is set by the Courant number in the small
-    /// cells at a thin section's ends: 42,438 for that section's 4 cycles
-    /// at Courant number 2, 34.4 s (see [`ViscousError::TooManySteps`]).
+    /// cells at a thin section's ends as the stroke goes: 36,025 for that
+    /// section's 4 cycles at Courant number 1.5, 31.3 s (see
+    /// [`ViscousError::TooManySteps`]).
     ///
     /// # Errors
     /// [`ViscousError`]: a bad thickness, the solver's, a time step that
@@ -473,15 +542,19 @@ impl ViscousSection {
         } else {
             duration / 2000.0
         };
-        let mut dt = (self.courant * flow.stable_dt(1.0) / path.peak_speed_ratio()).min(sample);
+        let first = (self.courant * flow.stable_dt(1.0) / path.peak_speed_ratio()).min(sample);
+        let mut control = StepControl::new(first, sample, self.courant);
+        let mut smallest = first;
         let mut history = History::default();
         let mut steps = 0;
         let mut next = sample;
         let end = duration + 1e-9 * sample;
         while next <= end {
             if steps % CHECK_EVERY == 0 && steps > 0 {
-                dt = shortened_step(&flow, self.courant, dt, duration, steps)?;
+                control.adjust(&flow, duration, steps)?;
             }
+            let dt = control.dt();
+            smallest = smallest.min(dt);
             // The loads (a pass round the wall) only either side of a
             // step that crosses a sample time.
             let before =
@@ -505,7 +578,7 @@ impl ViscousSection {
         Ok(ViscousRun {
             history,
             sample,
-            dt,
+            dt: smallest,
             steps,
             vorticity,
             body,

@@ -204,11 +204,12 @@ fn a_flat_deformation_is_the_rigid_plate() {
 }
 
 /// On the default FWAV section's plate and grid at its Reynolds number
-/// (4 % plate, 256 × 160, Re 12,329, k = 0.69), a plunge of 0.75 chords
+/// (4 % plate, Re 12,329, k = 0.69), a plunge of 0.75 chords
 /// given as a rigid plunge of 0.63 and a heave of 0.12 of the
 /// deformation (flat mid-lines moved up and down) is the rigid plunge of
-/// 0.75 over the first period: CT and CP within 1% (measured: CT 0.1139
-/// vs 0.1142, CP 2.378 vs 2.392). Later periods of this plunge shed
+/// 0.75 over the first period: CT and CP within 1% (measured on 256 ×
+/// 160 at Courant 2, the defaults then: CT 0.1139 vs 0.1142, CP 2.378 vs
+/// 2.392). Later periods of this plunge shed
 /// their vortices aperiodically (CT 0.114, 0.099, 0.090, 0.106 rigid
 /// over four), so the two runs part ways there, as two rigid runs
 /// perturbed at round-off would.
@@ -324,9 +325,10 @@ fn aero2d_runs_the_viscous_model() {
 /// The issue's speed target: one 4-cycle evaluation of the default FWAV
 /// mid-span section (the aerodynamic discipline's, Re 12,300: chord 0.06 m
 /// at 3 m/s; 11 Hz, +-30 deg, stroke plane 90 deg), rigid, as a 4 % plate
-/// at the default resolution (256 x 160), under 60 s on this machine.
-/// Measured: 34.4 s (33.3-34.5 s over three runs), 19.8 ns per cell per
-/// step; 40.1 s the same day before the run moved onto rayon's pool.
+/// at the default resolution (384 x 160, Courant 1.5), under 60 s on this
+/// machine. Measured: 31.3 s, 36,025 steps, 14.1 ns per cell per step
+/// (256 x 160 at Courant 2 with a step never lengthened: 34.4 s, 19.8 ns,
+/// an earlier session).
 /// Ignored: a benchmark of about a minute; run with
 /// `cargo test --release -p fwav --test integration viscous_section:: -- --ignored --nocapture`
 /// (`FWAV_NS_CYCLES=0.25` runs part of it, to see the step it takes;
@@ -454,17 +456,20 @@ fn case1_lift(run: &fwav::aero2d::viscous::ViscousRun) -> ((f64, f64), (f64, f64
 /// 2014, J. Fluid Mech. 751: the SD7003 pitched 0 -> 25 deg about its
 /// leading edge by Eldredge's ramp, K = 0.11, Re 30,000; CFL3D lift in
 /// `tests/data/ldvm_case1_cfd.dat`), at the model's default resolution
-/// (256 x 160, Courant 2; its sharp trailing edge opened to 0.005 c):
+/// (384 x 160, Courant 1.5; its sharp trailing edge opened to 0.005 c):
 /// the mean lift over the shedding phase, t = 2..4 chords travelled,
 /// within 10% of the CFD's (issue 23), and the peak lift within 10%.
-/// Measured (release): mean 2.364 against 2.232 (+5.9%), peak 2.936
-/// against 2.776 (+5.8%), 14,689 steps in 13 s; with the trailing edge
+/// Measured (release): mean 2.336 against 2.232 (+4.6%), peak 2.941
+/// against 2.776 (+5.9%), 11,660 steps in 24 s (on 256 x 160 at Courant
+/// 2 with a step that was never lengthened: +5.9% and +5.8%, 13 s); with the trailing edge
 /// rounded by a tangent circle of 0.005 c instead (the section then ends
 /// at 0.916 c) the mean was 7.1% low.
 #[test]
 fn ldvm_case1_lift_under_navier_stokes_matches_the_cfd() {
     let clock = std::time::Instant::now();
-    let run = fwav::validation::ns2d::case1_run(&case1_section(256, 160, 2.0)).unwrap();
+    let default = ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS);
+    let section = case1_section(default.around, default.radial, default.courant);
+    let run = fwav::validation::ns2d::case1_run(&section).unwrap();
     let ((mean, peak), (cfd_mean, cfd_peak)) = case1_lift(&run);
     println!(
         "case 1, NS: mean CL {mean:.4} (CFD {cfd_mean:.4}, {:+.1}%), peak {peak:.3} (CFD \
@@ -485,23 +490,25 @@ fn ldvm_case1_lift_under_navier_stokes_matches_the_cfd() {
 }
 
 /// Case 1's mean and peak lift converge at the default resolution: the
-/// grid refined to 384 x 240 and the step halved (Courant 1) each change
-/// them by less than 3% (issue 23's convergence criterion). Measured
-/// (release): 384 x 240, mean +0.4%, peak +0.3% (33 s); Courant 1, mean
-/// +0.4%, peak +0.1% (25 s); the coarser 192 x 128 is 2.9% low in the
-/// mean.
+/// grid refined to 512 x 240 and the step halved each change them by less
+/// than 3% (issue 23's convergence criterion). Measured (release): 512 x
+/// 240, mean -0.56%, peak +2.07%; the step halved, mean +0.26%, peak
+/// -0.04%.
 #[test]
-#[ignore = "heavy (about 70 s in release): `cargo test --release -p fwav --test integration -- --ignored case1`"]
+#[ignore = "heavy (about a minute in release): `cargo test --release -p fwav --test integration -- --ignored case1`"]
 fn ldvm_case1_lift_under_navier_stokes_converges() {
     let run = |around, radial, courant| {
         let run =
             fwav::validation::ns2d::case1_run(&case1_section(around, radial, courant)).unwrap();
         case1_lift(&run).0
     };
-    let default = run(256, 160, 2.0);
+    let courant = ViscousSection::DEFAULT_COURANT;
+    let plate = ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS);
+    let (around, radial) = (plate.around, plate.radial);
+    let default = run(around, radial, courant);
     for (what, refined) in [
-        ("384 x 240", run(384, 240, 2.0)),
-        ("Courant 1", run(256, 160, 1.0)),
+        ("512 x 240", run(512, 240, courant)),
+        ("step halved", run(around, radial, 0.5 * courant)),
     ] {
         let change = (refined.0 / default.0 - 1.0, refined.1 / default.1 - 1.0);
         println!(
