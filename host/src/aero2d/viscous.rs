@@ -150,6 +150,15 @@ impl ViscousSection {
     /// × 240: 0.0960), and 384 × 160 is within 1.3 % (CT) and 1.0 % (CP)
     /// of the finest grid, where 256 × 160 was 18 % and 9 % off. (384 ×
     /// 128 is not enough: 0.0730.)
+    ///
+    /// Not converged: the wall's first cell. That study held it at a
+    /// tenth of the boundary layer; halved (on 384 × 240, so that the
+    /// wall's rings do not starve the field) the first stroke's CT falls
+    /// 6.0 % (CP 0.4 %), and it keeps falling about linearly with the
+    /// cell (0.2, 0.1, 0.05, 0.025: CT 0.0918, 0.0820, 0.0771, 0.0743;
+    /// some 0.071 extrapolated): the default's thrust is some 15 % high
+    /// (`viscous_section::default_section_thrust_converges_with_the_wall_cell`,
+    /// ignored and failing). Its power is converged.
     pub fn new(shape: ViscousShape) -> Self {
         Self {
             shape,

@@ -475,7 +475,7 @@ fn design_report_says_the_ns_section_deforms() {
 /// with `section_model = "ns"` (885 s in the deforming design run of
 /// docs/ns-design, commit c35523c, on 256 × 160 before the step control
 /// that lengthens the step where the flow allows). Measured: 494 s on 256
-/// × 160, 924 s on the default 384 × 160: fails on the converged grid.
+/// × 160, 924 s on the default 384 × 160: fails on the default grid.
 #[test]
 #[ignore = "benchmark (about 15 min; over the issue's 10 on the default grid): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_discipline_benchmark`"]
 fn ns_discipline_benchmark() {

@@ -322,6 +322,37 @@ fn aero2d_runs_the_viscous_model() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// The default FWAV mid-span section's flow (the aerodynamic
+/// discipline's, chord 0.06 m at 3 m/s): Reynolds number 12,329 and the
+/// reduced frequency of 11 Hz.
+fn fwav_mid_span_flow() -> (f64, f64) {
+    use fwav::discipline::section::{SectionCase, AIR_KINEMATIC_VISCOSITY};
+    let case = SectionCase::fwav_mid_span();
+    (
+        case.flight.speed * case.chord / AIR_KINEMATIC_VISCOSITY,
+        case.reduced_frequency(11.0),
+    )
+}
+
+/// `cycles` periods of the default FWAV mid-span section flapping at 11
+/// Hz, +-30 deg, stroke plane 90 deg, rigid, as `section`.
+fn fwav_mid_span_run(section: &ViscousSection, cycles: f64) -> fwav::aero2d::viscous::ViscousRun {
+    use fwav::aero2d::motion::SectionFlapping;
+    use fwav::discipline::section::SectionCase;
+    let case = SectionCase::fwav_mid_span();
+    let (reynolds, k) = fwav_mid_span_flow();
+    let flapping = SectionFlapping {
+        reduced_frequency: k,
+        radius: case.radius / case.chord,
+        amplitude: 30f64.to_radians(),
+        mean_angle: 0.0,
+        stroke_plane: 90f64.to_radians(),
+    };
+    section
+        .run(SectionPath::Flapping(flapping), reynolds, cycles * PI / k)
+        .unwrap()
+}
+
 /// The issue's speed target: one 4-cycle evaluation of the default FWAV
 /// mid-span section (the aerodynamic discipline's, Re 12,300: chord 0.06 m
 /// at 3 m/s; 11 Hz, +-30 deg, stroke plane 90 deg), rigid, as a 4 % plate
@@ -333,24 +364,12 @@ fn aero2d_runs_the_viscous_model() {
 /// `cargo test --release -p fwav --test integration viscous_section:: -- --ignored --nocapture`
 /// (`FWAV_NS_CYCLES=0.25` runs part of it, to see the step it takes;
 /// `FWAV_NS_THICKNESS` sets the plate's thickness, `FWAV_NS_COURANT` the
-/// step's Courant number, `FWAV_NS_AROUND` and `FWAV_NS_RADIAL` the grid,
+/// step's Courant number, `FWAV_NS_AROUND` and `FWAV_NS_RADIAL` the grid
+/// and `FWAV_NS_FIRST_CELL` its first cell in boundary-layer thicknesses,
 /// for the convergence study).
 #[test]
 #[ignore = "benchmark (about a minute): the default section's 4-cycle viscous evaluation against the issue's 60 s"]
 fn default_section_four_cycles_benchmark() {
-    use fwav::aero2d::motion::SectionFlapping;
-    use fwav::aero2d::viscous::SectionPath;
-    use fwav::discipline::section::{SectionCase, AIR_KINEMATIC_VISCOSITY};
-    let case = SectionCase::fwav_mid_span();
-    let k = case.reduced_frequency(11.0);
-    let flapping = SectionFlapping {
-        reduced_frequency: k,
-        radius: case.radius / case.chord,
-        amplitude: 30f64.to_radians(),
-        mean_angle: 0.0,
-        stroke_plane: 90f64.to_radians(),
-    };
-    let reynolds = case.flight.speed * case.chord / AIR_KINEMATIC_VISCOSITY;
     let thickness: f64 = std::env::var("FWAV_NS_THICKNESS").map_or(0.04, |v| v.parse().unwrap());
     let courant: f64 = std::env::var("FWAV_NS_COURANT")
         .map_or(ViscousSection::DEFAULT_COURANT, |v| v.parse().unwrap());
@@ -362,13 +381,14 @@ fn default_section_four_cycles_benchmark() {
         courant,
         around: nodes("FWAV_NS_AROUND", plate.around),
         radial: nodes("FWAV_NS_RADIAL", plate.radial),
+        first_cell_layers: std::env::var("FWAV_NS_FIRST_CELL")
+            .map_or(plate.first_cell_layers, |v| v.parse().unwrap()),
         ..plate
     };
+    let (reynolds, k) = fwav_mid_span_flow();
     let cells = section.around * section.radial;
     let clock = std::time::Instant::now();
-    let run = section
-        .run(SectionPath::Flapping(flapping), reynolds, cycles * PI / k)
-        .unwrap();
+    let run = fwav_mid_span_run(&section, cycles);
     let seconds = clock.elapsed().as_secs_f64();
     let n = run.history.time.len();
     let last = n.min(400);
@@ -400,6 +420,53 @@ fn default_section_four_cycles_benchmark() {
         strokes.join("; ")
     );
     assert!(seconds < 60.0, "{seconds:.1} s");
+}
+
+/// The first stroke's thrust of the default FWAV section converges with
+/// the wall's first cell (issue 23's 3 %): halved from the default 0.1
+/// boundary-layer thicknesses (`c / sqrt(Re)`, at mid-chord) to 0.05, on
+/// 384 x 240 nodes so that the rings the wall takes do not starve the
+/// field. It does not: the grid study that chose 384 x 160 refined the
+/// nodes round and out with the first cell held, and missed this.
+/// Measured on 384 x 240 (first stroke, Courant 1.5), first cell 0.2,
+/// 0.1, 0.05, 0.025: CT 0.0918, 0.0820, 0.0771, 0.0743 (changes of
+/// -11 %, -6.0 %, -3.6 %: about first order; extrapolated, about 0.071,
+/// so the default's is some 15 % high), CP 1.7551, 1.7157, 1.7095,
+/// 1.7095 (converged below 0.1). On 160 rings the finer cells starve the
+/// field (0.025: CT 0.0684); on 320, first cell 0.1 and 0.05: 0.0837 and
+/// 0.0790. The friction taken from a second-order wall vorticity (a
+/// cubic through the wall's slope and the first two rings, in place of
+/// Thom's) moved CT by under 1 % (0.0828 at 0.1, 0.0775 at 0.05): the flow
+/// itself changes with the wall cell (the rounded edges' boundary layer,
+/// some ten cells across at 0.1), not the friction's formula.
+#[test]
+#[ignore = "fails (CT -6.0 % with the wall's first cell halved, 3 % allowed), and heavy \
+            (about 40 s in release): `cargo test --release -p fwav --test integration -- \
+            --ignored --nocapture wall_cell`"]
+fn default_section_thrust_converges_with_the_wall_cell() {
+    let first_stroke = |first_cell_layers| {
+        let section = ViscousSection {
+            radial: 240,
+            first_cell_layers,
+            ..ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS)
+        };
+        let run = fwav_mid_span_run(&section, 1.0);
+        let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+        (mean(&run.history.ct), mean(&run.history.cp))
+    };
+    let layers = ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS).first_cell_layers;
+    let (ct, cp) = first_stroke(layers);
+    let (ct_fine, cp_fine) = first_stroke(0.5 * layers);
+    let change = (ct_fine / ct - 1.0, cp_fine / cp - 1.0);
+    println!(
+        "first cell {layers} -> {}: CT {ct:.4} -> {ct_fine:.4} ({:+.1} %), CP {cp:.4} -> \
+         {cp_fine:.4} ({:+.1} %)",
+        0.5 * layers,
+        100.0 * change.0,
+        100.0 * change.1
+    );
+    assert!(change.0.abs() < 0.03, "CT {:+.1} %", 100.0 * change.0);
+    assert!(change.1.abs() < 0.03, "CP {:+.1} %", 100.0 * change.1);
 }
 
 /// A sharp trailing edge, as coordinate files have it (the SD7003 of
