@@ -155,10 +155,12 @@ impl ViscousSection {
     /// tenth of the boundary layer; halved (on 384 × 240, so that the
     /// wall's rings do not starve the field) the first stroke's CT falls
     /// 6.0 % (CP 0.4 %), and it keeps falling about linearly with the
-    /// cell (0.2, 0.1, 0.05, 0.025: CT 0.0918, 0.0820, 0.0771, 0.0743;
-    /// some 0.071 extrapolated): the default's thrust is some 15 % high
+    /// cell (0.2, 0.1, 0.05, 0.025: CT 0.0918, 0.0820, 0.0771, 0.0743,
+    /// where another estimate of the wall pressure's `ν ∂ω/∂n`, flat in
+    /// the cell, meets it: about 0.074): the default's thrust is some
+    /// 13 % high
     /// (`viscous_section::default_section_thrust_converges_with_the_wall_cell`,
-    /// ignored and failing). Its power is converged.
+    /// ignored and failing; README). Its power is within 1 %.
     pub fn new(shape: ViscousShape) -> Self {
         Self {
             shape,
