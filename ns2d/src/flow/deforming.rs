@@ -57,7 +57,7 @@
 //! (this module) 0, 4.1; ring sweep 1.9, 1.9; radial sweep 1.3, 1.5; the
 //! wall rings' streamfunction (with the frame's at every node) 1.3, 1.6;
 //! the wall's correction 0.7, 0.8, and its second radial pass 0.3, 0.4;
-//! the full streamfunction 1.1, 1.3; the rest 0.4: 9.1 and 14.8. The
+//! the full streamfunction 1.1, 1.3; the rest 0.4, 0.5: 9.2 and 14.8. The
 //! grid's motion is 28 % of a deforming step, its FFTs about two thirds
 //! of that. Truncating a ring's series where its terms fall below
 //! rounding would spare little: the default plate's maps keep 192 terms
