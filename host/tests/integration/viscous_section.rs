@@ -326,12 +326,8 @@ fn aero2d_runs_the_viscous_model() {
 /// discipline's, chord 0.06 m at 3 m/s): Reynolds number 12,329 and the
 /// reduced frequency of 11 Hz.
 fn fwav_mid_span_flow() -> (f64, f64) {
-    use fwav::discipline::section::{SectionCase, AIR_KINEMATIC_VISCOSITY};
-    let case = SectionCase::fwav_mid_span();
-    (
-        case.flight.speed * case.chord / AIR_KINEMATIC_VISCOSITY,
-        case.reduced_frequency(11.0),
-    )
+    let case = fwav::discipline::section::SectionCase::fwav_mid_span();
+    (case.reynolds(), case.reduced_frequency(11.0))
 }
 
 /// `cycles` periods of the default FWAV mid-span section flapping at 11
