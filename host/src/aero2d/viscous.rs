@@ -134,7 +134,7 @@ impl ViscousSection {
     /// 160, CT 0.0999, 0.0979, 0.0973 at 1.5, 0.75, 0.375 against 0.0971
     /// at the explicit scheme's fixed step (Courant 0.35), so 1.5 keeps it
     /// within 3 % of the converged step; on the default grid a halved step
-    /// moves CT by 1.7 % (0.0839 to 0.0825) and CP by 0.5 %.
+    /// moves CT by 1.8 % (0.0791 to 0.0777) and CP by 0.5 %.
     /// (`viscous_section::default_section_four_cycles_benchmark` with
     /// `FWAV_NS_CYCLES=1 FWAV_NS_COURANT=...`.)
     pub const DEFAULT_COURANT: f64 = 1.5;
@@ -142,25 +142,23 @@ impl ViscousSection {
     /// The default resolution round `shape`: 384 nodes round, 160 out to
     /// 30 chords, first cell a tenth of the boundary layer's thickness.
     /// Chosen on the default FWAV section's first stroke (deterministic,
-    /// unlike the later ones; CT and CP at Courant number 1.5):
-    /// 256 × 160, 0.0999 and 1.862; 320 × 160, 0.0876 and 1.750;
-    /// 384 × 160, 0.0839 and 1.728; 384 × 240, 0.0820 and 1.716;
-    /// 512 × 240, 0.0837 and 1.713; 512 × 320, 0.0848 and 1.712; 768 ×
-    /// 320, 0.0850 and 1.710. The nodes round the section decide it (256
-    /// × 240: 0.0960), and 384 × 160 is within 1.3 % (CT) and 1.0 % (CP)
-    /// of the finest grid, where 256 × 160 was 18 % and 9 % off. (384 ×
-    /// 128 is not enough: 0.0730.)
+    /// unlike the later ones; Courant number 1.5). With the wall
+    /// pressure's vorticity flux compact (`fwav_ns2d::Flow::loads`), CT
+    /// and CP: 384 × 160, 0.0791 and 1.726; 512 × 240, 0.0791 and 1.712;
+    /// 768 × 320, 0.0803 and 1.710 (within 1.5 % and 0.9 %); the wall's
+    /// first cell halved, 0.0765 and 1.727 (−3.3 %: the 160 rings then
+    /// reach the field more coarsely; on 240 rings, where the field keeps
+    /// its rings, 0.0775 to 0.0760, −2.0 %,
+    /// `viscous_section::default_section_thrust_converges_with_the_wall_cell`).
     ///
-    /// Not converged: the wall's first cell. That study held it at a
-    /// tenth of the boundary layer; halved (on 384 × 240, so that the
-    /// wall's rings do not starve the field) the first stroke's CT falls
-    /// 6.0 % (CP 0.4 %), and it keeps falling about linearly with the
-    /// cell (0.2, 0.1, 0.05, 0.025: CT 0.0918, 0.0820, 0.0771, 0.0743,
-    /// where another estimate of the wall pressure's `ν ∂ω/∂n`, flat in
-    /// the cell, meets it: about 0.074): the default's thrust is some
-    /// 13 % high
-    /// (`viscous_section::default_section_thrust_converges_with_the_wall_cell`,
-    /// ignored and failing; README). Its power is within 1 %.
+    /// The grid was chosen with the flux one-sided, which read the wall
+    /// layer's curvature from rings 1 and 2 and made the first cell
+    /// decide CT (0.2, 0.1, 0.05, 0.025 boundary layers on 384 × 240:
+    /// 0.0918, 0.0820, 0.0771, 0.0743; compact: 0.0808, 0.0775, 0.0760,
+    /// 0.0740). The nodes round decided it then: 256 × 160, 0.0999 and
+    /// 1.862; 320 × 160, 0.0876 and 1.750; 384 × 160, 0.0839 and 1.728;
+    /// 384 × 128, 0.0730; 768 × 320, 0.0850 and 1.710 (README, "The wall's
+    /// first cell").
     pub fn new(shape: ViscousShape) -> Self {
         Self {
             shape,

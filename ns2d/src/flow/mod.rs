@@ -67,7 +67,9 @@
 //! first steps).
 //!
 //! Forces: the wall pressure from the momentum equation along the no-slip
-//! wall, `∂p/∂s = -a_wall·s + ν ∂ω/∂n`, integrated round the section (its
+//! wall, `∂p/∂s = -a_wall·s + ν ∂ω/∂n` (the flux `∂ω/∂n` compact, from
+//! the vorticity equation at the wall: `Flow::wall_vorticity_flux`),
+//! integrated round the section (its
 //! trip round is not exactly zero; the mismatch is spread linearly and
 //! reported as [`WallLoads::closure`]), and the friction `ν (ω - 2Ω)`.
 
@@ -165,6 +167,9 @@ pub struct Flow<M: Motion> {
     /// time step; the diffusion's implicit weight of the current step.
     previous_rate: Vec<f64>,
     last_dt: f64,
+    /// The wall vorticity at the last step's start (its time derivative
+    /// enters the wall pressure, `loads.rs`).
+    previous_wall: Vec<f64>,
     diffusion_weight: f64,
     /// The radial Thomas sweeps' modified upper diagonal and right-hand
     /// side (all lines), and how each eliminated row depends on the one
@@ -252,6 +257,7 @@ impl<M: Motion> Flow<M> {
             deforming: None,
             previous_rate: vec![0.0; n],
             last_dt: 0.0,
+            previous_wall: vec![0.0; nt],
             diffusion_weight: 0.5,
             sweep_upper: vec![0.0; n],
             sweep_rhs: vec![0.0; n],
@@ -470,6 +476,7 @@ impl<M: Motion> Flow<M> {
             0.5
         };
         let influence = self.influence_for(dt)?;
+        self.previous_wall.copy_from_slice(&self.omega[..nt]);
         // Adams–Bashforth of variable step (`r` the ratio of this step to
         // the last); Euler at the start.
         let (now, before) = if self.steps == 0 {
