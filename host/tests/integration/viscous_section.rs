@@ -373,6 +373,7 @@ fn fwav_mid_span_run(section: &ViscousSection, cycles: f64) -> fwav::aero2d::vis
 /// `FWAV_NS_THICKNESS` sets the plate's thickness, `FWAV_NS_COURANT` the
 /// step's Courant number, `FWAV_NS_AROUND` and `FWAV_NS_RADIAL` the grid
 /// and `FWAV_NS_FIRST_CELL` its first cell in boundary-layer thicknesses,
+/// `FWAV_NS_OUTER` its outer boundary in chords,
 /// for the convergence study).
 #[test]
 #[ignore = "benchmark (about a minute): the default section's 4-cycle viscous evaluation against the issue's 60 s"]
@@ -390,6 +391,8 @@ fn default_section_four_cycles_benchmark() {
         radial: nodes("FWAV_NS_RADIAL", plate.radial),
         first_cell_layers: std::env::var("FWAV_NS_FIRST_CELL")
             .map_or(plate.first_cell_layers, |v| v.parse().unwrap()),
+        outer_chords: std::env::var("FWAV_NS_OUTER")
+            .map_or(plate.outer_chords, |v| v.parse().unwrap()),
         ..plate
     };
     let (reynolds, k) = fwav_mid_span_flow();
