@@ -72,8 +72,8 @@ fn the_cylinder_wake_at_re_100_sheds_as_published() {
 #[test]
 #[ignore = "fails, and heavy (about 40 s): on 256 x 192, dt = 0.005, St 0.1975 and CD 1.338 pass \
             but the CL amplitude is 0.688, 8.2% below 0.75 (5% allowed); converged with the grid \
-            (with the wall flux one-sided then: 0.680 there, 0.679 on 384 x 288, dt = 0.004); \
-            `fwav validate --only ns2d/`"]
+            (384 x 288, dt = 0.004: 0.688, CD 1.338, St 0.1973; with the wall flux one-sided, \
+            0.680 and 0.679); `fwav validate --only ns2d/`"]
 fn the_cylinder_wake_at_re_200_sheds_as_braza_found() {
     let s = CylinderWake {
         reynolds: 200.0,
