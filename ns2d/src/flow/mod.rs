@@ -607,3 +607,23 @@ enum Extent {
     /// At the wall's two rings.
     Wall,
 }
+
+/// The small flow the module's unit tests build: an ellipse (chord 1,
+/// 20 % thick) in a steady stream, 64 × 48 nodes out to 20 map radii,
+/// first cell 0.01 in `ξ`, at kinematic viscosity `viscosity`.
+#[cfg(test)]
+fn small_ellipse_flow(viscosity: f64) -> Flow<crate::motion::SteadyStream> {
+    let map = SectionMap::ellipse(0.5, 0.1, (0.0, 0.0)).unwrap();
+    let spec = GridSpec {
+        around: 64,
+        radial: 48,
+        outer_radius: 20.0,
+        first_cell: 0.01,
+    };
+    let stream = crate::motion::SteadyStream {
+        speed: 1.0,
+        kick_rate: 0.0,
+        kick_period: 1.0,
+    };
+    Flow::new(&map, spec, stream, viscosity).unwrap()
+}

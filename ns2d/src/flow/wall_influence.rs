@@ -166,10 +166,7 @@ impl WallInfluence {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::flow::Extent;
-    use crate::grid::GridSpec;
-    use crate::motion::SteadyStream;
-    use crate::section_map::SectionMap;
+    use crate::flow::{small_ellipse_flow, Extent};
 
     impl<M: Motion> Flow<M> {
         /// The influence matrix column by column, as defined: a radial
@@ -210,19 +207,7 @@ mod tests {
     /// ellipse at Re 200 (either diffusion weight).
     #[test]
     fn the_influence_matrix_from_turned_responses_is_the_column_by_column_one() {
-        let map = SectionMap::ellipse(0.5, 0.1, (0.0, 0.0)).unwrap();
-        let spec = GridSpec {
-            around: 64,
-            radial: 48,
-            outer_radius: 20.0,
-            first_cell: 0.01,
-        };
-        let still = SteadyStream {
-            speed: 1.0,
-            kick_rate: 0.0,
-            kick_period: 1.0,
-        };
-        let mut flow = Flow::new(&map, spec, still, 1.0 / 200.0).unwrap();
+        let mut flow = small_ellipse_flow(1.0 / 200.0);
         for weight in [1.0, 0.5] {
             flow.diffusion_weight = weight;
             let dt = 2e-3;
