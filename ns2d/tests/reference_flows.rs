@@ -52,8 +52,8 @@ fn assert_in_band(what: &str, value: f64, (low, high): (f64, f64), margin: f64) 
 /// within 3% of its band.
 #[test]
 #[ignore = "heavy (about 30 s); `fwav validate --only ns2d/cylinder-re100` runs it. Measured on \
-            256 x 192, dt = 0.005: St 0.1656, CD 1.333, CL amplitude 0.329 (all within 3% of their \
-            bands)"]
+            256 x 192, dt = 0.005: St 0.1649, CD 1.328, CL amplitude 0.323 (all within 3% of their \
+            bands; 0.1656, 1.333, 0.329 before the step's velocity was centred, 2026-12-03)"]
 fn the_cylinder_wake_at_re_100_sheds_as_published() {
     let s = CylinderWake {
         reynolds: 100.0,
@@ -70,10 +70,10 @@ fn the_cylinder_wake_at_re_100_sheds_as_published() {
 /// Cylinder at Re 200 (Braza, Chassaing & Ha Minh 1986): CD 1.40 +- 0.05,
 /// CL +-0.75, Strouhal 0.20, within 5%.
 #[test]
-#[ignore = "fails, and heavy (about 40 s): on 256 x 192, dt = 0.005, St 0.1975 and CD 1.338 pass \
-            but the CL amplitude is 0.688, 8.2% below 0.75 (5% allowed); converged with the grid \
-            (384 x 288, dt = 0.004: 0.688, CD 1.338, St 0.1973; with the wall flux one-sided, \
-            0.680 and 0.679); `fwav validate --only ns2d/`"]
+#[ignore = "fails, and heavy (about 40 s): on 256 x 192, dt = 0.005, St 0.1962 and CD 1.330 pass \
+            but the CL amplitude is 0.678, 9.6% below 0.75 (5% allowed; Liu, Zheng & Sung 1998 \
+            computed 0.69). Before the step's velocity was centred (2026-12-03): 0.688, converged \
+            with the grid (384 x 288, dt = 0.004: 0.688); `fwav validate --only ns2d/`"]
 fn the_cylinder_wake_at_re_200_sheds_as_braza_found() {
     let s = CylinderWake {
         reynolds: 200.0,
@@ -90,12 +90,10 @@ fn the_cylinder_wake_at_re_200_sheds_as_braza_found() {
 /// Koumoutsakos & Leonard (1995) at Re 3000: CD within 5% over U t/R in
 /// [0.5, 3].
 #[test]
-#[ignore = "fails, and heavy (about 10 s): 5.2% at U t/R = 0.61, the drag's minimum (CD 0.3235 \
-            against 0.3075), on 512 x 320, since the wall pressure's vorticity flux became compact \
-            (4.4% with it one-sided). Refined (first cell and step halved, 400 rings) CD there goes \
-            0.3236 -> 0.3233 compact, 0.3210 -> 0.3223 one-sided; 768 and 1024 nodes round give \
-            0.3234, the outer boundary at 100 D 0.3234: the converged flow is 5.1% above the \
-            reference at that instant; elsewhere on [0.5, 3] within 4.0%"]
+#[ignore = "heavy (about 10 s); `fwav validate --only ns2d/impulsive-cylinder-re3000` runs it. \
+            Measured on 512 x 320, dt = 0.0007: worst 4.8%, since the step's velocity was centred \
+            (2026-12-03). Before it, 5.2% at U t/R = 0.61, the drag's minimum, with the wall \
+            pressure's vorticity flux compact and 4.4% with it one-sided"]
 fn the_impulsively_started_cylinder_at_re_3000_drags_as_koumoutsakos_and_leonard_found() {
     let resolution = ImpulsiveCylinder::validated_re_3000();
     let drag = ImpulsiveCylinder {
@@ -141,7 +139,8 @@ fn fourth_period_deviation(lift: &[(f64, f64)], name: &str) -> (f64, f64) {
 /// 1.29 against 1.03 in theirs, 1.26 against 0.96 here): a memory of the
 /// first stroke that Eldredge's (2007) and PetIBM's computations share,
 /// not a broken symmetry (`tests/mirror_symmetry.rs`). Measured on 192 x
-/// 128, dt = 0.00025: worst 9.8% at t/T = 3.70.
+/// 128, dt = 0.00025: worst 9.7% (9.8% at t/T = 3.70 before the step's
+/// velocity was centred, 2026-12-03).
 ///
 /// The curve of Wang, Birch & Dickinson (2004) as distributed with PetIBM
 /// (`tests/data/wang_birch_dickinson_2004_lift_re75.dat`, which PetIBM's
@@ -151,7 +150,7 @@ fn fourth_period_deviation(lift: &[(f64, f64)], name: &str) -> (f64, f64) {
 /// Eldredge 32%), so it is not a reference for them.
 #[test]
 #[ignore = "heavy (about 45 s); `fwav validate --only ns2d/hovering` runs it. Measured on 192 x 128, \
-            dt = 0.00025: worst 9.8% of the peak"]
+            dt = 0.00025: worst 9.7% of the peak"]
 fn the_hovering_ellipse_lifts_as_li_dong_and_liu_computed() {
     let lift = hovering_lift();
     let (error, t) = fourth_period_deviation(&lift, "li_dong_liu_2015_lift_re75.dat");

@@ -10,7 +10,9 @@
 //! The flux through a face is the difference of the relative
 //! streamfunction at its two corners (so the fluxes round a cell sum to
 //! zero exactly and none crosses the wall) times a face value of the
-//! vorticity. Every flux is shared by the two cells of its face with one
+//! vorticity; the relative streamfunction is the step's middle's
+//! (extrapolated: [`super::Flow::step`]), so that the velocity is
+//! centred in the step as Crank–Nicolson and Adams–Bashforth need. Every flux is shared by the two cells of its face with one
 //! weight, so advection changes the fluid's circulation only by what
 //! crosses the outer face.
 
@@ -279,19 +281,18 @@ pub(super) struct RateRows<'a> {
     /// The radial stretching's `g'` at each ring and `g''/g'`.
     pub(super) slope: &'a [f64],
     pub(super) curvature: f64,
-    /// The vorticity, the streamfunction and the rigid motion's
-    /// streamfunction at all nodes (their difference is the relative
-    /// streamfunction).
+    /// The vorticity at the step's start, and the relative
+    /// streamfunction (the fluid's less the rigid motion's) at the step's
+    /// middle, which carries it ([`super::Flow::step`]), at all nodes.
     pub(super) w: &'a [f64],
-    pub(super) psi: &'a [f64],
-    pub(super) frame: &'a [f64],
+    pub(super) relative: &'a [f64],
     /// `1/J` at all nodes.
     pub(super) inv_jac: &'a [f64],
     /// The inverse cell areas ([`FaceAreas`]).
     pub(super) areas: &'a FaceAreas,
     /// A deforming grid's swept fluxes of the radial faces (above each
-    /// node) and ring faces (`k + ½`), taken off the fluid's
-    /// (`flow/deforming.rs`); `None` for a rigid grid.
+    /// node) and ring faces (`k + ½`) at the step's middle, taken off the
+    /// fluid's (`flow/deforming.rs`); `None` for a rigid grid.
     pub(super) swept: Option<(&'a [f64], &'a [f64])>,
 }
 
@@ -306,10 +307,7 @@ impl RateRows<'_> {
     /// are the wall's own values, so no flux crosses it) into `out`.
     fn corners(&self, j: usize, out: &mut [f64]) {
         let nt = self.nt;
-        let rel = |j: usize, k: usize| {
-            let i = j * nt + k;
-            self.psi[i] - self.frame[i]
-        };
+        let rel = |j: usize, k: usize| self.relative[j * nt + k];
         if j == usize::MAX {
             for (k, c) in out.iter_mut().enumerate() {
                 *c = 0.5 * (rel(0, k) + rel(0, (k + 1) % nt));
@@ -521,14 +519,13 @@ impl<M: Motion> Flow<M> {
             slope: &g.slope,
             curvature: g.curvature,
             w: &self.omega,
-            psi: &self.psi,
-            frame: &self.frame_psi,
+            relative: &self.relative,
             inv_jac: &g.inv_jac,
             areas: &self.face_areas,
             swept: self
                 .deforming
                 .as_ref()
-                .map(|d| (&d.swept_radial[..], &d.swept_ring[..])),
+                .map(|d| (&d.middle_radial[..], &d.middle_ring[..])),
         };
         let mut radial = std::mem::take(&mut self.radial_faces);
         radial.fill(&rows);

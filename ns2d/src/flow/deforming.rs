@@ -64,10 +64,13 @@
 //! out to `|ζ| = 1.1`, 35 at 2.2 and 7 at the outer ring.
 //!
 //! The step moves the grid once, between its explicit part (at the
-//! step's start, with the start's grid and swept fluxes) and its implicit
-//! sweeps and streamfunction solves (at the step's end): first order in
-//! the grid's motion, whose time scale (a flapping period) is thousands
-//! of steps. The wall's influence matrix is built on the grid of its time
+//! step's start, with the start's grid, and the swept fluxes extrapolated
+//! to the step's middle as the fluid's velocity is: [`super::Flow::step`])
+//! and its implicit sweeps and streamfunction solves (at the step's
+//! end): first order in the grid's motion, whose time scale (a flapping
+//! period) is thousands of steps (the plunging and pitching ellipse given
+//! as a deformation converges at second order in the step all the same:
+//! `tests/deforming_sections.rs`). The wall's influence matrix is built on the grid of its time
 //! and rebuilt when `J` in the wall's two rings has moved by more than
 //! [`INFLUENCE_DRIFT`] since (each time step in use has its own) ([`super::Flow::wall_residual`] shows what
 //! the drift leaves).
@@ -107,8 +110,14 @@ pub(super) struct DeformingGrid {
     swept_node: Vec<Complex64>,
     /// The flux each radial face (above its node) and ring face (`k + ½`)
     /// sweeps per unit time, outward and forward.
-    pub(super) swept_radial: Vec<f64>,
-    pub(super) swept_ring: Vec<f64>,
+    swept_radial: Vec<f64>,
+    swept_ring: Vec<f64>,
+    /// The same at the last step's start, and extrapolated to the
+    /// current step's middle (the advection's: [`DeformingGrid::swept_at_middle`]).
+    previous_radial: Vec<f64>,
+    previous_ring: Vec<f64>,
+    pub(super) middle_radial: Vec<f64>,
+    pub(super) middle_ring: Vec<f64>,
     /// At the wall: the deformation's streamfunction and `ψ_ξ`, its
     /// acceleration `∂²z/∂t²` and `∂w/∂θ`.
     pub(super) wall_psi: Vec<f64>,
@@ -174,6 +183,10 @@ impl DeformingGrid {
             swept_node: vec![zero; n],
             swept_radial: vec![0.0; n],
             swept_ring: vec![0.0; n],
+            previous_radial: vec![0.0; n],
+            previous_ring: vec![0.0; n],
+            middle_radial: vec![0.0; n],
+            middle_ring: vec![0.0; n],
             wall_psi: vec![0.0; nt],
             wall_slope: vec![0.0; nt],
             wall_acceleration: vec![zero; nt],
@@ -219,6 +232,35 @@ impl DeformingGrid {
             *slope = -s.im;
         }
         self.circulation = wall.iter().map(|s| s.im).sum::<f64>() * grid.d_theta;
+    }
+
+    /// The swept fluxes at the middle of a step from the current grid
+    /// (the step's start) and the last step's start,
+    /// `now + half (now - previous)` (`half` = ½ of the ratio of the
+    /// steps; 0 on the first), as the fluid's relative streamfunction
+    /// ([`super::Flow::step`]); the current ones kept for the next step.
+    pub(super) fn swept_at_middle(&mut self, half: f64) {
+        for (now, previous, middle) in [
+            (
+                &self.swept_radial,
+                &mut self.previous_radial,
+                &mut self.middle_radial,
+            ),
+            (
+                &self.swept_ring,
+                &mut self.previous_ring,
+                &mut self.middle_ring,
+            ),
+        ] {
+            middle
+                .par_iter_mut()
+                .zip(previous.par_iter_mut())
+                .zip(now.par_iter())
+                .for_each(|((m, p), n)| {
+                    *m = n + half * (n - *p);
+                    *p = *n;
+                });
+        }
     }
 
     /// The fluxes the faces sweep (module docs) from the nodes'
