@@ -129,41 +129,47 @@ impl ViscousSection {
     pub const DEFAULT_THICKNESS: f64 = 0.04;
 
     /// Default largest Courant number of a step. On the default FWAV
-    /// section's first stroke (deterministic, unlike the later ones) the
-    /// thrust's error falls as the square of the Courant number: on 256 ×
-    /// 160, CT 0.0999, 0.0979, 0.0973 at 1.5, 0.75, 0.375 against 0.0971
-    /// at the explicit scheme's fixed step (Courant 0.35), so 1.5 keeps it
-    /// within 3 % of the converged step; on the default grid a halved step
-    /// moves CT by 1.8 % (0.0791 to 0.0777) and CP by 0.5 %.
+    /// section's first stroke (384 × 160) the thrust converges as the
+    /// square of the Courant number since the advection is carried by the
+    /// velocity of the step's middle (`fwav_ns2d::Flow::step`): CT
+    /// 0.0753, 0.0739, 0.0733, 0.0729, 0.0727, 0.0728, 0.0727 at 6, 4, 3,
+    /// 2, 1.5, 0.5, 0.25, so 3 is within 0.8 % of the converged step and
+    /// halving it moves CT 0.8 % (CP 1.7297 to 1.7236, 0.4 %). With the
+    /// step start's velocity, before 2026-12-03, CT kept falling as the
+    /// step was refined (0.0791, 0.0785, 0.0777, 0.0767, 0.0749 at 1.5,
+    /// 1, 0.75, 0.5, 0.25) and the default was 1.5.
     /// (`viscous_section::default_section_four_cycles_benchmark` with
     /// `FWAV_NS_CYCLES=1 FWAV_NS_COURANT=...`.)
-    pub const DEFAULT_COURANT: f64 = 1.5;
+    pub const DEFAULT_COURANT: f64 = 3.0;
 
-    /// The default resolution round `shape`: 384 nodes round, 160 out to
+    /// The default resolution round `shape`: 384 nodes round, 240 out to
     /// 30 chords, first cell a tenth of the boundary layer's thickness.
-    /// Chosen on the default FWAV section's first stroke (deterministic,
-    /// unlike the later ones; Courant number 1.5). With the wall
-    /// pressure's vorticity flux compact (`fwav_ns2d::Flow::loads`), CT
-    /// and CP: 384 × 160, 0.0791 and 1.726; 512 × 240, 0.0791 and 1.712;
-    /// 768 × 320, 0.0803 and 1.710 (within 1.5 % and 0.9 %); the wall's
-    /// first cell halved, 0.0765 and 1.727 (−3.3 %: the 160 rings then
-    /// reach the field more coarsely; on 240 rings, where the field keeps
-    /// its rings, 0.0775 to 0.0760, −2.0 %,
-    /// `viscous_section::default_section_thrust_converges_with_the_wall_cell`).
+    /// Chosen on the default FWAV section's first stroke (Courant number
+    /// 3, the step centred in time: [`Self::DEFAULT_COURANT`]). CT and CP:
     ///
-    /// The grid was chosen with the flux one-sided, which read the wall
-    /// layer's curvature from rings 1 and 2 and made the first cell
-    /// decide CT (0.2, 0.1, 0.05, 0.025 boundary layers on 384 × 240:
-    /// 0.0918, 0.0820, 0.0771, 0.0743; compact: 0.0808, 0.0775, 0.0760,
-    /// 0.0740). The nodes round decided it then: 256 × 160, 0.0999 and
-    /// 1.862; 320 × 160, 0.0876 and 1.750; 384 × 160, 0.0839 and 1.728;
-    /// 384 × 128, 0.0730; 768 × 320, 0.0850 and 1.710 (README, "The wall's
-    /// first cell").
+    /// | grid | 160 rings | 240 rings | 320 rings |
+    /// | --- | --- | --- | --- |
+    /// | 384 round | 0.0733, 1.730 | **0.0758, 1.712** | 0.0779, 1.707 |
+    /// | 512 round | 0.0710, 1.701 | 0.0768, 1.709 | |
+    /// | 768 round | 0.0670, 1.683 | 0.0756, 1.705 | 0.0783, 1.702 |
+    ///
+    /// On 240 rings and more the nodes round are converged (512 and 768
+    /// round within 1.3 %); on 160 they are not (refining them lowers
+    /// CT by 9 %): the rings decide it, 240 to 320 moving CT 2.8 % and CP
+    /// 0.3 %. From 384 × 240 the step halved moves CT 2.0 % (0.0743) and
+    /// the wall's first cell halved 1.1 % (0.0750): the issue's 3 % holds
+    /// for each. 256 round: 0.0917 on 160 rings.
+    ///
+    /// Until 2026-12-03 the default was 384 × 160 at Courant number 1.5,
+    /// chosen when the step was first order in the velocity's change:
+    /// its time error (+8.8 % in CT there) and the grid's (−3 % to −7 %)
+    /// had cancelled (384 × 160, 512 × 240 and 768 × 320 gave CT 0.0791,
+    /// 0.0791, 0.0803 then).
     pub fn new(shape: ViscousShape) -> Self {
         Self {
             shape,
             around: 384,
-            radial: 160,
+            radial: 240,
             outer_chords: 30.0,
             first_cell_layers: 0.1,
             courant: Self::DEFAULT_COURANT,
@@ -483,12 +489,12 @@ impl ViscousSection {
     /// sampling the loads every `period / 200` (or `duration / 2000`
     /// without a period).
     ///
-    /// Cost: measured 14.1 ns per cell per step (wall time, both cores of
-    /// this 2-core machine) on the default FWAV section, 384 × 160 cells;
-    /// the number of steps is set by the Courant number in the small
-    /// cells at a thin section's ends as the stroke goes: 36,025 for that
-    /// section's 4 cycles at Courant number 1.5, 31.3 s (see
-    /// [`ViscousError::TooManySteps`]).
+    /// Cost: measured 15 to 23 ns per cell per step (wall time, both
+    /// cores of this 2-core machine, whose speed varies) on the default
+    /// FWAV section, 384 × 240 cells; the number of steps is set by the
+    /// Courant number in the small cells at a thin section's ends as the
+    /// stroke goes: 20,905 for that section's 4 cycles at Courant number
+    /// 3, 31.9 s (see [`ViscousError::TooManySteps`]).
     ///
     /// # Errors
     /// [`ViscousError`]: a bad thickness, the solver's, a time step that

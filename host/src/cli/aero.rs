@@ -27,11 +27,11 @@ pub struct Aero2dArgs {
     #[arg(long, default_value_t = ViscousSection::DEFAULT_THICKNESS)]
     pub ns_thickness: f64,
     /// Grid nodes round the section in the Navier–Stokes model (even, 16
-    /// to 8192; default 256).
+    /// to 8192; default 384).
     #[arg(long)]
     pub ns_around: Option<usize>,
     /// Grid nodes from the wall to the outer boundary in the Navier–Stokes
-    /// model (8 to 8192; default 160).
+    /// model (8 to 8192; default 240).
     #[arg(long)]
     pub ns_radial: Option<usize>,
     /// Section: `flat` (thin line, LDVM), a NACA 4-digit name such as

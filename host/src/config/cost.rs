@@ -55,14 +55,13 @@ const DEFAULT_STEPS: f64 = 240.0;
 const DEFAULT_MEMORY: f64 = 680e6;
 
 /// Wall time of one Navier–Stokes evaluation of the mid-span section at
-/// the default resolution (384 × 160, Courant number 1.5), s: 55.1 s
+/// the default resolution (384 × 240, Courant number 3), s: 57.3 s
 /// measured for the default section's 4 cycles on two cores, deforming as
 /// the built-in design's first system analysis found
 /// (`discipline_ns::ns_deforming_evaluation_benchmark`; the rigid
-/// section, 30.5 s the same day). The discipline runs two at a time on
-/// the two cores, each step itself parallel: its 20 evaluations took
-/// 924 s, 46 s each.
-pub const NS_EVALUATION_SECONDS: f64 = 55.1;
+/// section, 31.9 s the same run). The discipline runs two at a time on
+/// the two cores, each step itself parallel (README, "Speed").
+pub const NS_EVALUATION_SECONDS: f64 = 57.3;
 
 /// Navier–Stokes evaluations of a design run: each cycle's 21 (the
 /// initial design, the 18 rows, two confirmations; the section's

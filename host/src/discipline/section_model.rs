@@ -14,8 +14,8 @@
 //!   moves with it ([`ViscousSection::run_deforming`]); the reports say
 //!   what was modelled ([`ModelledSection`]). Cost: the default
 //!   section's 4 cycles at the default resolution on the 2-core
-//!   development machine, 30.5 s rigid (384 × 160 cells, Courant number
-//!   1.5, [`ViscousSection::run`]), 55.1 s deforming as the built-in
+//!   development machine, 31.9 s rigid (384 × 240 cells, Courant number
+//!   3, [`ViscousSection::run`]), 57.3 s deforming as the built-in
 //!   design's first system analysis found; some 700 to 1,300 times the
 //!   LDVM's.
 
@@ -114,7 +114,7 @@ fn default_courant() -> f64 {
 
 impl ViscousPlate {
     /// A plate `thickness` chords thick at [`ViscousSection::plate`]'s
-    /// default resolution (384 × 160 nodes out to 30 chords).
+    /// default resolution (384 × 240 nodes out to 30 chords).
     pub fn new(thickness: f64) -> Self {
         let s = ViscousSection::plate(thickness);
         Self {

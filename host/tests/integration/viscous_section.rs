@@ -208,8 +208,11 @@ fn a_flat_deformation_is_the_rigid_plate() {
 /// chords given as a rigid plunge of 0.38 and a heave of 0.12 of the
 /// deformation (flat mid-lines moved up and down: the default wing's
 /// bending heave is about ±0.12 c) is the rigid plunge of 0.5 over the
-/// first period: CT and CP within 1%. Measured: CT 0.0528 vs 0.0527, CP
-/// 0.8631 vs 0.8615 (−0.2 % both; at Courant 1.45, −0.2 % both).
+/// first period: CT and CP within 1%. Measured on the defaults since the
+/// step's velocity was centred (384 × 240, Courant 3): CT 0.0532 vs
+/// 0.0531, CP 0.8684 vs 0.8663 (−0.2 % both); before (384 × 160,
+/// Courant 1.5): CT 0.0528 vs 0.0527, CP 0.8631 vs 0.8615 (−0.2 % both;
+/// at Courant 1.45, −0.2 % both).
 ///
 /// It was a plunge of 0.75 (0.63 rigid): 256 × 160 at Courant 2, the
 /// defaults then, agreed within 0.3 % and 0.6 %, but on today's defaults
@@ -224,7 +227,7 @@ fn a_flat_deformation_is_the_rigid_plate() {
 /// either plunge shed their vortices aperiodically, so the two runs part
 /// ways there, as two rigid runs perturbed at round-off would.
 #[test]
-#[ignore = "about 40 s: `cargo test --release -p fwav --test integration -- --ignored \
+#[ignore = "about 20 s: `cargo test --release -p fwav --test integration -- --ignored \
             --nocapture viscous_section::a_heave_given_as_deformation_is_the_rigid_plunge`"]
 fn a_heave_given_as_deformation_is_the_rigid_plunge() {
     let (k, total, heave) = (0.69, 0.5, 0.12);
@@ -363,10 +366,14 @@ fn fwav_mid_span_run(section: &ViscousSection, cycles: f64) -> fwav::aero2d::vis
 /// The issue's speed target: one 4-cycle evaluation of the default FWAV
 /// mid-span section (the aerodynamic discipline's, Re 12,300: chord 0.06 m
 /// at 3 m/s; 11 Hz, +-30 deg, stroke plane 90 deg), rigid, as a 4 % plate
-/// at the default resolution (384 x 160, Courant 1.5), under 60 s on this
-/// machine. Measured: 31.3 s, 36,025 steps, 14.1 ns per cell per step
-/// (256 x 160 at Courant 2 with a step never lengthened: 34.4 s, 19.8 ns,
-/// an earlier session).
+/// at the default resolution (384 x 240, Courant 3), under 60 s on this
+/// machine. Measured: 44.2 s, 20,905 steps, 22.9 ns per cell per step, on
+/// a day the same run took 31.9 s in
+/// `discipline_ns::ns_deforming_evaluation_benchmark` (the machine's
+/// speed varies by half from hour to hour); the former default, 384 x
+/// 160 at Courant 1.5, 31.3 s, 36,025 steps, 14.1 ns, on a fast day (256
+/// x 160 at Courant 2 with a step never lengthened: 34.4 s, 19.8 ns, an
+/// earlier session).
 /// Ignored: a benchmark of about a minute; run with
 /// `cargo test --release -p fwav --test integration viscous_section:: -- --ignored --nocapture`
 /// (`FWAV_NS_CYCLES=0.25` runs part of it, to see the step it takes;
@@ -435,8 +442,10 @@ fn default_section_four_cycles_benchmark() {
 /// The first stroke's thrust of the default FWAV section converges with
 /// the wall's first cell (issue 23's 3 %): halved from the default 0.1
 /// boundary-layer thicknesses (`c / sqrt(Re)`, at mid-chord) to 0.05, on
-/// 384 x 240 nodes so that the rings the wall takes do not starve the
-/// field. Measured with the wall pressure's vorticity flux compact (the
+/// 384 x 240 nodes (the default since 2026-12-03). Measured with the
+/// step's velocity centred (Courant 3): CT 0.0758 -> 0.0750 (-1.1 %), CP
+/// 1.7118 -> 1.7057 (-0.4 %), 18 s. Before (the step start's velocity,
+/// Courant 1.5), with the wall pressure's vorticity flux compact (the
 /// first cell's difference less half a cell of `ω_ξξ` from the vorticity
 /// equation at the wall, `fwav_ns2d::Flow::loads`): CT 0.0775 -> 0.0760
 /// (-2.0 %), CP 1.7136 -> 1.7080 (-0.3 %), 55 s; and, with the same
@@ -451,7 +460,7 @@ fn default_section_four_cycles_benchmark() {
 /// layer's curvature from rings 1 and 2, where the layer is not yet
 /// parabolic (README, "The wall's first cell").
 #[test]
-#[ignore = "heavy (about a minute in release): `cargo test --release -p fwav --test integration -- \
+#[ignore = "heavy (about 20 s in release): `cargo test --release -p fwav --test integration -- \
             --ignored --nocapture wall_cell`"]
 fn default_section_thrust_converges_with_the_wall_cell() {
     let first_stroke = |first_cell_layers| {
@@ -533,15 +542,15 @@ fn case1_lift(run: &fwav::aero2d::viscous::ViscousRun) -> ((f64, f64), (f64, f64
 /// 2014, J. Fluid Mech. 751: the SD7003 pitched 0 -> 25 deg about its
 /// leading edge by Eldredge's ramp, K = 0.11, Re 30,000; CFL3D lift in
 /// `tests/data/ldvm_case1_cfd.dat`), at the model's default resolution
-/// (384 x 160, Courant 1.5; its sharp trailing edge opened to 0.005 c):
+/// (384 x 240, Courant 3; its sharp trailing edge opened to 0.005 c):
 /// the mean lift over the shedding phase, t = 2..4 chords travelled,
 /// within 10% of the CFD's (issue 23), and the peak lift within 10%.
-/// Measured (release): mean 2.351 against 2.232 (+5.3%), peak 2.975
-/// against 2.776 (+7.2%), 11,660 steps in 20 s (with the wall flux
-/// one-sided, before 2026-12-03: +4.6% and +5.9%; on 256 x 160 at Courant
-/// 2 with a step that was never lengthened: +5.9% and +5.8%, 13 s); with the trailing edge
-/// rounded by a tangent circle of 0.005 c instead (the section then ends
-/// at 0.916 c) the mean was 7.1% low.
+/// Measured (release): mean 2.369 against 2.232 (+6.1%), peak 2.969
+/// against 2.776 (+6.9%) (before the step's velocity was centred, on 384
+/// x 160 at Courant 1.5: +5.3% and +7.2%; with the wall flux one-sided as
+/// well: +4.6% and +5.9%); with the trailing edge rounded by a tangent
+/// circle of 0.005 c instead (the section then ends at 0.916 c) the mean
+/// was 7.1% low.
 #[test]
 fn ldvm_case1_lift_under_navier_stokes_matches_the_cfd() {
     let clock = std::time::Instant::now();
@@ -568,12 +577,14 @@ fn ldvm_case1_lift_under_navier_stokes_matches_the_cfd() {
 }
 
 /// Case 1's mean and peak lift converge at the default resolution: the
-/// grid refined to 512 x 240 and the step halved each change them by less
-/// than 3% (issue 23's convergence criterion). Measured (release): 512 x
-/// 240, mean -0.33%, peak +1.27%; the step halved, mean +0.20%, peak
-/// +0.09% (with the wall flux one-sided: -0.56%, +2.07%; +0.26%, -0.04%).
+/// grid refined to 512 x 320 and the step halved each change them by less
+/// than 3% (issue 23's convergence criterion). Measured (release, 384 x
+/// 240 at Courant 3): 512 x 320, mean -0.88%, peak -0.03%; the step halved, mean
+/// -0.23%, peak +0.27% (512 x 240: +1.84%, -0.06%). Before the step's
+/// velocity was centred (384 x 160, Courant 1.5, refined to 512 x 240):
+/// -0.33%, +1.27%; the step halved +0.20%, +0.09%.
 #[test]
-#[ignore = "heavy (about 2 min in release): `cargo test --release -p fwav --test integration -- --ignored case1`"]
+#[ignore = "heavy (about a minute in release): `cargo test --release -p fwav --test integration -- --ignored case1`"]
 fn ldvm_case1_lift_under_navier_stokes_converges() {
     let run = |around, radial, courant| {
         let run =
@@ -585,7 +596,7 @@ fn ldvm_case1_lift_under_navier_stokes_converges() {
     let (around, radial) = (plate.around, plate.radial);
     let default = run(around, radial, courant);
     for (what, refined) in [
-        ("512 x 240", run(512, 240, courant)),
+        ("512 x 320", run(512, 320, courant)),
         ("step halved", run(around, radial, 0.5 * courant)),
     ] {
         let change = (refined.0 / default.0 - 1.0, refined.1 / default.1 - 1.0);
