@@ -134,7 +134,8 @@ impl ViscousSection {
     /// velocity of the step's middle (`fwav_ns2d::Flow::step`): CT
     /// 0.0753, 0.0739, 0.0733, 0.0729, 0.0727, 0.0728, 0.0727 at 6, 4, 3,
     /// 2, 1.5, 0.5, 0.25, so 3 is within 0.8 % of the converged step and
-    /// halving it moves CT 0.8 % (CP 1.7297 to 1.7236, 0.4 %). With the
+    /// halving it moves CT 0.8 % (CP 1.7297 to 1.7236, 0.4 %); on the
+    /// default 384 × 240, 2.0 % (0.0758 to 0.0743) and CP 0.4 %. With the
     /// step start's velocity, before 2026-12-03, CT kept falling as the
     /// step was refined (0.0791, 0.0785, 0.0777, 0.0767, 0.0749 at 1.5,
     /// 1, 0.75, 0.5, 0.25) and the default was 1.5.
