@@ -12,9 +12,10 @@
 //! zero exactly and none crosses the wall) times a face value of the
 //! vorticity; the relative streamfunction is the step's middle's
 //! (extrapolated: [`super::Flow::step`]), so that the velocity is
-//! centred in the step as Crank–Nicolson and Adams–Bashforth need. Every flux is shared by the two cells of its face with one
-//! weight, so advection changes the fluid's circulation only by what
-//! crosses the outer face.
+//! centred in the step as Crank–Nicolson and Adams–Bashforth need.
+//! Every flux is shared by the two cells of its face with one weight, so
+//! advection changes the fluid's circulation only by what crosses the
+//! outer face.
 
 use super::Flow;
 use crate::motion::Motion;

@@ -70,10 +70,11 @@
 //! end): first order in the grid's motion, whose time scale (a flapping
 //! period) is thousands of steps (the plunging and pitching ellipse given
 //! as a deformation converges at second order in the step all the same:
-//! `tests/deforming_sections.rs`). The wall's influence matrix is built on the grid of its time
-//! and rebuilt when `J` in the wall's two rings has moved by more than
-//! [`INFLUENCE_DRIFT`] since (each time step in use has its own) ([`super::Flow::wall_residual`] shows what
-//! the drift leaves).
+//! `tests/deforming_sections.rs`). The wall's influence matrix is built
+//! on the grid of its time and rebuilt when `J` in the wall's two rings
+//! has moved by more than [`INFLUENCE_DRIFT`] since (each time step in
+//! use has its own) ([`super::Flow::wall_residual`] shows what the drift
+//! leaves).
 
 use std::sync::Arc;
 
@@ -113,7 +114,8 @@ pub(super) struct DeformingGrid {
     swept_radial: Vec<f64>,
     swept_ring: Vec<f64>,
     /// The same at the last step's start, and extrapolated to the
-    /// current step's middle (the advection's: [`DeformingGrid::swept_at_middle`]).
+    /// current step's middle (the advection's:
+    /// [`DeformingGrid::swept_at_middle`]).
     previous_radial: Vec<f64>,
     previous_ring: Vec<f64>,
     pub(super) middle_radial: Vec<f64>,
