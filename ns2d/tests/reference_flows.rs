@@ -168,7 +168,7 @@ fn the_hovering_ellipse_lifts_as_li_dong_and_liu_computed() {
 #[test]
 #[ignore = "fails, and heavy (about 35 s): on 192 x 128, dt = 0.00025, worst 10.6% of the peak at \
             t/T = 3.12 (0.41 against 0.54, the hump after the stroke reversal; the peaks agree \
-            within 4%). Li et al.'s curve, within 9.8%, differs from Eldredge's by 12%"]
+            within 4%). Li et al.'s curve, within 9.7%, differs from Eldredge's by 12%"]
 fn the_hovering_ellipse_lifts_as_eldredge_computed() {
     let lift = hovering_lift();
     let (error, t) = fourth_period_deviation(&lift, "eldredge_2007_lift_re75.dat");
