@@ -258,10 +258,7 @@ impl DeformingGrid {
                 .par_iter_mut()
                 .zip(previous.par_iter_mut())
                 .zip(now.par_iter())
-                .for_each(|((m, p), n)| {
-                    *m = n + half * (n - *p);
-                    *p = *n;
-                });
+                .for_each(|((m, p), n)| *m = super::at_middle(*n, p, half));
         }
     }
 

@@ -595,9 +595,7 @@ impl<M: Motion> Flow<M> {
                     .zip(psi)
                     .zip(frame)
                 {
-                    let now = s - f;
-                    *m = now + half * (now - *p);
-                    *p = now;
+                    *m = at_middle(s - f, p, half);
                 }
             });
         if let Some(d) = self.deforming.as_mut() {
@@ -661,6 +659,18 @@ impl<M: Motion> Flow<M> {
     pub fn exited_circulation(&self) -> f64 {
         self.exited
     }
+}
+
+/// A quantity of the step's start, `now`, extrapolated to the step's
+/// middle from it and the last step's start, `previous` (which then
+/// takes `now`): `now + half (now - previous)`, `half` being ½ of the
+/// ratio of the steps (0 on the first). The carrier of
+/// [`Flow::step`]: the fluid's relative streamfunction and the
+/// swept fluxes alike.
+fn at_middle(now: f64, previous: &mut f64, half: f64) -> f64 {
+    let middle = now + half * (now - *previous);
+    *previous = now;
+    middle
 }
 
 /// Where a streamfunction solve is wanted ([`Flow::solve_stream`]).
