@@ -171,6 +171,14 @@ fn print_result(result: &KinematicResult) {
         ),
         None => println!("chosen: the initial design (no candidate beats it)"),
     }
+    if result.adoption_margin > 0.0 {
+        println!(
+            "a candidate had to beat the initial design's combined objective by {:.3}: the \
+             scatter of two runs of this flow model, whose flow does not repeat from stroke to \
+             stroke",
+            result.adoption_margin
+        );
+    }
     println!(
         "unconstrained (no actuator check without an analysed vehicle): `fwav actuator` judges a choice, `fwav design` constrains every candidate"
     );

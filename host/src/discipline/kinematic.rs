@@ -30,7 +30,13 @@
 //! model and what it leaves out ([`KinematicResult::section`]). The
 //! answer is the feasible confirmed candidate (direct runs only: the L18
 //! row, the ANOM and RSM confirmations) with the best combined objective,
-//! or the initial design if none beats it.
+//! or the initial design if none beats it by more than the evaluations'
+//! own scatter ([`KinematicResult::adoption_margin`]: zero for the LDVM,
+//! whose flow repeats from stroke to stroke; for the Navier–Stokes model,
+//! whose flow does not, one standard deviation of the difference of two
+//! runs). Without that margin the Navier–Stokes design moved, cycle after
+//! cycle, among designs whose scores differed by less than a run's
+//! scatter, and never converged (docs/ns-design).
 //!
 //! Feasibility: every candidate is judged by a [`Violation`] closure (the
 //! design's actuator model, analytic: the caller builds it, this room
@@ -188,6 +194,14 @@ pub struct KinematicResult {
     pub candidates: Vec<Candidate>,
     /// Index of the chosen candidate, None: the initial design stays.
     pub chosen: Option<usize>,
+    /// How far a candidate's combined objective had to exceed the initial
+    /// design's to be chosen: the scatter of the difference of two
+    /// evaluations (the flow model's [`window_scatter`]; 0 for the LDVM,
+    /// and in records written before it was recorded).
+    ///
+    /// [`window_scatter`]: crate::discipline::section_model::SectionFlowModel::window_scatter
+    #[serde(default)]
+    pub adoption_margin: f64,
     /// The objective's reference (None in records written before it was
     /// recorded: the initial design's run).
     #[serde(default)]
@@ -381,13 +395,9 @@ pub fn optimize_reporting(
     } else {
         f64::NEG_INFINITY
     };
-    let chosen = (0..candidates.len())
-        .filter(|&i| candidates[i].violation == 0.0)
-        .filter(|&i| candidates[i].combined.is_some_and(|s| s > initial_score))
-        .max_by(|&a, &b| {
-            let s = |i: usize| candidates[i].combined.unwrap_or(f64::NEG_INFINITY);
-            s(a).total_cmp(&s(b))
-        });
+    // A candidate must beat it by more than the two runs' scatter.
+    let adoption_margin = objective.margin(&initial_result, case.model.window_scatter());
+    let chosen = best_beyond(&candidates, initial_score + adoption_margin);
     let section = case.modelled_section();
     Ok(KinematicResult {
         initial,
@@ -399,9 +409,19 @@ pub fn optimize_reporting(
         pareto: surfaces.pareto,
         candidates,
         chosen,
+        adoption_margin,
         reference: Some(reference),
         section: Some(section),
     })
+}
+
+/// The feasible candidate with the best combined objective above `bar`,
+/// if any.
+fn best_beyond(candidates: &[Candidate], bar: f64) -> Option<usize> {
+    let score = |i: usize| candidates[i].combined.unwrap_or(f64::NEG_INFINITY);
+    (0..candidates.len())
+        .filter(|&i| candidates[i].violation == 0.0 && score(i) > bar)
+        .max_by(|&a, &b| score(a).total_cmp(&score(b)))
 }
 
 /// ANOM's pick: the best levels and their additive prediction if they
@@ -506,6 +526,22 @@ impl Objective<'_> {
     fn combined(&self, r: &SectionResult) -> f64 {
         self.weights.thrust * r.ct_net / self.reference.ct_net
             + self.weights.efficiency * r.efficiency_net / self.reference.efficiency_net
+    }
+
+    /// The margin by which one evaluation's combined objective must
+    /// exceed another's, near `result`, to be better beyond the
+    /// evaluations' `scatter` (relative standard deviations of the net
+    /// thrust and efficiency, the flow model's [`window_scatter`]): one
+    /// standard deviation of the difference of two independent runs,
+    /// `√2 (w_ct s_ct CT/CT_0 + w_eta s_eta eta/eta_0)` (the two scatters
+    /// added as if fully correlated, the larger bound).
+    ///
+    /// [`window_scatter`]: crate::discipline::section_model::SectionFlowModel::window_scatter
+    fn margin(&self, result: &SectionResult, scatter: (f64, f64)) -> f64 {
+        let spread = self.weights.thrust * scatter.0 * result.ct_net / self.reference.ct_net
+            + self.weights.efficiency * scatter.1 * result.efficiency_net
+                / self.reference.efficiency_net;
+        std::f64::consts::SQRT_2 * spread.abs()
     }
 
     /// The combined objective of a run, None if it failed.
@@ -676,4 +712,73 @@ fn confirm(
                 .unwrap_or_else(|| evaluations.run(rsm_design)),
         ),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::discipline::section_model::SectionFlowModel;
+
+    fn candidate(combined: Option<f64>, violation: f64) -> Candidate {
+        Candidate {
+            method: "test".into(),
+            predicted: None,
+            confirmation: Evaluated {
+                design: FlappingKinematics::INITIAL,
+                result: Err("not run".into()),
+            },
+            combined,
+            violation,
+        }
+    }
+
+    /// Only a feasible candidate above the bar is chosen, the best of
+    /// them: a better one within the margin leaves the analysed design.
+    #[test]
+    fn a_candidate_must_clear_the_margin() {
+        let candidates = [
+            candidate(Some(2.30), 0.1),
+            candidate(Some(2.10), 0.0),
+            candidate(Some(2.05), 0.0),
+            candidate(None, 0.0),
+        ];
+        assert_eq!(best_beyond(&candidates, 2.0), Some(1));
+        assert_eq!(best_beyond(&candidates, 2.07), Some(1));
+        assert_eq!(best_beyond(&candidates, 2.0 + 0.113), None);
+        assert_eq!(best_beyond(&candidates, f64::NEG_INFINITY), Some(1));
+    }
+
+    /// The margin is one standard deviation of the difference of two
+    /// runs: at the reference design, with equal weights and a 4 %
+    /// scatter in each objective, `√2 (0.04 + 0.04)`; none for the LDVM.
+    #[test]
+    fn the_margin_is_the_scatter_of_a_difference() {
+        let violation = |_: &FlappingKinematics| 0.0;
+        let objective = Objective {
+            weights: Weights {
+                thrust: 1.0,
+                efficiency: 1.0,
+            },
+            reference: ObjectiveReference {
+                ct_net: 0.07,
+                efficiency_net: 0.04,
+            },
+            violation: &violation,
+        };
+        let at_reference = SectionResult {
+            reduced_frequency: 0.7,
+            ct: 0.07,
+            ct_net: 0.07,
+            cp: 1.75,
+            efficiency: 0.04,
+            efficiency_net: 0.04,
+            ct_change: 0.0,
+        };
+        let margin = objective.margin(&at_reference, (0.04, 0.04));
+        assert!((margin - std::f64::consts::SQRT_2 * 0.08).abs() < 1e-12);
+        assert_eq!(
+            objective.margin(&at_reference, SectionFlowModel::Ldvm.window_scatter()),
+            0.0
+        );
+    }
 }

@@ -79,6 +79,20 @@ impl SectionFlowModel {
         matches!(self, Self::Ldvm)
     }
 
+    /// How much one evaluation's scores scatter from the flow's own
+    /// unsteadiness: the relative standard deviation of the net thrust
+    /// coefficient and of the net efficiency averaged over the scored
+    /// window (the last two strokes), as `(thrust, efficiency)`.
+    ///
+    /// - The LDVM's flow repeats from stroke to stroke: 0.
+    /// - The Navier–Stokes flow does not ([`NS_WINDOW_SCATTER`]).
+    pub fn window_scatter(&self) -> (f64, f64) {
+        match self {
+            Self::Ldvm => (0.0, 0.0),
+            Self::Ns(_) => NS_WINDOW_SCATTER,
+        }
+    }
+
     /// Whether the model takes the section's deformation history (both
     /// do: the LDVM as its camber, the Navier–Stokes model as the plate's
     /// mid-line on a moving grid).
@@ -86,6 +100,22 @@ impl SectionFlowModel {
         true
     }
 }
+
+/// The relative standard deviation of the Navier–Stokes model's net
+/// thrust coefficient and net efficiency, each averaged over two strokes
+/// (the scored window), from window to window of one long run: the flow
+/// round the plate does not settle into a periodic one, as the vortices
+/// shed in earlier strokes meet the plate again where small differences
+/// put them (README, "The evaluation window").
+///
+/// Measured on the default section (4 % plate, 11 Hz, ±30°, Re 12,329;
+/// rigid; 384 × 240 nodes, Courant number 3), strokes 3 to 12 as five
+/// windows of two: CT 0.0692, 0.0641, 0.0666, 0.0701, 0.0702 (3.9 %);
+/// CP moves with CT, so the efficiency scatters far less, 0.0425,
+/// 0.0421, 0.0422, 0.0429, 0.0427 (0.76 %). The benchmark
+/// `viscous_section::ns_evaluation_window_scatter_benchmark` measures it
+/// again.
+pub const NS_WINDOW_SCATTER: (f64, f64) = (0.039, 0.0076);
 
 /// The Navier–Stokes model's thin plate and grid ([`ViscousSection`]'s
 /// fields for [`ViscousShape::Plate`]).

@@ -119,6 +119,11 @@ pub struct KinematicsSummary {
     pub proposed_2d: Option<SectionResult>,
     /// 2D evaluations reused from the cache.
     pub evaluations_reused: usize,
+    /// How far a candidate's combined objective had to exceed the
+    /// analysed design's to be chosen (the evaluations' scatter; 0 for
+    /// the LDVM and in runs recorded before it was).
+    #[serde(default)]
+    pub adoption_margin: f64,
     /// The 2D evaluations' flow model and what it left out of the section
     /// (None in runs recorded before it was: the LDVM).
     #[serde(default)]
@@ -291,6 +296,7 @@ impl KinematicsSummary {
             proposed: k.proposed,
             proposed_2d: k.proposed_2d,
             evaluations_reused: k.evaluations_reused,
+            adoption_margin: k.result.adoption_margin,
             section: k.result.section.clone(),
             seconds: r.seconds,
             run: r.run,

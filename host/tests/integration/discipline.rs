@@ -226,6 +226,8 @@ fn kinematic_discipline_beats_the_initial_design() {
             c.predicted
         );
     }
+    // The LDVM's flow repeats from stroke to stroke: no margin.
+    assert_eq!(result.adoption_margin, 0.0);
     let chosen = result.chosen.expect("a candidate beats the initial design");
     let confirmed = result.candidates[chosen].combined.unwrap();
     let direct = case

@@ -135,13 +135,15 @@ fn disciplines(s: &mut String, summary: &Summary) {
 /// The section model of each cycle's 2D evaluations, and what it left
 /// out (said, never silent: the Navier–Stokes model's rigid section).
 fn section_models(s: &mut String, summary: &Summary) {
-    let notes: Vec<(usize, &str)> = summary
+    let notes: Vec<(usize, &str, f64)> = summary
         .cycles
         .iter()
         .filter_map(|c| {
+            let a = c.aerodynamic.as_ref()?;
             Some((
                 c.cycle,
-                c.aerodynamic.as_ref()?.section.as_ref()?.note.as_str(),
+                a.section.as_ref()?.note.as_str(),
+                a.adoption_margin,
             ))
         })
         .collect();
@@ -154,8 +156,17 @@ fn section_models(s: &mut String, summary: &Summary) {
 The 2D section model of each cycle's evaluations:
 "
     );
-    for (cycle, note) in notes {
-        let _ = writeln!(s, "- cycle {cycle}: {note}");
+    for (cycle, note, margin) in notes {
+        let _ = write!(s, "- cycle {cycle}: {note}");
+        if margin > 0.0 {
+            let _ = write!(
+                s,
+                "; a candidate had to beat the analysed design's combined objective by \
+                 {margin:.3}, the scatter of two runs (the flow does not repeat from stroke to \
+                 stroke)"
+            );
+        }
+        let _ = writeln!(s);
     }
 }
 
