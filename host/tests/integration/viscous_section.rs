@@ -703,8 +703,9 @@ fn pitch_as_contours_gap(around: usize, radial: usize) -> [f64; 3] {
 /// last two of four), the relative standard deviation of the windows' CT
 /// and efficiency `CT / CP` (sample, n - 1). The declared scatter must be
 /// the measured one within 10 %: a change to the solver that moves it
-/// shows here. Measured: CT 3.9 %, efficiency 0.76 % (211 s in a slow
-/// hour; the same 12 strokes took 87 s on a normal one).
+/// shows here. Measured: CT 3.92 %, efficiency 0.79 % (666 s, sharing
+/// the machine with a design run; alone, the same 12 strokes took 211 s
+/// in a slow hour and 87 s in a normal one).
 #[test]
 #[ignore = "benchmark (about 90 s; 210 s in a slow hour)"]
 fn ns_evaluation_window_scatter_benchmark() {
