@@ -34,9 +34,9 @@
 //! own scatter ([`KinematicResult::adoption_margin`]: zero for the LDVM,
 //! whose flow repeats from stroke to stroke; for the Navier–Stokes model,
 //! whose flow does not, one standard deviation of the difference of two
-//! runs). Without that margin the Navier–Stokes design moved, cycle after
-//! cycle, among designs whose scores differed by less than a run's
-//! scatter, and never converged (docs/ns-design).
+//! runs). Without it, the earlier Navier–Stokes design runs moved, cycle
+//! after cycle, among designs whose scores differed by less than a run's
+//! scatter (docs/ns-design).
 //!
 //! Feasibility: every candidate is judged by a [`Violation`] closure (the
 //! design's actuator model, analytic: the caller builds it, this room

@@ -106,7 +106,7 @@ impl SectionFlowModel {
 /// (the scored window), from window to window of one long run: the flow
 /// round the plate does not settle into a periodic one, as the vortices
 /// shed in earlier strokes meet the plate again where small differences
-/// put them (README, "The evaluation window").
+/// put them (README, "The evaluation's window").
 ///
 /// Measured on the default section (4 % plate, 11 Hz, ±30°, Re 12,329;
 /// rigid; 384 × 240 nodes, Courant number 3), strokes 3 to 12 as five
