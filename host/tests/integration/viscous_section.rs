@@ -707,7 +707,7 @@ fn pitch_as_contours_gap(around: usize, radial: usize) -> [f64; 3] {
 /// the machine with a design run; alone, the same 12 strokes took 211 s
 /// in a slow hour and 87 s in a normal one).
 #[test]
-#[ignore = "benchmark (about 90 s; 210 s in a slow hour)"]
+#[ignore = "benchmark (about 90 s; 210 s in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture viscous_section::ns_evaluation_window_scatter_benchmark`"]
 fn ns_evaluation_window_scatter_benchmark() {
     use fwav::discipline::section_model::NS_WINDOW_SCATTER;
     let section = ViscousSection::plate(0.04);
