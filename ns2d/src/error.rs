@@ -166,4 +166,15 @@ pub enum NsError {
         /// The time step used.
         dt: f64,
     },
+    /// A flow continued on a grid of another section
+    /// ([`crate::Flow::continue_from`]).
+    #[error(
+        "the flow to continue is round another section or grid extent (its wall or outer boundary \
+         is {distance:.3e} from this grid's): continue a flow only on a grid of the same section, \
+         outer radius and time"
+    )]
+    OtherSection {
+        /// The largest distance between the two grids' compared nodes.
+        distance: f64,
+    },
 }

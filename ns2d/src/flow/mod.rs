@@ -94,6 +94,7 @@
 mod advection;
 mod deforming;
 mod loads;
+mod regrid;
 mod sweeps;
 mod wall_influence;
 
