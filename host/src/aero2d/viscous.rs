@@ -26,6 +26,25 @@
 //! matrix (4 ms on the default grid). The loads are sampled at a fixed interval by
 //! linear interpolation between steps, so the cycle means of
 //! [`super::history`] see uniform samples.
+//!
+//! A periodic run may spin up ([`ViscousSection::spin_up_periods`]): its
+//! first periods, which only bring the flow to its state and are not
+//! scored, run on a grid [`SPIN_UP_COARSENING`] times coarser each way
+//! ([`ViscousSection::spin_up_grid`]), and the flow is then carried over
+//! to the full grid ([`fwav_ns2d::Flow::continue_from`]: the vorticity
+//! interpolated, the wall layer rebuilt by the first steps). A spin-up
+//! period costs about a quarter of a full one (the default FWAV section,
+//! rigid, in a slow hour: 5.2 s a period on 256 × 160 nodes, 19.5 s on
+//! 384 × 240; fewer cells and longer steps). It keeps an attached,
+//! periodic flow (a plunging plate's loads a period after the hand-over
+//! within 0.2 % of the full run's), but not the default FWAV section's:
+//! spun up through the two strokes before the aerodynamic discipline's
+//! scored window, the window's CT moved by 13 % RMS over the L18 rows,
+//! against the 2–3 % the full grid's own windows scatter by, as the full
+//! grid's flow carries a slowly decaying mean lift from its start that
+//! the coarse grid's loses (docs/ns-design, "The spin-up"). So the
+//! discipline does not spin up
+//! ([`crate::discipline::section_model::ViscousPlate::spin_up`]).
 
 use fwav_ns2d::{Complex64, Contour, Deformation, Flow, FrameState, GridSpec, NsError, SectionMap};
 
@@ -45,6 +64,10 @@ const PICTURE_CELLS: usize = 20_000;
 
 /// Radius, chords about the pivot, of the vorticity picture.
 const PICTURE_RADIUS: f64 = 6.0;
+
+/// How much coarser the spin-up's grid is each way
+/// ([`ViscousSection::spin_up_grid`]): 384 × 240 becomes 256 × 160.
+pub const SPIN_UP_COARSENING: f64 = 1.5;
 
 /// Steps a run may take before it is refused as beyond this machine.
 pub const MAX_VISCOUS_STEPS: usize = 2_000_000;
@@ -105,6 +128,13 @@ pub struct ViscousSection {
     /// (the advection is implicit where it exceeds ½, so any is stable;
     /// accuracy sets it: see [`ViscousSection::DEFAULT_COURANT`]).
     pub courant: f64,
+    /// Periods of the motion run first on a grid half as fine each way
+    /// ([`Self::spin_up_grid`]), the flow then carried over to this grid
+    /// ([`fwav_ns2d::Flow::continue_from`]): the strokes that only bring
+    /// a periodic flow to its state, at about a quarter of the cost; 0
+    /// for none (the default of [`Self::new`]; module docs: it does not
+    /// keep the default FWAV section's scores).
+    pub spin_up_periods: f64,
 }
 
 /// Thickness, chords, to which a sharp trailing edge (a NACA section's, a
@@ -142,7 +172,6 @@ impl ViscousSection {
     /// (`viscous_section::default_section_four_cycles_benchmark` with
     /// `FWAV_NS_CYCLES=1 FWAV_NS_COURANT=...`.)
     pub const DEFAULT_COURANT: f64 = 3.0;
-
     /// The default resolution round `shape`: 384 nodes round, 240 out to
     /// 30 chords, first cell a tenth of the boundary layer's thickness.
     /// Chosen on the default FWAV section's first stroke (Courant number
@@ -174,6 +203,7 @@ impl ViscousSection {
             outer_chords: 30.0,
             first_cell_layers: 0.1,
             courant: Self::DEFAULT_COURANT,
+            spin_up_periods: 0.0,
         }
     }
 
@@ -322,6 +352,18 @@ pub enum ViscousError {
         /// What the solver found.
         source: NsError,
     },
+    /// A spin-up on a motion without a period, or not shorter than the
+    /// run.
+    #[error(
+        "a spin-up of {periods} periods for a run of {run:.3} periods: the spin-up is counted in \
+         periods of a periodic motion and must end before the run does; shorten it or set it to 0"
+    )]
+    SpinUp {
+        /// The spin-up asked for.
+        periods: f64,
+        /// The run's length in periods (0 without a period).
+        run: f64,
+    },
     /// The stable time step keeps falling: the run would take too long.
     #[error(
         "the stable time step fell to {dt:.2e} chords travelled at t = {time:.3} \
@@ -351,8 +393,10 @@ pub struct ViscousRun {
     pub sample: f64,
     /// The smallest time step taken, chords travelled.
     pub dt: f64,
-    /// Time steps taken.
+    /// Time steps taken (the spin-up's included).
     pub steps: usize,
+    /// Of which on the spin-up's grid ([`ViscousSection::spin_up_grid`]).
+    pub spin_up_steps: usize,
     /// The grid's cells near the section as point vortices (their
     /// circulation), global frame, for a picture.
     pub vorticity: Vec<FreeVortex>,
@@ -488,7 +532,8 @@ fn coefficients<M: fwav_ns2d::Motion>(flow: &Flow<M>) -> [f64; 3] {
 impl ViscousSection {
     /// Runs `path` at `reynolds` for `duration` chords travelled,
     /// sampling the loads every `period / 200` (or `duration / 2000`
-    /// without a period).
+    /// without a period); the first [`Self::spin_up_periods`] on a grid
+    /// [`SPIN_UP_COARSENING`] times coarser each way ([`Self::spin_up_grid`]).
     ///
     /// Cost: measured 15 to 23 ns per cell per step (wall time, both
     /// cores of this 2-core machine, whose speed varies) on the default
@@ -499,16 +544,19 @@ impl ViscousSection {
     ///
     /// # Errors
     /// [`ViscousError`]: a bad thickness, the solver's, a time step that
-    /// keeps falling.
+    /// keeps falling, a spin-up as long as the run.
     pub fn run(
         &self,
         path: SectionPath,
         reynolds: f64,
         duration: f64,
     ) -> Result<ViscousRun, ViscousError> {
-        let map = self.map(path.pivot())?;
-        let spec = self.grid(&map, reynolds);
-        self.run_flow(Flow::new(&map, spec, path, 1.0 / reynolds)?, path, duration)
+        let build = |section: &Self| -> Result<Flow<SectionPath>, ViscousError> {
+            let map = section.map(path.pivot())?;
+            let spec = section.grid(&map, reynolds);
+            Ok(Flow::new(&map, spec, path, 1.0 / reynolds)?)
+        };
+        self.run_flows(build, path, duration)
     }
 
     /// [`Self::run`] with the section deforming through `samples` over
@@ -539,66 +587,171 @@ impl ViscousSection {
         if k.is_nan() || k <= 0.0 {
             return Err(ViscousError::DeformingWithoutPeriod);
         }
-        let deformation = self.deformation(path.pivot(), samples, std::f64::consts::PI / k)?;
-        let spec = self.grid(&deformation.map_at(0.0), reynolds);
-        let flow = Flow::deforming(deformation, spec, path, 1.0 / reynolds)?;
-        self.run_flow(flow, path, duration)
+        let period = std::f64::consts::PI / k;
+        let build = |section: &Self| -> Result<Flow<SectionPath>, ViscousError> {
+            let deformation = section.deformation(path.pivot(), samples, period)?;
+            let spec = section.grid(&deformation.map_at(0.0), reynolds);
+            Ok(Flow::deforming(deformation, spec, path, 1.0 / reynolds)?)
+        };
+        self.run_flows(build, path, duration)
     }
 
-    /// Steps `flow` of `path` to `duration`, sampling its loads.
-    fn run_flow(
+    /// The grid of the spin-up ([`Self::spin_up_periods`]): its cells
+    /// [`SPIN_UP_COARSENING`] times this grid's each way (the node
+    /// counts divided by it, kept even and at least 16; the first cell
+    /// that much higher); the section's map has half as many terms as
+    /// nodes round, as every grid's.
+    pub fn spin_up_grid(&self) -> Self {
+        let fewer = |n: usize| ((n as f64 / SPIN_UP_COARSENING / 2.0).round() as usize * 2).max(16);
+        Self {
+            around: fewer(self.around),
+            radial: fewer(self.radial),
+            first_cell_layers: SPIN_UP_COARSENING * self.first_cell_layers,
+            spin_up_periods: 0.0,
+            ..self.clone()
+        }
+    }
+
+    /// Steps the flows `build` makes of this section (and of its
+    /// spin-up grid first, when it has one) through `path` to
+    /// `duration`, sampling their loads.
+    fn run_flows(
         &self,
-        mut flow: Flow<SectionPath>,
+        build: impl Fn(&Self) -> Result<Flow<SectionPath>, ViscousError>,
         path: SectionPath,
         duration: f64,
     ) -> Result<ViscousRun, ViscousError> {
+        let mut march = March::new(&path, duration);
+        let spin_up = self.spin_up_time(&path, duration)?;
+        let mut flow = match spin_up {
+            Some(until) => {
+                let mut coarse = build(&self.spin_up_grid())?;
+                march.to(&mut coarse, &path, until, self.courant, duration)?;
+                march.spin_up_steps = march.steps;
+                let mut fine = build(self)?;
+                fine.continue_from(&coarse)?;
+                fine
+            }
+            None => build(self)?,
+        };
+        march.to(&mut flow, &path, duration, self.courant, duration)?;
+        let (vorticity, body) = picture(&flow, &path);
+        Ok(ViscousRun {
+            history: march.history,
+            sample: march.sample,
+            dt: march.smallest,
+            steps: march.steps,
+            spin_up_steps: march.spin_up_steps,
+            vorticity,
+            body,
+        })
+    }
+
+    /// When the spin-up ends (chords travelled), if the section has one.
+    ///
+    /// # Errors
+    /// [`ViscousError::SpinUp`] for a spin-up on a path without a period,
+    /// or not shorter than the run.
+    fn spin_up_time(&self, path: &SectionPath, duration: f64) -> Result<Option<f64>, ViscousError> {
+        let periods = self.spin_up_periods;
+        if periods == 0.0 {
+            return Ok(None);
+        }
+        let k = path.reduced_frequency();
+        let until = periods * std::f64::consts::PI / k;
+        if !(periods > 0.0 && k > 0.0 && until < duration) {
+            return Err(ViscousError::SpinUp {
+                periods,
+                run: duration * k / std::f64::consts::PI,
+            });
+        }
+        Ok(Some(until))
+    }
+}
+
+/// The sampling of a run's loads as its flows step ([`March::to`]).
+struct March {
+    sample: f64,
+    history: History,
+    /// The next sample's time.
+    next: f64,
+    steps: usize,
+    spin_up_steps: usize,
+    smallest: f64,
+}
+
+impl March {
+    /// Samples every `period / 200` of `path` (or `duration / 2000`
+    /// without a period), from the first.
+    fn new(path: &SectionPath, duration: f64) -> Self {
         let k = path.reduced_frequency();
         let sample = if k > 0.0 {
             std::f64::consts::PI / k / SAMPLES_PER_PERIOD
         } else {
             duration / 2000.0
         };
-        let first = (self.courant * flow.stable_dt(1.0) / path.peak_speed_ratio()).min(sample);
-        let mut control = StepControl::new(first, sample, self.courant);
-        let mut smallest = first;
-        let mut history = History::default();
-        let mut steps = 0;
-        let mut next = sample;
-        let end = duration + 1e-9 * sample;
-        while next <= end {
-            if steps % CHECK_EVERY == 0 && steps > 0 {
-                control.adjust(&flow, duration, steps)?;
+        Self {
+            sample,
+            history: History::default(),
+            next: sample,
+            steps: 0,
+            spin_up_steps: 0,
+            smallest: f64::INFINITY,
+        }
+    }
+
+    /// Steps `flow` through the samples up to `until` (the step that
+    /// reaches the last of them ends it) at steps of Courant number
+    /// `courant`; `duration` is the whole run's, for the step count's
+    /// check.
+    fn to(
+        &mut self,
+        flow: &mut Flow<SectionPath>,
+        path: &SectionPath,
+        until: f64,
+        courant: f64,
+        duration: f64,
+    ) -> Result<(), ViscousError> {
+        let sample = self.sample;
+        // A flow at rest: its step from the path's fastest edge; a flow
+        // continued from another grid's: from its own.
+        let speed_ratio = if flow.time() == 0.0 {
+            path.peak_speed_ratio()
+        } else {
+            1.0
+        };
+        let first = (courant * flow.stable_dt(1.0) / speed_ratio).min(sample);
+        let mut control = StepControl::new(first, sample, courant);
+        let end = until + 1e-9 * sample;
+        let mut taken = 0;
+        while self.next <= end {
+            if taken % CHECK_EVERY == 0 && taken > 0 {
+                control.adjust(flow, duration, self.steps)?;
             }
             let dt = control.dt();
-            smallest = smallest.min(dt);
+            self.smallest = self.smallest.min(dt);
             // The loads (a pass round the wall) only either side of a
             // step that crosses a sample time.
             let before =
-                (flow.time() + dt >= next - 1e-12).then(|| (flow.time(), coefficients(&flow)));
+                (flow.time() + dt >= self.next - 1e-12).then(|| (flow.time(), coefficients(flow)));
             flow.step(dt)?;
-            steps += 1;
+            self.steps += 1;
+            taken += 1;
             let Some(before) = before else { continue };
-            let now = (flow.time(), coefficients(&flow));
-            while next <= now.0 + 1e-12 && next <= end {
-                let w = (next - before.0) / (now.0 - before.0);
+            let now = (flow.time(), coefficients(flow));
+            let history = &mut self.history;
+            while self.next <= now.0 + 1e-12 && self.next <= end {
+                let w = (self.next - before.0) / (now.0 - before.0);
                 let at = |i: usize| before.1[i] + w * (now.1[i] - before.1[i]);
-                history.time.push(next);
+                history.time.push(self.next);
                 history.cl.push(at(0));
                 history.ct.push(at(1));
                 history.cp.push(at(2));
                 history.cd_friction.push(0.0);
-                next += sample;
+                self.next += sample;
             }
         }
-        let (vorticity, body) = picture(&flow, &path);
-        Ok(ViscousRun {
-            history,
-            sample,
-            dt: smallest,
-            steps,
-            vorticity,
-            body,
-        })
+        Ok(())
     }
 }
 

@@ -263,6 +263,19 @@ impl SectionCase {
         &self,
         kinematics: &FlappingKinematics,
     ) -> Result<SectionResult, EvaluationError> {
+        let (history, k) = self.history(kinematics)?;
+        summarize(&history, std::f64::consts::PI / k, k)
+    }
+
+    /// The loads' history of the analysis [`Self::evaluate`] summarizes,
+    /// `cycles` periods sampled uniformly, and the reduced frequency.
+    ///
+    /// # Errors
+    /// As [`Self::evaluate`].
+    pub fn history(
+        &self,
+        kinematics: &FlappingKinematics,
+    ) -> Result<(History, f64), EvaluationError> {
         let flapping = self.flapping(kinematics)?;
         let k = flapping.reduced_frequency;
         let period = std::f64::consts::PI / k;
@@ -271,7 +284,7 @@ impl SectionCase {
             SectionFlowModel::Ns(plate) => {
                 let (path, duration) =
                     (SectionPath::Flapping(flapping), self.cycles as f64 * period);
-                let section = plate.section();
+                let section = plate.section(self.cycles);
                 let run = if self.deformation.is_empty() {
                     section.run(path, self.reynolds(), duration)?
                 } else {
@@ -280,7 +293,7 @@ impl SectionCase {
                 run.history
             }
         };
-        summarize(&history, period, k)
+        Ok((history, k))
     }
 
     /// The section's motion when the wing flaps by `kinematics`, once

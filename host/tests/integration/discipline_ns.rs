@@ -22,6 +22,7 @@ fn coarse_plate() -> ViscousPlate {
         outer_chords: 15.0,
         first_cell_layers: 0.2,
         courant: fwav::aero2d::viscous::ViscousSection::DEFAULT_COURANT,
+        spin_up: false,
     }
 }
 
@@ -34,8 +35,9 @@ fn ns_case(plate: ViscousPlate) -> SectionCase {
 }
 
 /// `section_model` reads "ldvm" (the default) or "ns", with the plate's
-/// thickness at the default resolution; `fwav init`'s template writes
-/// both keys with their docs.
+/// thickness at the default resolution and no spin-up (a plate given
+/// one spins up through the strokes before the scored last two);
+/// `fwav init`'s template writes both keys with their docs.
 #[test]
 fn section_model_setting_chooses_the_model() {
     let default = SystemConfig::from_toml("").unwrap();
@@ -52,9 +54,16 @@ fn section_model_setting_chooses_the_model() {
         panic!("not the NS model");
     };
     assert_eq!(
-        (plate.thickness, plate.around, plate.radial),
-        (0.1, 384, 240)
+        (plate.thickness, plate.around, plate.radial, plate.spin_up),
+        (0.1, 384, 240, false)
     );
+    assert_eq!(plate.section(4).spin_up_periods, 0.0);
+    let spun = ViscousPlate {
+        spin_up: true,
+        ..plate
+    };
+    assert_eq!(spun.section(4).spin_up_periods, 2.0);
+    assert_eq!(spun.section(6).spin_up_periods, 4.0);
     let template = commented_toml(&SystemConfig::default()).unwrap();
     assert!(
         template.contains("section_model = \"ldvm\"\n"),
@@ -520,6 +529,19 @@ fn ns_discipline_benchmark() {
         cache.len(),
         result.chosen.map(|i| &result.candidates[i].method)
     );
+    // Each row's scores, to set beside docs/ns-design's listing.
+    for (row, run) in result.runs.iter().enumerate() {
+        if let Ok(r) = &run.result {
+            println!(
+                "row {}: {:?}: CT {:.4}, CP {:.4}, efficiency {:.4}",
+                row + 1,
+                run.design.degrees(),
+                r.ct,
+                r.cp,
+                r.efficiency
+            );
+        }
+    }
     assert!(result.runs.iter().all(|e| e.result.is_ok()));
     assert!(seconds < 600.0, "{seconds:.1} s against the issue's 600 s");
 }
@@ -561,4 +583,141 @@ fn ns_deforming_evaluation_benchmark() {
         );
     }
     assert!(seconds[1] < 60.0, "the issue's 60 s: {:.1} s", seconds[1]);
+}
+
+/// How much the Navier–Stokes scores of the deforming default section
+/// scatter from window to window (`section_model::NS_WINDOW_SCATTER`
+/// takes its efficiency's): 12 strokes on the full grid (no spin-up),
+/// deforming as the default design's first system analysis found, at the
+/// built-in initial kinematics (or `FWAV_NS_DESIGN="13,20,0,110"`: Hz and
+/// degrees), strokes 3 to 12 as five windows of two, each as the
+/// discipline scores its window (mean CT, mean CT over mean CP). This is
+/// what two evaluations of one design may differ by, whatever brought
+/// the flow to its window. Measured (2026-12-03, slow hour): at the
+/// initial kinematics CT 0.0859, 0.0849, 0.0849, 0.0868, 0.0822 (2.0 %),
+/// efficiency 0.0341, 0.0340, 0.0340, 0.0346, 0.0330 (1.8 %), 461 s; at
+/// 13 Hz, ±20°, plane 110° CT 0.0795, 0.0814, 0.0819, 0.0848, 0.0848
+/// (2.8 %), efficiency 0.0531, 0.0542, 0.0536, 0.0543, 0.0544 (1.1 %),
+/// 335 s.
+#[test]
+#[ignore = "benchmark (about 6 min in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_deforming_window_scatter_benchmark`"]
+fn ns_deforming_window_scatter_benchmark() {
+    use fwav::aeroelastic::handoff::section::SectionFile;
+    use fwav::discipline::section_model::NS_WINDOW_SCATTER;
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/fwav_cycle1_section.json");
+    let section = SectionFile::read(&path).unwrap();
+    let design = std::env::var("FWAV_NS_DESIGN").map_or(FlappingKinematics::INITIAL, |v| {
+        let x: Vec<f64> = v.split(',').map(|x| x.trim().parse().unwrap()).collect();
+        FlappingKinematics::from_degrees([x[0], x[1], x[2], x[3]])
+    });
+    let case = SectionCase {
+        deformation: section.samples,
+        cycles: 12,
+        model: SectionFlowModel::Ns(ViscousPlate {
+            spin_up: false,
+            ..ViscousPlate::new(0.04)
+        }),
+        ..SectionCase::fwav_mid_span()
+    };
+    let clock = std::time::Instant::now();
+    let (history, _) = case.history(&design).unwrap();
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    // 200 samples a period.
+    let windows: Vec<(f64, f64)> = history
+        .ct
+        .chunks(400)
+        .zip(history.cp.chunks(400))
+        .skip(1)
+        .map(|(ct, cp)| (mean(ct), mean(ct) / mean(cp)))
+        .collect();
+    assert_eq!(windows.len(), 5, "five windows of two strokes");
+    let relative_deviation = |values: Vec<f64>| {
+        let m = mean(&values);
+        let variance =
+            values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / (values.len() - 1) as f64;
+        variance.sqrt() / m
+    };
+    let thrust = relative_deviation(windows.iter().map(|w| w.0).collect());
+    let efficiency = relative_deviation(windows.iter().map(|w| w.1).collect());
+    println!(
+        "{:?}: windows (CT, efficiency): {windows:.4?}; relative deviation: CT {thrust:.4}, \
+         efficiency {efficiency:.4}; {:.0} s",
+        design.degrees(),
+        clock.elapsed().as_secs_f64()
+    );
+    // The declared efficiency scatter is this section's at the initial
+    // kinematics; the thrust's the rigid section's, larger
+    // (`viscous_section::ns_evaluation_window_scatter_benchmark`).
+    if design == FlappingKinematics::INITIAL {
+        assert!(
+            (NS_WINDOW_SCATTER.1 / efficiency - 1.0).abs() < 0.1,
+            "declared {:.4}, measured {efficiency:.4}",
+            NS_WINDOW_SCATTER.1
+        );
+        assert!(
+            thrust < NS_WINDOW_SCATTER.0,
+            "declared {:.4}, measured {thrust:.4}",
+            NS_WINDOW_SCATTER.0
+        );
+    }
+}
+
+/// The spin-up (`ViscousPlate::spin_up`: the two strokes before the
+/// scored window on 256 x 160 nodes) against the full grid throughout, on
+/// the deforming default section at the built-in initial kinematics: the
+/// window's CT and efficiency within 3 % (the issue's convergence
+/// figure; the full grid's own windows scatter 2.0 % and 1.8 %,
+/// `ns_deforming_window_scatter_benchmark`).
+///
+/// Fails: CT 0.0712 against 0.0859 (-17 %), efficiency 0.0286 against
+/// 0.0341 (-16 %), 75 s against 126 s. The full grid's flow still
+/// carries a mean lift from its start into the window (stroke means
+/// +0.81, +0.39, +0.22, +0.19); the spin-up grid's loses it within a
+/// stroke (+0.95, +0.03, then +0.02, +0.04 on the full grid), and the
+/// window differs. Over the 18 rows of the L18 array the spin-up moved
+/// CT by 13 % RMS (up to 29 %) with no mean shift (docs/ns-design, "The
+/// spin-up"), so it stays off.
+#[test]
+#[ignore = "fails (CT -17 %, efficiency -16 % against the full grid's window; docs/ns-design, \"The spin-up\"), and heavy (about 3 min): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::a_spin_up_keeps_the_deforming_window_scores`"]
+fn a_spin_up_keeps_the_deforming_window_scores() {
+    use fwav::aeroelastic::handoff::section::SectionFile;
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/fwav_cycle1_section.json");
+    let section = SectionFile::read(&path).unwrap();
+    let full = SectionCase {
+        deformation: section.samples,
+        ..ns_case(ViscousPlate::new(0.04))
+    };
+    let spun = SectionCase {
+        model: SectionFlowModel::Ns(ViscousPlate {
+            spin_up: true,
+            ..ViscousPlate::new(0.04)
+        }),
+        ..full.clone()
+    };
+    let design = FlappingKinematics::INITIAL;
+    let mut results = Vec::new();
+    for (name, case) in [("full grid", &full), ("spun up", &spun)] {
+        let clock = std::time::Instant::now();
+        let r = case.evaluate(&design).unwrap();
+        println!(
+            "{name}: {:.1} s, CT {:.4}, CP {:.4}, efficiency {:.4}",
+            clock.elapsed().as_secs_f64(),
+            r.ct,
+            r.cp,
+            r.efficiency
+        );
+        results.push(r);
+    }
+    let (f, s) = (&results[0], &results[1]);
+    for (what, spun, full) in [
+        ("CT", s.ct, f.ct),
+        ("efficiency", s.efficiency, f.efficiency),
+    ] {
+        assert!(
+            (spun / full - 1.0).abs() < 0.03,
+            "{what}: spun up {spun:.4}, full grid {full:.4}"
+        );
+    }
 }

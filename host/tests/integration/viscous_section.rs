@@ -21,6 +21,7 @@ fn coarse_plate() -> ViscousSection {
         outer_chords: 15.0,
         first_cell_layers: 0.2,
         courant: ViscousSection::DEFAULT_COURANT,
+        spin_up_periods: 0.0,
     }
 }
 
@@ -32,6 +33,85 @@ fn case(section: SectionModel, motion: Motion, reynolds: f64) -> Case {
         lesp_critical: None,
         reynolds,
         deformation: None,
+    }
+}
+
+/// The spin-up (`ViscousSection::spin_up_periods`): the coarse plate
+/// plunging as below (k = 1, h = 0.25, Re 1000; an attached, periodic
+/// flow) for three periods, the first on the spin-up grid 1.5 times
+/// coarser each way (42 x 42 nodes), the rest on its own:
+/// - the loads are sampled as in a run without one (600 uniform samples),
+///   the steps counted on each grid;
+/// - from the period after the switch on, the flow is the full grid's:
+///   the third period's mean CT and CP within 1 % of the full run's
+///   (measured: see the output). A transfer that lost the wake's
+///   circulation or the wall's layer would show here: the spin-up grid's
+///   own third period is off by more (printed beside).
+///
+/// A spin-up not shorter than the run, or on a motion without a period,
+/// is refused with what to change.
+#[test]
+fn a_spin_up_on_a_coarser_grid_hands_over_to_the_full_grid() {
+    let (k, h0, re) = (1.0, 0.25, 1000.0);
+    let path = SectionPath::Harmonic(Motion::plunge(k, h0));
+    let period = PI / k;
+    let full = coarse_plate();
+    let spun = ViscousSection {
+        spin_up_periods: 1.0,
+        ..full.clone()
+    };
+    let clock = std::time::Instant::now();
+    let reference = full.run(path, re, 3.0 * period).unwrap();
+    let run = spun.run(path, re, 3.0 * period).unwrap();
+    let coarse = full.spin_up_grid().run(path, re, 3.0 * period).unwrap();
+    let h = &run.history;
+    assert_eq!(h.time.len(), 600);
+    assert!((h.time[599] - 3.0 * period).abs() < 1e-9);
+    assert!(run.spin_up_steps > 0 && run.spin_up_steps < run.steps);
+    assert!(h.ct.iter().chain(&h.cp).chain(&h.cl).all(|v| v.is_finite()));
+    let mean = |v: &[f64]| v[400..].iter().sum::<f64>() / 200.0;
+    let change = |a: &[f64], b: &[f64]| mean(a) / mean(b) - 1.0;
+    let r = &reference.history;
+    let c = &coarse.history;
+    println!(
+        "third period, spun up against full: CT {:.5} vs {:.5} ({:+.2} %), CP {:.5} vs {:.5} \
+         ({:+.2} %); the spin-up grid's own: CT {:+.2} %, CP {:+.2} %; steps {} of {} on the \
+         spin-up grid; {:.1} s for the three runs",
+        mean(&h.ct),
+        mean(&r.ct),
+        100.0 * change(&h.ct, &r.ct),
+        mean(&h.cp),
+        mean(&r.cp),
+        100.0 * change(&h.cp, &r.cp),
+        100.0 * change(&c.ct, &r.ct),
+        100.0 * change(&c.cp, &r.cp),
+        run.spin_up_steps,
+        run.steps,
+        clock.elapsed().as_secs_f64()
+    );
+    assert!(change(&h.ct, &r.ct).abs() < 0.01);
+    assert!(change(&h.cp, &r.cp).abs() < 0.01);
+    for (spin_up_periods, ramp) in [(3.0, false), (1.0, true)] {
+        let path = if ramp {
+            SectionPath::Ramp {
+                pivot: 0.25,
+                ramp: fwav::aero2d::motion::PitchRamp {
+                    amplitude: 0.4,
+                    pitch_rate: 0.2,
+                    smoothing: 11.0,
+                    start: 1.0,
+                },
+            }
+        } else {
+            path
+        };
+        let section = ViscousSection {
+            spin_up_periods,
+            ..full.clone()
+        };
+        let error = section.run(path, re, 3.0 * period).unwrap_err();
+        assert!(matches!(error, ViscousError::SpinUp { .. }), "{error}");
+        assert!(error.to_string().contains("set it to 0"), "{error}");
     }
 }
 
@@ -400,6 +480,8 @@ fn default_section_four_cycles_benchmark() {
             .map_or(plate.first_cell_layers, |v| v.parse().unwrap()),
         outer_chords: std::env::var("FWAV_NS_OUTER")
             .map_or(plate.outer_chords, |v| v.parse().unwrap()),
+        spin_up_periods: std::env::var("FWAV_NS_SPIN_UP")
+            .map_or(plate.spin_up_periods, |v| v.parse().unwrap()),
         ..plate
     };
     let (reynolds, k) = fwav_mid_span_flow();
@@ -701,9 +783,10 @@ fn pitch_as_contours_gap(around: usize, radial: usize) -> [f64; 3] {
 /// section flapped for 12 strokes at the default resolution, strokes 3 to
 /// 12 cut into five windows of two strokes (the discipline scores the
 /// last two of four), the relative standard deviation of the windows' CT
-/// and efficiency `CT / CP` (sample, n - 1). The declared scatter must be
-/// the measured one within 10 %: a change to the solver that moves it
-/// shows here. Measured: CT 3.92 %, efficiency 0.79 % (666 s, sharing
+/// and efficiency `CT / CP` (sample, n - 1). The declared thrust scatter
+/// must be the measured one within 10 % (a change to the solver that
+/// moves it shows here); the efficiency's, the deforming section's, must
+/// be above this section's. Measured: CT 3.92 %, efficiency 0.79 % (666 s, sharing
 /// the machine with a design run; alone, the same 12 strokes took 211 s
 /// in a slow hour and 87 s in a normal one).
 #[test]
@@ -735,13 +818,17 @@ fn ns_evaluation_window_scatter_benchmark() {
         "windows (CT, efficiency): {windows:.4?}; relative deviation: CT {thrust:.4}, efficiency \
          {efficiency:.4}; declared {NS_WINDOW_SCATTER:?}"
     );
-    for (declared, measured) in [
-        (NS_WINDOW_SCATTER.0, thrust),
-        (NS_WINDOW_SCATTER.1, efficiency),
-    ] {
-        assert!(
-            (declared / measured - 1.0).abs() < 0.1,
-            "declared {declared:.4}, measured {measured:.4}"
-        );
-    }
+    // The declared thrust scatter is this section's; the efficiency's
+    // the deforming section's, larger
+    // (`discipline_ns::ns_deforming_window_scatter_benchmark`).
+    assert!(
+        (NS_WINDOW_SCATTER.0 / thrust - 1.0).abs() < 0.1,
+        "declared {:.4}, measured {thrust:.4}",
+        NS_WINDOW_SCATTER.0
+    );
+    assert!(
+        efficiency < NS_WINDOW_SCATTER.1,
+        "declared {:.4}, measured {efficiency:.4}",
+        NS_WINDOW_SCATTER.1
+    );
 }
