@@ -622,24 +622,8 @@ fn ns_deforming_window_scatter_benchmark() {
     };
     let clock = std::time::Instant::now();
     let (history, _) = case.history(&design).unwrap();
-    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
-    // 200 samples a period.
-    let windows: Vec<(f64, f64)> = history
-        .ct
-        .chunks(400)
-        .zip(history.cp.chunks(400))
-        .skip(1)
-        .map(|(ct, cp)| (mean(ct), mean(ct) / mean(cp)))
-        .collect();
-    assert_eq!(windows.len(), 5, "five windows of two strokes");
-    let relative_deviation = |values: Vec<f64>| {
-        let m = mean(&values);
-        let variance =
-            values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / (values.len() - 1) as f64;
-        variance.sqrt() / m
-    };
-    let thrust = relative_deviation(windows.iter().map(|w| w.0).collect());
-    let efficiency = relative_deviation(windows.iter().map(|w| w.1).collect());
+    let (windows, thrust, efficiency) =
+        crate::viscous_section::window_scatter(&history.ct, &history.cp);
     println!(
         "{:?}: windows (CT, efficiency): {windows:.4?}; relative deviation: CT {thrust:.4}, \
          efficiency {efficiency:.4}; {:.0} s",

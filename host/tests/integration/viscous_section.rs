@@ -777,6 +777,31 @@ fn pitch_as_contours_gap(around: usize, radial: usize) -> [f64; 3] {
     ]
 }
 
+/// Twelve strokes' loads (200 samples a stroke) cut, from the third
+/// stroke on, into five windows of two strokes, each as the aerodynamic
+/// discipline scores its window, `(mean CT, mean CT / mean CP)`; and the
+/// relative standard deviations (sample, n - 1) of the windows' CT and
+/// efficiency.
+pub(crate) fn window_scatter(ct: &[f64], cp: &[f64]) -> (Vec<(f64, f64)>, f64, f64) {
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let windows: Vec<(f64, f64)> = ct
+        .chunks(400)
+        .zip(cp.chunks(400))
+        .skip(1)
+        .map(|(ct, cp)| (mean(ct), mean(ct) / mean(cp)))
+        .collect();
+    assert_eq!(windows.len(), 5, "five windows of two strokes");
+    let relative_deviation = |values: Vec<f64>| {
+        let m = mean(&values);
+        let variance =
+            values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / (values.len() - 1) as f64;
+        variance.sqrt() / m
+    };
+    let thrust = relative_deviation(windows.iter().map(|w| w.0).collect());
+    let efficiency = relative_deviation(windows.iter().map(|w| w.1).collect());
+    (windows, thrust, efficiency)
+}
+
 /// The scatter of the Navier–Stokes evaluation's scored window
 /// ([`fwav::discipline::section_model::NS_WINDOW_SCATTER`], the margin a
 /// candidate must clear in the aerodynamic discipline): the default
@@ -795,25 +820,7 @@ fn ns_evaluation_window_scatter_benchmark() {
     use fwav::discipline::section_model::NS_WINDOW_SCATTER;
     let section = ViscousSection::plate(0.04);
     let run = fwav_mid_span_run(&section, 12.0);
-    // 200 samples a period.
-    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
-    let windows: Vec<(f64, f64)> = run
-        .history
-        .ct
-        .chunks(400)
-        .zip(run.history.cp.chunks(400))
-        .skip(1)
-        .map(|(ct, cp)| (mean(ct), mean(ct) / mean(cp)))
-        .collect();
-    assert_eq!(windows.len(), 5, "five windows of two strokes");
-    let relative_deviation = |values: Vec<f64>| {
-        let m = mean(&values);
-        let variance =
-            values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / (values.len() - 1) as f64;
-        variance.sqrt() / m
-    };
-    let thrust = relative_deviation(windows.iter().map(|w| w.0).collect());
-    let efficiency = relative_deviation(windows.iter().map(|w| w.1).collect());
+    let (windows, thrust, efficiency) = window_scatter(&run.history.ct, &run.history.cp);
     println!(
         "windows (CT, efficiency): {windows:.4?}; relative deviation: CT {thrust:.4}, efficiency \
          {efficiency:.4}; declared {NS_WINDOW_SCATTER:?}"

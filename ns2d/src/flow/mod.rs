@@ -688,10 +688,22 @@ enum Extent {
 /// first cell 0.01 in `ξ`, at kinematic viscosity `viscosity`.
 #[cfg(test)]
 fn small_ellipse_flow(viscosity: f64) -> Flow<crate::motion::SteadyStream> {
-    let map = SectionMap::ellipse(0.5, 0.1, (0.0, 0.0)).unwrap();
+    ellipse_flow(0.1, 64, 48, viscosity)
+}
+
+/// An ellipse of chord 1 and semi-axis `semi_y` across it in a steady
+/// stream, on `around` × `radial` nodes as [`small_ellipse_flow`]'s.
+#[cfg(test)]
+fn ellipse_flow(
+    semi_y: f64,
+    around: usize,
+    radial: usize,
+    viscosity: f64,
+) -> Flow<crate::motion::SteadyStream> {
+    let map = SectionMap::ellipse(0.5, semi_y, (0.0, 0.0)).unwrap();
     let spec = GridSpec {
-        around: 64,
-        radial: 48,
+        around,
+        radial,
         outer_radius: 20.0,
         first_cell: 0.01,
     };

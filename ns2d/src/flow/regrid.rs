@@ -141,26 +141,8 @@ fn bracket_in(nodes: &[f64], x: f64) -> Bracket {
 
 #[cfg(test)]
 mod tests {
+    use super::super::ellipse_flow;
     use super::*;
-    use crate::grid::GridSpec;
-    use crate::section_map::SectionMap;
-
-    /// The ellipse of `small_ellipse_flow` on a grid of `around` × `radial`.
-    fn ellipse_flow(around: usize, radial: usize) -> Flow<crate::motion::SteadyStream> {
-        let map = SectionMap::ellipse(0.5, 0.1, (0.0, 0.0)).unwrap();
-        let spec = GridSpec {
-            around,
-            radial,
-            outer_radius: 20.0,
-            first_cell: 0.01,
-        };
-        let stream = crate::motion::SteadyStream {
-            speed: 1.0,
-            kick_rate: 0.0,
-            kick_period: 1.0,
-        };
-        Flow::new(&map, spec, stream, 0.01).unwrap()
-    }
 
     /// A vorticity field that is bilinear in `(ξ, cos θ, sin θ)` is
     /// carried over as it is where the fine nodes fall on the coarse ones
@@ -168,7 +150,7 @@ mod tests {
     /// time and exited circulation; the wall ring is Thom's of the result.
     #[test]
     fn the_vorticity_carries_over_to_the_finer_grid() {
-        let mut coarse = ellipse_flow(32, 24);
+        let mut coarse = ellipse_flow(0.1, 32, 24, 0.01);
         let field = |xi: f64, theta: f64| (1.0 + xi) * theta.cos() * (-xi).exp();
         let g = coarse.grid.clone();
         for j in 1..g.nr {
@@ -178,7 +160,7 @@ mod tests {
         }
         coarse.time = 0.7;
         coarse.exited = 0.125;
-        let mut fine = ellipse_flow(64, 24);
+        let mut fine = ellipse_flow(0.1, 64, 24, 0.01);
         fine.continue_from(&coarse).unwrap();
         assert_eq!(fine.time(), 0.7);
         assert_eq!(fine.exited_circulation(), 0.125);
@@ -198,20 +180,8 @@ mod tests {
     /// the walls.
     #[test]
     fn another_section_is_refused() {
-        let coarse = ellipse_flow(32, 24);
-        let map = SectionMap::ellipse(0.5, 0.2, (0.0, 0.0)).unwrap();
-        let spec = GridSpec {
-            around: 64,
-            radial: 24,
-            outer_radius: 20.0,
-            first_cell: 0.01,
-        };
-        let stream = crate::motion::SteadyStream {
-            speed: 1.0,
-            kick_rate: 0.0,
-            kick_period: 1.0,
-        };
-        let mut other = Flow::new(&map, spec, stream, 0.01).unwrap();
+        let coarse = ellipse_flow(0.1, 32, 24, 0.01);
+        let mut other = ellipse_flow(0.2, 64, 24, 0.01);
         assert!(matches!(
             other.continue_from(&coarse),
             Err(NsError::OtherSection { distance }) if distance > 0.01
