@@ -128,8 +128,8 @@ pub struct ViscousSection {
     /// (the advection is implicit where it exceeds ½, so any is stable;
     /// accuracy sets it: see [`ViscousSection::DEFAULT_COURANT`]).
     pub courant: f64,
-    /// Periods of the motion run first on a grid half as fine each way
-    /// ([`Self::spin_up_grid`]), the flow then carried over to this grid
+    /// Periods of the motion run first on a grid [`SPIN_UP_COARSENING`]
+    /// times coarser each way ([`Self::spin_up_grid`]), the flow then carried over to this grid
     /// ([`fwav_ns2d::Flow::continue_from`]): the strokes that only bring
     /// a periodic flow to its state, at about a quarter of the cost; 0
     /// for none (the default of [`Self::new`]; module docs: it does not
@@ -671,12 +671,15 @@ impl ViscousSection {
 
 /// The sampling of a run's loads as its flows step ([`March::to`]).
 struct March {
+    /// The sampling interval, chords travelled, and the samples so far.
     sample: f64,
     history: History,
     /// The next sample's time.
     next: f64,
+    /// Steps taken, and of them on the spin-up's grid.
     steps: usize,
     spin_up_steps: usize,
+    /// The smallest step (or first step chosen), chords travelled.
     smallest: f64,
 }
 
@@ -721,6 +724,7 @@ impl March {
             1.0
         };
         let first = (courant * flow.stable_dt(1.0) / speed_ratio).min(sample);
+        self.smallest = self.smallest.min(first);
         let mut control = StepControl::new(first, sample, courant);
         let end = until + 1e-9 * sample;
         let mut taken = 0;
