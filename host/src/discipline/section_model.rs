@@ -184,7 +184,8 @@ impl ViscousPlate {
         if !self.spin_up {
             return String::new();
         }
-        let grid = self.section(4).spin_up_grid();
+        // The spin-up's grid does not depend on the run's length.
+        let grid = self.section(0).spin_up_grid();
         format!(
             "; the strokes before the scored window spun up on {} x {} nodes",
             grid.around, grid.radial
