@@ -167,7 +167,7 @@ impl ViscousSection {
     /// step start's velocity, before 2026-12-03, CT kept falling as the
     /// step was refined (0.0791, 0.0785, 0.0777, 0.0767, 0.0749 at 1.5,
     /// 1, 0.75, 0.5, 0.25) and the default was 1.5.
-    /// (`viscous_section::default_section_four_cycles_benchmark` with
+    /// (`viscous_default_section::default_section_four_cycles_benchmark` with
     /// `FWAV_NS_CYCLES=1 FWAV_NS_COURANT=...`.)
     pub const DEFAULT_COURANT: f64 = 3.0;
     /// The default resolution round `shape`: 384 nodes round, 240 out to

@@ -121,7 +121,7 @@ impl SectionFlowModel {
 /// less than its thrust; on the deforming one (the section of every
 /// design run: as the default design's first system analysis found) the
 /// two are closer. The benchmarks
-/// `viscous_section::ns_evaluation_window_scatter_benchmark` (rigid) and
+/// `viscous_default_section::ns_evaluation_window_scatter_benchmark` (rigid) and
 /// `discipline_ns::ns_deforming_window_scatter_benchmark` measure them
 /// again. Until 2026-12-03 the efficiency's was the rigid 0.79 %.
 pub const NS_WINDOW_SCATTER: (f64, f64) = (0.039, 0.018);

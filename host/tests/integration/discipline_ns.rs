@@ -623,7 +623,7 @@ fn ns_deforming_window_scatter_benchmark() {
     let clock = std::time::Instant::now();
     let (history, _) = case.history(&design).unwrap();
     let (windows, thrust, efficiency) =
-        crate::viscous_section::window_scatter(&history.ct, &history.cp);
+        crate::viscous_default_section::window_scatter(&history.ct, &history.cp);
     println!(
         "{:?}: windows (CT, efficiency): {windows:.4?}; relative deviation: CT {thrust:.4}, \
          efficiency {efficiency:.4}; {:.0} s",
@@ -632,7 +632,7 @@ fn ns_deforming_window_scatter_benchmark() {
     );
     // The declared efficiency scatter is this section's at the initial
     // kinematics; the thrust's the rigid section's, larger
-    // (`viscous_section::ns_evaluation_window_scatter_benchmark`).
+    // (`viscous_default_section::ns_evaluation_window_scatter_benchmark`).
     if design == FlappingKinematics::INITIAL {
         assert!(
             (NS_WINDOW_SCATTER.1 / efficiency - 1.0).abs() < 0.1,

@@ -27,4 +27,5 @@ mod study;
 mod topology;
 mod uvlm;
 mod validate;
+mod viscous_default_section;
 mod viscous_section;
