@@ -36,7 +36,7 @@
 //! interpolated, the wall layer rebuilt by the first steps). A spin-up
 //! period costs about a quarter of a full one (the default FWAV section,
 //! rigid, in a slow hour: 5.2 s a period on 256 × 160 nodes, 19.5 s on
-//! 384 × 240; fewer cells and longer steps). It keeps an attached,
+//! 384 × 240, the default then; fewer cells and longer steps). It keeps an attached,
 //! periodic flow (a plunging plate's loads a period after the hand-over
 //! within 0.2 % of the full run's), but not the default FWAV section's:
 //! spun up through the two strokes before the aerodynamic discipline's
@@ -63,7 +63,8 @@ const PICTURE_CELLS: usize = 20_000;
 const PICTURE_RADIUS: f64 = 6.0;
 
 /// How much coarser the spin-up's grid is each way
-/// ([`ViscousSection::spin_up_grid`]): 384 × 240 becomes 256 × 160.
+/// ([`ViscousSection::spin_up_grid`]): 384 × 320 becomes 256 × 213 (384 ×
+/// 240, the default when the spin-up was measured, 256 × 160).
 pub const SPIN_UP_COARSENING: f64 = 1.5;
 
 /// Steps a run may take before it is refused as beyond this machine.
@@ -170,23 +171,32 @@ impl ViscousSection {
     /// (`viscous_default_section::default_section_four_cycles_benchmark` with
     /// `FWAV_NS_CYCLES=1 FWAV_NS_COURANT=...`.)
     pub const DEFAULT_COURANT: f64 = 3.0;
-    /// The default resolution round `shape`: 384 nodes round, 240 out to
+    /// The default resolution round `shape`: 384 nodes round, 320 out to
     /// 30 chords, first cell a tenth of the boundary layer's thickness.
-    /// Chosen on the default FWAV section's first stroke (Courant number
-    /// 3, the step centred in time: [`Self::DEFAULT_COURANT`]). CT and CP:
+    /// Chosen on the default FWAV section (Courant number 3, the step
+    /// centred in time: [`Self::DEFAULT_COURANT`]). The first stroke's CT
+    /// and CP:
     ///
-    /// | grid | 160 rings | 240 rings | 320 rings |
-    /// | --- | --- | --- | --- |
-    /// | 384 round | 0.0733, 1.730 | **0.0758, 1.712** | 0.0779, 1.707 |
-    /// | 512 round | 0.0710, 1.701 | 0.0768, 1.709 | |
-    /// | 768 round | 0.0670, 1.683 | 0.0756, 1.705 | 0.0783, 1.702 |
+    /// | grid | 160 rings | 240 rings | 320 rings | 400 rings |
+    /// | --- | --- | --- | --- | --- |
+    /// | 384 round | 0.0733, 1.730 | 0.0758, 1.712 | **0.0779, 1.707** | 0.0784, 1.706 |
+    /// | 512 round | 0.0710, 1.701 | 0.0768, 1.709 | 0.0791, 1.706 | |
+    /// | 768 round | 0.0670, 1.683 | 0.0756, 1.705 | 0.0783, 1.702 | |
     ///
-    /// On 240 rings and more the nodes round are converged (512 and 768
-    /// round within 1.3 %); on 160 they are not (refining them lowers
-    /// CT by 9 %): the rings decide it, 240 to 320 moving CT 2.8 % and CP
-    /// 0.3 %. From 384 × 240 the step halved moves CT 2.0 % (0.0743) and
-    /// the wall's first cell halved 1.1 % (0.0750): the 3 % holds
-    /// for each. 256 round: 0.0917 on 160 rings.
+    /// On 240 rings and more the nodes round are converged (within 1.5 %);
+    /// the rings decide it. The first stroke alone had chosen 240 rings
+    /// (320 moved CT 2.8 %). But over 12 strokes the flow on
+    /// 240 rings never settles: its strokes wander by 4 % and their mean
+    /// over strokes 3 to 12 (CT 0.0680, efficiency 0.0425) moves 5.1 % and
+    /// 2.7 % with 320 rings, 3.6 % and 2.8 % with 512 round, where every
+    /// finer grid settles into one periodic flow within 1.6 % (the
+    /// README's "The long mean"; `viscous_default_section::the_long_mean_converges_with_the_resolution`).
+    /// On 384 × 320 the flow is periodic from the fourth stroke, and the
+    /// mean over strokes 3 to 12 (CT 0.0715, efficiency 0.0436) moves
+    /// −0.2 % and +0.2 % with 400 rings, −0.7 % and +1.1 % with 512
+    /// round, −1.6 % and −0.5 % with the step halved; the first stroke
+    /// +0.6 %, +1.5 % and −1.8 % in CT. It costs a third more than 240
+    /// rings. 256 round: 0.0917 on 160 and 240 rings.
     ///
     /// Until 2026-12-03 the default was 384 × 160 at Courant number 1.5,
     /// chosen when the step was first order in the velocity's change:
@@ -197,7 +207,7 @@ impl ViscousSection {
         Self {
             shape,
             around: 384,
-            radial: 240,
+            radial: 320,
             outer_chords: 30.0,
             first_cell_layers: 0.1,
             courant: Self::DEFAULT_COURANT,
@@ -447,7 +457,8 @@ impl ViscousSection {
     ///
     /// Cost: measured 15 to 23 ns per cell per step (wall time, both
     /// cores of this 2-core machine, whose speed varies) on the default
-    /// FWAV section, 384 × 240 cells; the number of steps is set by the
+    /// FWAV section, 384 × 240 cells (the default until it moved to 320
+    /// rings); the number of steps is set by the
     /// Courant number in the small cells at a thin section's ends as the
     /// stroke goes: 20,905 for that section's 4 cycles at Courant number
     /// 3, 31.9 s (see [`ViscousError::TooManySteps`]).

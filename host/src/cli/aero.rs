@@ -31,7 +31,7 @@ pub struct Aero2dArgs {
     #[arg(long)]
     pub ns_around: Option<usize>,
     /// Grid nodes from the wall to the outer boundary in the Navier–Stokes
-    /// model (8 to 8192; default 240).
+    /// model (8 to 8192; default 320).
     #[arg(long)]
     pub ns_radial: Option<usize>,
     /// Section: `flat` (thin line, LDVM), a NACA 4-digit name such as

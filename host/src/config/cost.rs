@@ -55,13 +55,17 @@ const DEFAULT_STEPS: f64 = 240.0;
 const DEFAULT_MEMORY: f64 = 680e6;
 
 /// Wall time of one Navier–Stokes evaluation of the mid-span section at
-/// the default resolution (384 × 240, Courant number 3), s: 57.3 s
-/// measured for the default section's 4 cycles on two cores, deforming as
-/// the built-in design's first system analysis found
+/// the default resolution (384 × 320, Courant number 3), s, in a normal
+/// hour of the 2-core development machine: 57.3 s was measured for the
+/// default section's 4 cycles on 384 × 240, deforming as the built-in
+/// design's first system analysis found
 /// (`discipline_ns::ns_deforming_evaluation_benchmark`; the rigid
-/// section, 31.9 s the same run). The discipline runs two at a time on
-/// the two cores, each step itself parallel (README, "Speed").
-pub const NS_EVALUATION_SECONDS: f64 = 57.3;
+/// section, 31.9 s the same run), and 320 rings cost 1.34 times as much
+/// (12 strokes, rigid: 293 s against 218 s in one hour), so 77 s; the
+/// benchmark measured 190 s in a slow hour (rigid 118 s). The discipline
+/// runs two at a time on the two cores, each step itself parallel
+/// (README, "Speed").
+pub const NS_EVALUATION_SECONDS: f64 = 77.0;
 
 /// Navier–Stokes evaluations of a design run: each cycle's 21 (the
 /// initial design, the 18 rows, two confirmations; the section's
@@ -195,10 +199,12 @@ mod tests {
     }
 
     /// The Navier–Stokes section model's evaluations are in the built-in
-    /// design's estimate, which says what they cost. At 48.5 s each, 63 of
-    /// them, they make it about 7.9 times the LDVM run (the deforming NS
-    /// design run measured 66 minutes to its fourth cycle, unconverged,
-    /// docs/ns-design): not far beyond it.
+    /// design's estimate, which says what they cost. At 77 s each (the
+    /// default 384 × 320 grid), 63 of them, they make it about 12 times
+    /// the LDVM run, beyond the [`FAR_TIME_RATIO`] at which `fwav design`
+    /// asks before it starts (on 384 × 240, at 57.3 s, 9.2 times; the
+    /// deforming NS design run on it took 78.6 minutes in a slow hour,
+    /// docs/ns-design).
     #[test]
     fn the_ns_section_model_is_in_the_estimate() {
         let mut ns = SystemConfig::default();
@@ -207,7 +213,7 @@ mod tests {
         assert_eq!(e.section_seconds, NS_EVALUATIONS * NS_EVALUATION_SECONDS);
         let ldvm = CostEstimate::of(&SystemConfig::default());
         assert!((e.seconds - ldvm.seconds - e.section_seconds).abs() < 1e-9);
-        assert!(e.time_ratio > 2.5 && !e.is_far_beyond_default(), "{e}");
+        assert!(e.time_ratio > 10.0 && e.is_far_beyond_default(), "{e}");
         assert!(e.to_string().contains("Navier–Stokes"), "{e}");
     }
 }

@@ -152,9 +152,9 @@ pub const DESIGN: Table<DesignConfig> = Table {
                   \"ns\": laminar Navier-Stokes of a thin plate (ns_thickness) with its \
                   friction and separation, the plate's mid-line deforming as the system \
                   analysis found (on a moving grid); lesp_critical does not apply. Cost: \
-                  32 s measured for one 4-cycle evaluation of the default section on two \
-                  cores when rigid, 57 s deforming as the default design's first system \
-                  analysis found (384 x 240 nodes), 17 to 25 minutes for a discipline run",
+                  about 43 s for one 4-cycle evaluation of the default section on two \
+                  cores when rigid, 77 s deforming as the default design's first system \
+                  analysis found (384 x 320 nodes), 23 to 34 minutes for a discipline run",
             value: |d| Value::Choice(d.section_model.word()),
         },
         Setting {

@@ -55,7 +55,7 @@ fn section_model_setting_chooses_the_model() {
     };
     assert_eq!(
         (plate.thickness, plate.around, plate.radial, plate.spin_up),
-        (0.1, 384, 240, false)
+        (0.1, 384, 320, false)
     );
     assert_eq!(plate.section(4).spin_up_periods, 0.0);
     let spun = ViscousPlate {
@@ -552,9 +552,12 @@ fn ns_discipline_benchmark() {
 /// 40 samples of 53 points: a heave of ±0.13 chords from the wing's
 /// bending, a pitch of about ±1.4° and little camber) beside the rigid
 /// plate, at the built-in initial kinematics: the cost of the moving grid
-/// and what the deformation changes.
+/// and what the deformation changes. Measured on the default 384 x 320
+/// (2026-12-03, a slow hour): rigid 118.3 s, deforming 190.4 s (CT
+/// 0.0850, efficiency 0.0341), which fails the 60 s; about 43 s
+/// and 77 s in a normal hour (on 384 x 240: 31.9 s and 57.3 s).
 #[test]
-#[ignore = "benchmark (90 to 190 s; it fails its 60 s in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_deforming_evaluation_benchmark`"]
+#[ignore = "benchmark (2 to 5 min); fails the issue's 60 s (deforming: about 77 s in a normal hour, 190 s in a slow one): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_deforming_evaluation_benchmark`"]
 fn ns_deforming_evaluation_benchmark() {
     use fwav::aeroelastic::handoff::section::SectionFile;
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -587,20 +590,25 @@ fn ns_deforming_evaluation_benchmark() {
 
 /// How much the Navier–Stokes scores of the deforming default section
 /// scatter from window to window (`section_model::NS_WINDOW_SCATTER`
-/// takes its efficiency's): 12 strokes on the full grid (no spin-up),
+/// takes both of its figures from here): 12 strokes on the full grid (no spin-up),
 /// deforming as the default design's first system analysis found, at the
 /// built-in initial kinematics (or `FWAV_NS_DESIGN="13,20,0,110"`: Hz and
-/// degrees), strokes 3 to 12 as five windows of two, each as the
+/// degrees; `FWAV_NS_RADIAL` sets the rings), strokes 3 to 12 as five
+/// windows of two, each as the
 /// discipline scores its window (mean CT, mean CT over mean CP). This is
 /// what two evaluations of one design may differ by, whatever brought
-/// the flow to its window. Measured (2026-12-03, slow hour): at the
-/// initial kinematics CT 0.0859, 0.0849, 0.0849, 0.0868, 0.0822 (2.0 %),
-/// efficiency 0.0341, 0.0340, 0.0340, 0.0346, 0.0330 (1.8 %), 461 s; at
-/// 13 Hz, ±20°, plane 110° CT 0.0795, 0.0814, 0.0819, 0.0848, 0.0848
-/// (2.8 %), efficiency 0.0531, 0.0542, 0.0536, 0.0543, 0.0544 (1.1 %),
-/// 335 s.
+/// the flow to its window. The declared efficiency scatter is the
+/// initial kinematics', the thrust's the 13 Hz design's: each must be
+/// the measured one within 10 % where it was taken, and above it at the
+/// other. Measured on 384 x 320 (2026-12-03, slow hour): at the initial
+/// kinematics CT 0.0850, 0.0885, 0.0885, 0.0869, 0.0877 (1.65 %),
+/// efficiency 0.0341, 0.0352, 0.0352, 0.0346, 0.0349 (1.38 %), 561 s; at
+/// 13 Hz, ±20°, plane 110° CT 0.0814, 0.0831, 0.0826, 0.0851, 0.0853
+/// (1.99 %), efficiency 0.0539, 0.0544, 0.0540, 0.0544, 0.0545 (0.52 %),
+/// 642 s. On 384 x 240, the default before: 2.0 % and 1.8 % (461 s),
+/// 2.8 % and 1.1 % (335 s).
 #[test]
-#[ignore = "benchmark (about 6 min in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_deforming_window_scatter_benchmark`"]
+#[ignore = "benchmark (about 10 min in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_deforming_window_scatter_benchmark`"]
 fn ns_deforming_window_scatter_benchmark() {
     use fwav::aeroelastic::handoff::section::SectionFile;
     use fwav::discipline::section_model::NS_WINDOW_SCATTER;
@@ -616,6 +624,8 @@ fn ns_deforming_window_scatter_benchmark() {
         cycles: 12,
         model: SectionFlowModel::Ns(ViscousPlate {
             spin_up: false,
+            radial: std::env::var("FWAV_NS_RADIAL")
+                .map_or(ViscousPlate::new(0.04).radial, |v| v.parse().unwrap()),
             ..ViscousPlate::new(0.04)
         }),
         ..SectionCase::fwav_mid_span()
@@ -630,21 +640,34 @@ fn ns_deforming_window_scatter_benchmark() {
         design.degrees(),
         clock.elapsed().as_secs_f64()
     );
-    // The declared efficiency scatter is this section's at the initial
-    // kinematics; the thrust's the rigid section's, larger
-    // (`viscous_default_section::ns_evaluation_window_scatter_benchmark`).
-    if design == FlappingKinematics::INITIAL {
-        assert!(
-            (NS_WINDOW_SCATTER.1 / efficiency - 1.0).abs() < 0.1,
-            "declared {:.4}, measured {efficiency:.4}",
-            NS_WINDOW_SCATTER.1
-        );
-        assert!(
-            thrust < NS_WINDOW_SCATTER.0,
-            "declared {:.4}, measured {thrust:.4}",
-            NS_WINDOW_SCATTER.0
-        );
-    }
+    // Each declared scatter is the largest of its measurements: the
+    // efficiency's the initial kinematics', the thrust's the 13 Hz one's.
+    let within = |measured: f64, declared: f64| (declared / measured - 1.0).abs() < 0.1;
+    let (close, below) = if design == FlappingKinematics::INITIAL {
+        (
+            (efficiency, NS_WINDOW_SCATTER.1),
+            (thrust, NS_WINDOW_SCATTER.0),
+        )
+    } else if design == FlappingKinematics::from_degrees([13.0, 20.0, 0.0, 110.0]) {
+        (
+            (thrust, NS_WINDOW_SCATTER.0),
+            (efficiency, NS_WINDOW_SCATTER.1),
+        )
+    } else {
+        return;
+    };
+    assert!(
+        within(close.0, close.1),
+        "declared {:.4}, measured {:.4}",
+        close.1,
+        close.0
+    );
+    assert!(
+        below.0 < below.1,
+        "declared {:.4}, measured {:.4}",
+        below.1,
+        below.0
+    );
 }
 
 /// The spin-up (`ViscousPlate::spin_up`: the two strokes before the
