@@ -63,7 +63,7 @@ const PICTURE_CELLS: usize = 20_000;
 const PICTURE_RADIUS: f64 = 6.0;
 
 /// How much coarser the spin-up's grid is each way
-/// ([`ViscousSection::spin_up_grid`]): 384 × 320 becomes 256 × 213 (384 ×
+/// ([`ViscousSection::spin_up_grid`]): 384 × 320 becomes 256 × 214 (384 ×
 /// 240, the default when the spin-up was measured, 256 × 160).
 pub const SPIN_UP_COARSENING: f64 = 1.5;
 

@@ -167,7 +167,7 @@ fn default_courant() -> f64 {
 
 impl ViscousPlate {
     /// A plate `thickness` chords thick at [`ViscousSection::plate`]'s
-    /// default resolution (384 × 240 nodes out to 30 chords).
+    /// default resolution (384 × 320 nodes out to 30 chords).
     pub fn new(thickness: f64) -> Self {
         let s = ViscousSection::plate(thickness);
         Self {
@@ -182,7 +182,7 @@ impl ViscousPlate {
     }
 
     /// What the reports add for the spin-up: `"; the strokes before the
-    /// scored window spun up on 256 x 213 nodes"`, or nothing.
+    /// scored window spun up on 256 x 214 nodes"`, or nothing.
     fn spin_up_clause(&self) -> String {
         if !self.spin_up {
             return String::new();
