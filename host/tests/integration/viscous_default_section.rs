@@ -201,8 +201,8 @@ pub(crate) fn window_scatter(ct: &[f64], cp: &[f64]) -> (Vec<(f64, f64)>, f64, f
 /// and efficiency `CT / CP` (sample, n - 1). On the default 384 x 320
 /// the rigid section's flow repeats from the fourth stroke, so both must
 /// lie well below the declared scatter, which is the deforming section's
-/// (`discipline_ns::ns_deforming_window_scatter_benchmark`): at most a
-/// fifth of it. Measured on 384 x 320 (2026-12-03, the
+/// (`discipline_ns::ns_deforming_window_scatter_benchmark`): below half
+/// of it. Measured on 384 x 320 (2026-12-03, the
 /// `default_section_four_cycles_benchmark` run with `FWAV_NS_CYCLES=12`,
 /// from its stroke means): CT 0.20 %, efficiency 0.32 %, 293 s in a slow
 /// hour. On 384 x 240, the default before, whose flow never settled:
@@ -225,7 +225,7 @@ fn ns_evaluation_window_scatter_benchmark() {
         (efficiency, NS_WINDOW_SCATTER.1),
     ] {
         assert!(
-            measured < 0.2 * declared,
+            measured < 0.5 * declared,
             "declared {declared:.4}, measured {measured:.4}"
         );
     }
