@@ -251,8 +251,9 @@ fn long_mean(ct: &[f64], cp: &[f64]) -> (f64, f64, f64) {
 /// at a time. Measured (2026-12-03, a slow hour; README, "The long
 /// mean"): CT 0.0715 (standard error 0.07 %: periodic from the fourth
 /// stroke), efficiency 0.0436; the step halved -1.6 % and -0.5 %, 400
-/// rings -0.2 % and +0.2 %, 512 round -0.7 % and +1.1 %; 293 s, 632 s,
-/// 425 s and 476 s. On 384 x 240, the default before, this failed: its
+/// rings -0.2 % and +0.2 %, 512 round -0.6 % and +1.1 %; passed, 1,836 s
+/// for the four runs (from the benchmark's rounded stroke means, the
+/// README's table has -0.7 % for 512 round). On 384 x 240, the default before, this failed: its
 /// flow never settled (CT 0.0680, standard error 1.3 %), and 320 rings
 /// moved CT +5.1 % and the efficiency +2.7 %, 512 round +3.6 % and
 /// +2.8 % (the step halved: -1.0 %, +0.3 %).
