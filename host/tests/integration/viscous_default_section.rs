@@ -181,15 +181,16 @@ pub(crate) fn window_scatter(ct: &[f64], cp: &[f64]) -> (Vec<(f64, f64)>, f64, f
         .map(|(ct, cp)| (mean(ct), mean(ct) / mean(cp)))
         .collect();
     assert_eq!(windows.len(), 5, "five windows of two strokes");
-    let relative_deviation = |values: Vec<f64>| {
-        let m = mean(&values);
-        let variance =
-            values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / (values.len() - 1) as f64;
-        variance.sqrt() / m
-    };
-    let thrust = relative_deviation(windows.iter().map(|w| w.0).collect());
-    let efficiency = relative_deviation(windows.iter().map(|w| w.1).collect());
+    let thrust = relative_deviation(&windows.iter().map(|w| w.0).collect::<Vec<_>>());
+    let efficiency = relative_deviation(&windows.iter().map(|w| w.1).collect::<Vec<_>>());
     (windows, thrust, efficiency)
+}
+
+/// The sample standard deviation (n - 1) of `values` over their mean.
+fn relative_deviation(values: &[f64]) -> f64 {
+    let m = values.iter().sum::<f64>() / values.len() as f64;
+    let variance = values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / (values.len() - 1) as f64;
+    variance.sqrt() / m
 }
 
 /// The scatter of the Navier–Stokes evaluation's scored window
@@ -239,9 +240,11 @@ fn long_mean(ct: &[f64], cp: &[f64]) -> (f64, f64, f64) {
     let (ct, cp) = (&ct[400..], &cp[400..]);
     let strokes: Vec<f64> = ct.chunks(200).map(mean).collect();
     assert_eq!(strokes.len(), 10, "ten strokes after the first two");
-    let m = mean(&strokes);
-    let variance = strokes.iter().map(|s| (s - m).powi(2)).sum::<f64>() / 9.0;
-    (mean(ct), mean(ct) / mean(cp), (variance / 10.0).sqrt() / m)
+    (
+        mean(ct),
+        mean(ct) / mean(cp),
+        relative_deviation(&strokes) / 10f64.sqrt(),
+    )
 }
 
 /// Issue 23's convergence (CT and efficiency within 3 % when the grid and
