@@ -203,7 +203,8 @@ mod tests {
     /// default 384 × 320 grid), 63 of them, they make it about 12 times
     /// the LDVM run, beyond the [`FAR_TIME_RATIO`] at which `fwav design`
     /// asks before it starts (on 384 × 240, at 57.3 s, 9.2 times; the
-    /// deforming NS design run on it took 78.6 minutes in a slow hour,
+    /// deforming NS design run on it took 78.6 minutes in a slow hour;
+    /// on 384 × 320 two cycles took 2 h 4 min, partly shared,
     /// docs/ns-design).
     #[test]
     fn the_ns_section_model_is_in_the_estimate() {
