@@ -606,7 +606,11 @@ fn ns_deforming_evaluation_benchmark() {
 /// 13 Hz, ±20°, plane 110° CT 0.0814, 0.0831, 0.0826, 0.0851, 0.0853
 /// (1.99 %), efficiency 0.0539, 0.0544, 0.0540, 0.0544, 0.0545 (0.52 %),
 /// 642 s. On 384 x 240, the default before: 2.0 % and 1.8 % (461 s),
-/// 2.8 % and 1.1 % (335 s).
+/// 2.8 % and 1.1 % (335 s). At L18 row 18 (13 Hz, ±30°, −10°, plane 90°,
+/// `FWAV_NS_DESIGN=13,30,-10,90`; shared with a design run): 0.66 % and
+/// 0.57 % on 384 x 320 (1,106 s), 10.4 % and 8.9 % on 384 x 240, 7.4 %
+/// and 5.6 % on 384 x 400, whose first window is within 1.6 % of 320's
+/// (docs/ns-design).
 #[test]
 #[ignore = "benchmark (about 10 min in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_deforming_window_scatter_benchmark`"]
 fn ns_deforming_window_scatter_benchmark() {
