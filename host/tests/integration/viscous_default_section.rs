@@ -149,7 +149,6 @@ fn default_section_thrust_converges_with_the_wall_cell() {
             ..ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS)
         };
         let run = fwav_mid_span_run(&section, 1.0);
-        let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
         (mean(&run.history.ct), mean(&run.history.cp))
     };
     let layers = ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS).first_cell_layers;
@@ -173,7 +172,6 @@ fn default_section_thrust_converges_with_the_wall_cell() {
 /// relative standard deviations (sample, n - 1) of the windows' CT and
 /// efficiency.
 pub(crate) fn window_scatter(ct: &[f64], cp: &[f64]) -> (Vec<(f64, f64)>, f64, f64) {
-    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
     let windows: Vec<(f64, f64)> = ct
         .chunks(400)
         .zip(cp.chunks(400))
@@ -186,9 +184,14 @@ pub(crate) fn window_scatter(ct: &[f64], cp: &[f64]) -> (Vec<(f64, f64)>, f64, f
     (windows, thrust, efficiency)
 }
 
+/// The mean of `values`.
+fn mean(values: &[f64]) -> f64 {
+    values.iter().sum::<f64>() / values.len() as f64
+}
+
 /// The sample standard deviation (n - 1) of `values` over their mean.
 fn relative_deviation(values: &[f64]) -> f64 {
-    let m = values.iter().sum::<f64>() / values.len() as f64;
+    let m = mean(values);
     let variance = values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / (values.len() - 1) as f64;
     variance.sqrt() / m
 }
@@ -236,7 +239,6 @@ fn ns_evaluation_window_scatter_benchmark() {
 /// CT, the efficiency `mean CT / mean CP`, and the standard error of the
 /// CT mean from its ten strokes (sample deviation over `sqrt(10)`).
 fn long_mean(ct: &[f64], cp: &[f64]) -> (f64, f64, f64) {
-    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
     let (ct, cp) = (&ct[400..], &cp[400..]);
     let strokes: Vec<f64> = ct.chunks(200).map(mean).collect();
     assert_eq!(strokes.len(), 10, "ten strokes after the first two");
@@ -256,8 +258,8 @@ fn long_mean(ct: &[f64], cp: &[f64]) -> (f64, f64, f64) {
 /// stroke), efficiency 0.0436; the step halved -1.6 % and -0.5 %, 400
 /// rings -0.2 % and +0.2 %, 512 round -0.6 % and +1.1 %; passed, 1,836 s
 /// for the four runs (from the benchmark's rounded stroke means, the
-/// README's table has -0.7 % for 512 round). On 384 x 240, the default before, this failed: its
-/// flow never settled (CT 0.0680, standard error 1.3 %), and 320 rings
+/// README's table has -0.7 % for 512 round). On 384 x 240, the default
+/// before, this failed: its flow never settled (CT 0.0680, standard error 1.3 %), and 320 rings
 /// moved CT +5.1 % and the efficiency +2.7 %, 512 round +3.6 % and
 /// +2.8 % (the step halved: -1.0 %, +0.3 %).
 #[test]
