@@ -1,4 +1,6 @@
-"""Tabulate the aerodynamic discipline's L18 rows of two design runs side by side."""
+"""Tabulate the aerodynamic discipline's L18 rows of two design runs side by side.
+
+Usage: l18_table.py RUN_A RUN_B NAME_A NAME_B [CYCLE] (cycle 1 unless given)."""
 import json, math, sys
 
 def load(run, cycle=1):
@@ -11,8 +13,8 @@ def row(e):
     key = (round(d["frequency_hz"], 3), round(d["amplitude_deg"], 2), round(d["mean_angle_deg"], 2), round(d["stroke_plane_deg"], 2))
     return key, res
 
-def table(a, b, na, nb):
-    ka, kb = load(a), load(b)
+def table(a, b, na, nb, cycle=1):
+    ka, kb = load(a, cycle), load(b, cycle)
     print(f"| row | f Hz | amp ° | mean ° | plane ° | {na} CT net | {na} η net | {nb} CT net | {nb} η net |")
     print("|---|---|---|---|---|---|---|---|---|")
     for i, (ea, eb) in enumerate(zip(ka["runs"], kb["runs"])):
@@ -30,4 +32,4 @@ def table(a, b, na, nb):
         print("  level means:", [[round(v, 3) for v in lm] for lm in k["level_means"]])
 
 if __name__ == "__main__":
-    table(sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4])
+    table(sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], int(sys.argv[5]) if len(sys.argv) > 5 else 1)
