@@ -1,7 +1,7 @@
 //! Pictures of the aerodynamic discipline, as PNGs: the main effects (the
 //! ANOM level means of the combined objective, one panel per design
 //! variable) and the net CT – net efficiency plane with the response surfaces'
-//! Pareto front, the 18 array runs, the initial design and the three
+//! Pareto front, the 18 array runs, the analysed design (the discipline's start) and the three
 //! confirmed candidates.
 
 use std::path::Path;
@@ -11,6 +11,9 @@ use plotters::prelude::*;
 use crate::discipline::kinematic::{DesignSpace, KinematicResult};
 
 use super::drawing::{DrawingError, FONT};
+
+/// Pixels between the stacked names of the candidates ([`pareto`]).
+const CANDIDATE_LINE: i32 = 18;
 
 /// Draws the main effects of `result` over `space` to `png`.
 pub fn main_effects(
@@ -119,16 +122,19 @@ pub fn pareto(result: &KinematicResult, png: &Path) -> Result<(), DrawingError> 
     if let Some(p) = initial {
         chart
             .draw_series(std::iter::once(TriangleMarker::new(p, 8, GREEN.filled())))?
-            .label("initial design")
+            .label("analysed design (the discipline's start)")
             .legend(|(x, y)| TriangleMarker::new((x, y), 8, GREEN.filled()));
     }
-    for (name, p) in &candidates {
-        chart.draw_series(std::iter::once(Circle::new(*p, 7, RED.filled())))?;
-        chart.draw_series(std::iter::once(Text::new(
-            name.clone(),
-            (p.0, p.1),
-            (FONT, 16).into_font(),
-        )))?;
+    // Each candidate's name a line below the last one's, right of its
+    // point: candidates often land on one another (the same design found
+    // by two methods), and their names then stack instead of overprinting.
+    for (i, (name, p)) in candidates.iter().enumerate() {
+        let line = i32::try_from(i).unwrap_or(0) * CANDIDATE_LINE;
+        chart.draw_series(std::iter::once(
+            EmptyElement::at(*p)
+                + Circle::new((0, 0), 7, RED.filled())
+                + Text::new(name.clone(), (10, line - 8), (FONT, 16).into_font()),
+        ))?;
     }
     chart
         .configure_series_labels()

@@ -163,7 +163,7 @@ pub(crate) fn write_final(
         draw_atomic(dir, "main-effects.png", |p| {
             discipline_plot::main_effects(&record.result, &ctx.config.design_space(), p)
         })?;
-        pictures.push(("pareto.png", "Aerodynamic discipline of the last cycle: net CT and net efficiency of the L18 runs, the response surfaces' Pareto front, the initial design and the three candidates."));
+        pictures.push(("pareto.png", "Aerodynamic discipline of the last cycle: net CT and net efficiency of the L18 runs, the response surfaces' Pareto front, the analysed design (the discipline's start) and the three candidates."));
         pictures.push(("main-effects.png", "Aerodynamic discipline of the last cycle: main effects (ANOM level means of the combined objective)."));
     }
     let vehicle = designed_vehicle(dir, &ctx.config, final_cycle, &design.densities)?;
