@@ -593,7 +593,8 @@ fn ns_deforming_evaluation_benchmark() {
 /// takes both of its figures from here): 12 strokes on the full grid (no spin-up),
 /// deforming as the default design's first system analysis found, at the
 /// built-in initial kinematics (or `FWAV_NS_DESIGN="13,20,0,110"`: Hz and
-/// degrees; `FWAV_NS_RADIAL` sets the rings), strokes 3 to 12 as five
+/// degrees; `FWAV_NS_RADIAL` sets the rings, `FWAV_NS_COURANT` the
+/// step's Courant number), strokes 3 to 12 as five
 /// windows of two, each as the
 /// discipline scores its window (mean CT, mean CT over mean CP). This is
 /// what two evaluations of one design may differ by, whatever brought
@@ -630,6 +631,8 @@ fn ns_deforming_window_scatter_benchmark() {
             spin_up: false,
             radial: std::env::var("FWAV_NS_RADIAL")
                 .map_or(ViscousPlate::new(0.04).radial, |v| v.parse().unwrap()),
+            courant: std::env::var("FWAV_NS_COURANT")
+                .map_or(ViscousPlate::new(0.04).courant, |v| v.parse().unwrap()),
             ..ViscousPlate::new(0.04)
         }),
         ..SectionCase::fwav_mid_span()
@@ -644,6 +647,11 @@ fn ns_deforming_window_scatter_benchmark() {
         design.degrees(),
         clock.elapsed().as_secs_f64()
     );
+    // The declared scatter is the default resolution's: another is
+    // measured, not checked.
+    if std::env::var("FWAV_NS_RADIAL").is_ok() || std::env::var("FWAV_NS_COURANT").is_ok() {
+        return;
+    }
     // Each declared scatter is the largest of its measurements: the
     // efficiency's the initial kinematics', the thrust's the 13 Hz one's.
     let within = |measured: f64, declared: f64| (declared / measured - 1.0).abs() < 0.1;
