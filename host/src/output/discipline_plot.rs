@@ -1,8 +1,8 @@
 //! Pictures of the aerodynamic discipline, as PNGs: the main effects (the
 //! ANOM level means of the combined objective, one panel per design
-//! variable) and the net CT – net efficiency plane with the response surfaces'
-//! Pareto front, the 18 array runs, the analysed design (the discipline's start) and the three
-//! confirmed candidates.
+//! variable) and the net CT – net efficiency plane with the response
+//! surfaces' Pareto front, the 18 array runs, the analysed design (the
+//! discipline's start) and the three confirmed candidates.
 
 use std::path::Path;
 

@@ -611,7 +611,10 @@ fn ns_deforming_evaluation_benchmark() {
 /// `FWAV_NS_DESIGN=13,30,-10,90`; shared with a design run): 0.66 % and
 /// 0.57 % on 384 x 320 (1,106 s), 10.4 % and 8.9 % on 384 x 240, 7.4 %
 /// and 5.6 % on 384 x 400, whose first window is within 1.6 % of 320's
-/// (docs/ns-design).
+/// (docs/ns-design). At Courant 4 (`FWAV_NS_COURANT=4`, initial
+/// kinematics, 2026-12-04): 0.61 % and 0.65 %, 327 s against Courant 3's
+/// 498 s the same hour, but its first window 5.3 % (CT) and 4.4 %
+/// (efficiency) above Courant 3's (README, "Speed").
 #[test]
 #[ignore = "benchmark (about 10 min in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_deforming_window_scatter_benchmark`"]
 fn ns_deforming_window_scatter_benchmark() {
