@@ -26,8 +26,8 @@
 //! vortex lattice and the aerodynamic discipline's LDVM are left out: they
 //! do not grow with the mesh, and on the default wing they are a small
 //! part. The discipline's Navier–Stokes model (`[design] section_model =
-//! "ns"`) is not: its evaluations are added at their measured time
-//! ([`NS_EVALUATION_SECONDS`] each, [`NS_EVALUATIONS`] of them).
+//! "ns"`) is not: its disciplines are added at their measured time
+//! ([`NS_DISCIPLINE_SECONDS`] each, [`NS_CYCLES`] of them).
 
 use std::fmt;
 
@@ -54,23 +54,31 @@ const DEFAULT_STEPS: f64 = 240.0;
 /// MB).
 const DEFAULT_MEMORY: f64 = 680e6;
 
-/// Wall time of one Navier–Stokes evaluation of the mid-span section at
-/// the default resolution (384 × 320, Courant number 3), s, in a normal
-/// hour of the 2-core development machine: 57.3 s was measured for the
-/// default section's 4 cycles on 384 × 240, deforming as the built-in
-/// design's first system analysis found
-/// (`discipline_ns::ns_deforming_evaluation_benchmark`; the rigid
-/// section, 31.9 s the same run), and 320 rings cost 1.34 times as much
-/// (12 strokes, rigid: 293 s against 218 s in one hour), so 77 s; the
-/// benchmark measured 190 s in a slow hour (rigid 118 s). The discipline
-/// runs two at a time on the two cores, each step itself parallel
-/// (README, "Speed").
-pub const NS_EVALUATION_SECONDS: f64 = 77.0;
+/// Wall time of one aerodynamic discipline run with the Navier–Stokes
+/// section model at the default resolution (384 × 320, Courant number 3),
+/// s, on the 2-core development machine in a normal hour: cycle 3 of the
+/// default design with `section_model = "ns"` took 2,261 s alone
+/// (2026-12-04, docs/ns-design; the first stroke of the default section
+/// took 24.2 s on two threads that hour, as in a normal one). Its 21
+/// evaluations (the initial design, the 18 rows, two confirmations) run
+/// two at a time, each on one core (README, "Speed"). Measured rather
+/// than counted from one evaluation: 21 times the initial design's (77 s
+/// on two threads, `discipline_ns::ns_deforming_evaluation_benchmark`),
+/// 27 minutes, fell short of the measured 38. The discipline computed 20
+/// (the analysed design is an array row, found in the cache): ten rounds
+/// of two single-threaded runs, 226 s each, where the initial
+/// design's evaluation takes about 115 s on one thread (77 s times 1.49,
+/// the first stroke's 36.0 s over 24.2 s): the array's rows, with their
+/// faster strokes, cost about twice as much on average.
+pub const NS_DISCIPLINE_SECONDS: f64 = 2261.0;
 
-/// Navier–Stokes evaluations of a design run: each cycle's 21 (the
-/// initial design, the 18 rows, two confirmations; the section's
-/// deformation changes from cycle to cycle, so the cache serves none of
-/// an earlier cycle's), over the built-in design's three cycles.
+/// Navier–Stokes disciplines of a design run: the built-in design's
+/// three cycles (the section's deformation changes from cycle to cycle,
+/// so the cache serves none of an earlier cycle's evaluations).
+pub const NS_CYCLES: f64 = 3.0;
+
+/// Navier–Stokes evaluations of a design run: each cycle's 21, over
+/// [`NS_CYCLES`].
 pub const NS_EVALUATIONS: f64 = 63.0;
 
 /// Exponent of the time a step in the element count.
@@ -114,7 +122,7 @@ impl CostEstimate {
         let mesh_seconds = DEFAULT_SECONDS * (n / n0).powf(TIME_EXPONENT) * steps / DEFAULT_STEPS;
         let section_seconds = match config.design.section_model {
             SectionModelName::Ldvm => 0.0,
-            SectionModelName::Ns => NS_EVALUATIONS * NS_EVALUATION_SECONDS,
+            SectionModelName::Ns => NS_CYCLES * NS_DISCIPLINE_SECONDS,
         };
         let seconds = mesh_seconds + section_seconds;
         Self {
@@ -198,20 +206,20 @@ mod tests {
         assert!(!CostEstimate::of(&coarse).is_far_beyond_default());
     }
 
-    /// The Navier–Stokes section model's evaluations are in the built-in
-    /// design's estimate, which says what they cost. At 77 s each (the
-    /// default 384 × 320 grid), 63 of them, they make it about 12 times
+    /// The Navier–Stokes section model's disciplines are in the built-in
+    /// design's estimate, which says what they cost. At 2,261 s each (the
+    /// default 384 × 320 grid), three of them, they make it about 16 times
     /// the LDVM run, beyond the [`FAR_TIME_RATIO`] at which `fwav design`
-    /// asks before it starts (on 384 × 240, at 57.3 s, 9.2 times; the
-    /// deforming NS design run on it took 78.6 minutes in a slow hour;
-    /// on 384 × 320 two cycles took 2 h 4 min, partly shared,
-    /// docs/ns-design).
+    /// asks before it starts. (The default NS design run on 384 × 320 took
+    /// 9,845 s of stage time, 2 h 44 min, two of its three disciplines
+    /// partly shared in a slow hour; the estimate is 2 h. On 384 × 240 the
+    /// run took 78.6 minutes in a slow hour, docs/ns-design.)
     #[test]
     fn the_ns_section_model_is_in_the_estimate() {
         let mut ns = SystemConfig::default();
         ns.design.section_model = SectionModelName::Ns;
         let e = CostEstimate::of(&ns);
-        assert_eq!(e.section_seconds, NS_EVALUATIONS * NS_EVALUATION_SECONDS);
+        assert_eq!(e.section_seconds, NS_CYCLES * NS_DISCIPLINE_SECONDS);
         let ldvm = CostEstimate::of(&SystemConfig::default());
         assert!((e.seconds - ldvm.seconds - e.section_seconds).abs() < 1e-9);
         assert!(e.time_ratio > 10.0 && e.is_far_beyond_default(), "{e}");

@@ -154,7 +154,8 @@ pub const DESIGN: Table<DesignConfig> = Table {
                   analysis found (on a moving grid); lesp_critical does not apply. Cost: \
                   about 43 s for one 4-cycle evaluation of the default section on two \
                   cores when rigid, 77 s deforming as the default design's first system \
-                  analysis found (384 x 320 nodes), 23 to 34 minutes for a discipline run",
+                  analysis found (384 x 320 nodes), about 38 minutes for a discipline run \
+                  (measured alone on the default design)",
             value: |d| Value::Choice(d.section_model.word()),
         },
         Setting {
