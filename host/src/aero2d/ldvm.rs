@@ -42,6 +42,12 @@ use super::camber::CamberHistory;
 pub use super::history::{cycle_mean_of, cycle_means, cycle_means_until, History};
 pub use super::motion::{Motion, PitchRamp, SectionFlapping};
 
+mod vortex;
+
+pub(crate) use vortex::induced;
+pub use vortex::FreeVortex;
+use vortex::{far_proxies, near_start};
+
 /// Numerical settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
@@ -83,20 +89,6 @@ impl Default for Settings {
         }
     }
 }
-
-/// A free vortex (counter-clockwise circulation positive).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct FreeVortex {
-    /// Position, chords.
-    pub x: f64,
-    /// Position, chords.
-    pub y: f64,
-    /// Circulation, U c.
-    pub gamma: f64,
-}
-
-/// Far-wake vortices lumped together for induction.
-const FAR_GROUP: usize = 8;
 
 /// The pressure-jump integrals of one step (c = U = rho = 1).
 #[derive(Clone, Copy, Debug)]
@@ -162,43 +154,6 @@ pub struct Ldvm {
     core2: f64,
 }
 
-/// Velocity induced at `(x, y)` by a ccw vortex with a Vatistas (n = 2)
-/// core of squared radius `core2`. Beyond ten core radii the core changes
-/// the kernel by less than 5e-5 relative, and the plain `1/r^2` kernel
-/// (no square root) is used.
-#[inline]
-pub(crate) fn induced(v: &FreeVortex, x: f64, y: f64, core2: f64) -> (f64, f64) {
-    let (dx, dy) = (x - v.x, y - v.y);
-    let r2 = dx * dx + dy * dy;
-    let denominator = if r2 > 100.0 * core2 {
-        r2
-    } else {
-        (r2 * r2 + core2 * core2).sqrt()
-    };
-    let k = v.gamma / (2.0 * PI * denominator);
-    (-dy * k, dx * k)
-}
-
-/// The far wake for induction: groups of [`FAR_GROUP`] consecutive
-/// vortices as one, at their |Gamma|-weighted centroid with their total
-/// circulation (their spread is small against their distance).
-fn far_proxies(far: &[FreeVortex]) -> impl Iterator<Item = FreeVortex> + '_ {
-    far.chunks(FAR_GROUP).map(|group| {
-        let weight: f64 = group
-            .iter()
-            .map(|v| v.gamma.abs())
-            .sum::<f64>()
-            .max(f64::MIN_POSITIVE);
-        let x = group.iter().map(|v| v.x * v.gamma.abs()).sum::<f64>() / weight;
-        let y = group.iter().map(|v| v.y * v.gamma.abs()).sum::<f64>() / weight;
-        FreeVortex {
-            x,
-            y,
-            gamma: group.iter().map(|v| v.gamma).sum(),
-        }
-    })
-}
-
 /// The rigid motion at one time (chords, radians, chords travelled).
 #[derive(Clone, Copy, Debug)]
 struct Kinematics {
@@ -259,16 +214,6 @@ impl Sources {
 struct Influence {
     w: Vec<Vec<f64>>,
     vt: Vec<Vec<f64>>,
-}
-
-/// Index of the first vortex of the near wake: vortices are kept in
-/// shedding order and drift downstream, so the far wake (beyond `limit`) is
-/// a prefix.
-fn near_start(vortices: &[FreeVortex], limit: f64) -> usize {
-    vortices
-        .iter()
-        .position(|v| v.x <= limit)
-        .unwrap_or(vortices.len())
 }
 
 impl Ldvm {
