@@ -32,6 +32,7 @@ pub mod interface;
 pub mod kinematics;
 pub mod last_cycle;
 pub mod model;
+mod relaxation;
 
 pub use analysis::{
     run, CycleMeans, Snapshot, StepRecord, SystemError, SystemResult, SystemSettings,
