@@ -9,7 +9,9 @@ use fwav::config::template::commented_toml;
 use fwav::config::SystemConfig;
 use fwav::discipline::cache::{key, EvaluationCache};
 use fwav::discipline::section::{EvaluationError, SectionCase, SectionResult};
-use fwav::discipline::section_model::{SectionFlowModel, SectionModelName, ViscousPlate};
+use fwav::discipline::section_model::{
+    SectionFlowModel, SectionModelName, ViscousPlate, NS_WINDOW_SCATTER,
+};
 
 /// A 12 % plate on 64 × 64 nodes out to 15 chords, first cell a fifth of
 /// the boundary layer: coarse, for a test of seconds (the default is
@@ -480,6 +482,68 @@ fn design_report_says_the_ns_section_deforms() {
     );
 }
 
+/// The NS model of `plate` on the default FWAV section, deforming as the
+/// built-in design's first system analysis found
+/// (`tests/data/fwav_cycle1_section.json`).
+fn deforming_case(plate: ViscousPlate) -> SectionCase {
+    use fwav::aeroelastic::handoff::section::SectionFile;
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/fwav_cycle1_section.json");
+    SectionCase {
+        deformation: SectionFile::read(&path).unwrap().samples,
+        ..ns_case(plate)
+    }
+}
+
+/// The design of `FWAV_NS_DESIGN` ("13,20,0,110": Hz and degrees), or
+/// the built-in initial kinematics.
+fn env_design() -> FlappingKinematics {
+    std::env::var("FWAV_NS_DESIGN").map_or(FlappingKinematics::INITIAL, |v| parse_design(&v))
+}
+
+/// A design written "13,20,0,110" (Hz and degrees).
+fn parse_design(text: &str) -> FlappingKinematics {
+    let x: Vec<f64> = text.split(',').map(|x| x.trim().parse().unwrap()).collect();
+    FlappingKinematics::from_degrees([x[0], x[1], x[2], x[3]])
+}
+
+/// The default plate, its rings and Courant number replaced by
+/// `FWAV_NS_RADIAL` and `FWAV_NS_COURANT` where set.
+fn env_plate() -> ViscousPlate {
+    let default = ViscousPlate::new(0.04);
+    ViscousPlate {
+        radial: std::env::var("FWAV_NS_RADIAL").map_or(default.radial, |v| v.parse().unwrap()),
+        courant: std::env::var("FWAV_NS_COURANT").map_or(default.courant, |v| v.parse().unwrap()),
+        ..default
+    }
+}
+
+/// The RMS relative change of the rows' net CT and net efficiency from
+/// the default resolution's, the first cycle's rows of the NS design run
+/// on the same section (docs/ns-design, `l18-384x320.txt`).
+fn rows_against_the_default(runs: &[fwav::discipline::kinematic::Evaluated]) -> (f64, f64) {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/ns-design/l18-384x320.txt");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .filter_map(|l| {
+            let cells: Vec<f64> = l.split('|').filter_map(|c| c.trim().parse().ok()).collect();
+            (cells.len() == 9).then_some(cells)
+        })
+        .collect();
+    assert_eq!(rows.len(), runs.len(), "{}", path.display());
+    let (mut thrust, mut efficiency) = (0.0, 0.0);
+    for (row, run) in rows.iter().zip(runs) {
+        assert_eq!(run.design.degrees(), [row[1], row[2], row[3], row[4]]);
+        let r = run.result.as_ref().unwrap();
+        thrust += (r.ct_net / row[5] - 1.0).powi(2);
+        efficiency += (r.efficiency_net / row[6] - 1.0).powi(2);
+    }
+    let n = rows.len() as f64;
+    ((thrust / n).sqrt(), (efficiency / n).sqrt())
+}
+
 /// The speed target for the discipline: the whole aerodynamic
 /// discipline (the initial design, the 18 L18 rows and the ANOM and RSM
 /// confirmations, each a 4-stroke Navier–Stokes evaluation at the default
@@ -496,19 +560,23 @@ fn design_report_says_the_ns_section_deforms() {
 /// evaluation of `ns_deforming_evaluation_benchmark` took 84.9 s then,
 /// 57.3 s half an hour before; scaled, about 1,000 s). Before, 924 s on
 /// 384 × 160 at Courant 1.5 and 494 s on 256 × 160. Fails.
+///
+/// At another step (`FWAV_NS_COURANT`) it compares the rows with the
+/// default's (the NS design run's first cycle, docs/ns-design,
+/// `l18-384x320.txt`): at Courant 4 (2026-12-04) the 19 evaluations
+/// took 1,712 s, and the rows' CT moved by 5.59 % RMS and their
+/// efficiency by 4.95 %, so one evaluation's scatter is 3.95 % and 3.50 %
+/// (`NS_WINDOW_SCATTER`, which must be these within 10 %). The choice
+/// moved with them: best row 13 Hz, ±40°, −10°, plane 70° (2.595; at
+/// Courant 3 13 Hz, ±30°, 0°, 70°, 2.580), ANOM 13 Hz, ±40°, 10°, 110°
+/// (Courant 3: ±30°, 0°, 110°); frequency level means 1.56, 1.93, 2.47
+/// (1.61, 2.05, 2.55).
 #[test]
 #[ignore = "benchmark (17 to 25 min; over the issue's 10): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_discipline_benchmark`"]
 fn ns_discipline_benchmark() {
-    use fwav::aeroelastic::handoff::section::SectionFile;
     use fwav::discipline::kinematic::{optimize, DesignSpace, Weights};
     use fwav::optimize::nsga2::Nsga2Config;
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/fwav_cycle1_section.json");
-    let section = SectionFile::read(&path).unwrap();
-    let case = SectionCase {
-        deformation: section.samples,
-        ..ns_case(ViscousPlate::new(0.04))
-    };
+    let case = deforming_case(env_plate());
     let cache = EvaluationCache::new();
     let clock = std::time::Instant::now();
     let result = optimize(
@@ -542,7 +610,39 @@ fn ns_discipline_benchmark() {
             );
         }
     }
+    println!("level means: {:?}", result.level_means);
+    for c in &result.candidates {
+        println!(
+            "{}: {:?} combined {:?}",
+            c.method,
+            c.confirmation.design.degrees(),
+            c.combined
+        );
+    }
     assert!(result.runs.iter().all(|e| e.result.is_ok()));
+    if case.model != ns_case(ViscousPlate::new(0.04)).model {
+        // Another step: the rows against the default's, the declared
+        // scatter's measurement.
+        let (thrust, efficiency) = rows_against_the_default(&result.runs);
+        println!(
+            "against the default step's rows: RMS change CT {:.2} %, efficiency {:.2} %",
+            100.0 * thrust,
+            100.0 * efficiency
+        );
+        if std::env::var("FWAV_NS_COURANT").as_deref() == Ok("4") {
+            let one = |rms: f64| rms / std::f64::consts::SQRT_2;
+            for (measured, declared) in [
+                (one(thrust), NS_WINDOW_SCATTER.0),
+                (one(efficiency), NS_WINDOW_SCATTER.1),
+            ] {
+                assert!(
+                    (declared / measured - 1.0).abs() < 0.1,
+                    "declared {declared:.4}, measured {measured:.4}"
+                );
+            }
+        }
+        return;
+    }
     assert!(seconds < 600.0, "{seconds:.1} s against the issue's 600 s");
 }
 
@@ -559,15 +659,8 @@ fn ns_discipline_benchmark() {
 #[test]
 #[ignore = "benchmark (2 to 5 min); fails the issue's 60 s (deforming: about 77 s in a normal hour, 190 s in a slow one): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_deforming_evaluation_benchmark`"]
 fn ns_deforming_evaluation_benchmark() {
-    use fwav::aeroelastic::handoff::section::SectionFile;
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/fwav_cycle1_section.json");
-    let section = SectionFile::read(&path).unwrap();
     let rigid = ns_case(ViscousPlate::new(0.04));
-    let deforming = SectionCase {
-        deformation: section.samples,
-        ..rigid.clone()
-    };
+    let deforming = deforming_case(ViscousPlate::new(0.04));
     let design = FlappingKinematics::INITIAL;
     let mut seconds = Vec::new();
     let mut results = Vec::new();
@@ -589,19 +682,18 @@ fn ns_deforming_evaluation_benchmark() {
 }
 
 /// How much the Navier–Stokes scores of the deforming default section
-/// scatter from window to window (`section_model::NS_WINDOW_SCATTER`
-/// takes both of its figures from here): 12 strokes on the full grid (no spin-up),
+/// scatter from window to window of one run, which must be less than
+/// what two evaluations differ by (`section_model::NS_WINDOW_SCATTER`,
+/// taken from the L18 rows at two steps: `ns_discipline_benchmark`): 12 strokes on the full grid (no spin-up),
 /// deforming as the default design's first system analysis found, at the
 /// built-in initial kinematics (or `FWAV_NS_DESIGN="13,20,0,110"`: Hz and
 /// degrees; `FWAV_NS_RADIAL` sets the rings, `FWAV_NS_COURANT` the
 /// step's Courant number), strokes 3 to 12 as five
 /// windows of two, each as the
-/// discipline scores its window (mean CT, mean CT over mean CP). This is
-/// what two evaluations of one design may differ by, whatever brought
-/// the flow to its window. The declared efficiency scatter is the
-/// initial kinematics', the thrust's the 13 Hz design's: each must be
-/// the measured one within 10 % where it was taken, and above it at the
-/// other. Measured on 384 x 320 (2026-12-03, slow hour): at the initial
+/// discipline scores its window (mean CT, mean CT over mean CP). Until
+/// 2026-12-04 this was the declared scatter (the efficiency's from the
+/// initial kinematics, the thrust's from the 13 Hz design), but these
+/// designs' flows settle where many L18 rows' do not. Measured on 384 x 320 (2026-12-03, slow hour): at the initial
 /// kinematics CT 0.0850, 0.0885, 0.0885, 0.0869, 0.0877 (1.65 %),
 /// efficiency 0.0341, 0.0352, 0.0352, 0.0346, 0.0349 (1.38 %), 561 s; at
 /// 13 Hz, ±20°, plane 110° CT 0.0814, 0.0831, 0.0826, 0.0851, 0.0853
@@ -618,28 +710,15 @@ fn ns_deforming_evaluation_benchmark() {
 #[test]
 #[ignore = "benchmark (about 10 min in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_deforming_window_scatter_benchmark`"]
 fn ns_deforming_window_scatter_benchmark() {
-    use fwav::aeroelastic::handoff::section::SectionFile;
-    use fwav::discipline::section_model::NS_WINDOW_SCATTER;
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/fwav_cycle1_section.json");
-    let section = SectionFile::read(&path).unwrap();
-    let design = std::env::var("FWAV_NS_DESIGN").map_or(FlappingKinematics::INITIAL, |v| {
-        let x: Vec<f64> = v.split(',').map(|x| x.trim().parse().unwrap()).collect();
-        FlappingKinematics::from_degrees([x[0], x[1], x[2], x[3]])
-    });
-    let default = ViscousPlate::new(0.04);
+    let design = env_design();
     let plate = ViscousPlate {
         spin_up: false,
-        radial: std::env::var("FWAV_NS_RADIAL").map_or(default.radial, |v| v.parse().unwrap()),
-        courant: std::env::var("FWAV_NS_COURANT").map_or(default.courant, |v| v.parse().unwrap()),
-        ..default
+        ..env_plate()
     };
-    let at_default_resolution = plate.radial == default.radial && plate.courant == default.courant;
+    let at_default_resolution = plate == ViscousPlate::new(0.04);
     let case = SectionCase {
-        deformation: section.samples,
         cycles: 12,
-        model: SectionFlowModel::Ns(plate),
-        ..SectionCase::fwav_mid_span()
+        ..deforming_case(plate)
     };
     let clock = std::time::Instant::now();
     let (history, _) = case.history(&design).unwrap();
@@ -652,38 +731,20 @@ fn ns_deforming_window_scatter_benchmark() {
         clock.elapsed().as_secs_f64()
     );
     // The declared scatter is the default resolution's: another is
-    // measured, not checked.
+    // measured, not checked. From window to window of one run the
+    // scores scatter less than from run to run (`NS_WINDOW_SCATTER`).
     if !at_default_resolution {
         return;
     }
-    // Each declared scatter is the largest of its measurements: the
-    // efficiency's the initial kinematics', the thrust's the 13 Hz one's.
-    let within = |measured: f64, declared: f64| (declared / measured - 1.0).abs() < 0.1;
-    let (close, below) = if design == FlappingKinematics::INITIAL {
-        (
-            (efficiency, NS_WINDOW_SCATTER.1),
-            (thrust, NS_WINDOW_SCATTER.0),
-        )
-    } else if design == FlappingKinematics::from_degrees([13.0, 20.0, 0.0, 110.0]) {
-        (
-            (thrust, NS_WINDOW_SCATTER.0),
-            (efficiency, NS_WINDOW_SCATTER.1),
-        )
-    } else {
-        return;
-    };
-    assert!(
-        within(close.0, close.1),
-        "declared {:.4}, measured {:.4}",
-        close.1,
-        close.0
-    );
-    assert!(
-        below.0 < below.1,
-        "declared {:.4}, measured {:.4}",
-        below.1,
-        below.0
-    );
+    for (measured, declared) in [
+        (thrust, NS_WINDOW_SCATTER.0),
+        (efficiency, NS_WINDOW_SCATTER.1),
+    ] {
+        assert!(
+            measured < declared,
+            "declared {declared:.4}, measured {measured:.4}"
+        );
+    }
 }
 
 /// The spin-up (`ViscousPlate::spin_up`: the two strokes before the
@@ -704,14 +765,7 @@ fn ns_deforming_window_scatter_benchmark() {
 #[test]
 #[ignore = "fails (CT -17 %, efficiency -16 % against the full grid's window; docs/ns-design, \"The spin-up\"), and heavy (about 3 min): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::a_spin_up_keeps_the_deforming_window_scores`"]
 fn a_spin_up_keeps_the_deforming_window_scores() {
-    use fwav::aeroelastic::handoff::section::SectionFile;
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/fwav_cycle1_section.json");
-    let section = SectionFile::read(&path).unwrap();
-    let full = SectionCase {
-        deformation: section.samples,
-        ..ns_case(ViscousPlate::new(0.04))
-    };
+    let full = deforming_case(ViscousPlate::new(0.04));
     let spun = SectionCase {
         model: SectionFlowModel::Ns(ViscousPlate {
             spin_up: true,
@@ -743,4 +797,39 @@ fn a_spin_up_keeps_the_deforming_window_scores() {
             "{what}: spun up {spun:.4}, full grid {full:.4}"
         );
     }
+}
+
+/// How the scored window of the deforming default section moves with the
+/// time step, design by design: the section deforming as the built-in
+/// design's first system analysis found (`tests/data/fwav_cycle1_section.json`),
+/// the designs of `FWAV_NS_DESIGNS` ("9,20,0,90;11,40,-10,90": Hz and
+/// degrees) evaluated as the discipline evaluates them (two at a time)
+/// at `FWAV_NS_COURANT`. The L18 rows of the first cycle's discipline at
+/// Courant 4 (`ns_discipline_benchmark` with `FWAV_NS_COURANT=4`) against
+/// Courant 3 (the NS design run of docs/ns-design, cycle 1) moved CT by
+/// 5.6 % RMS and up to 12.8 %; this runs the rows that moved most at a
+/// step half the default's (README, "A longer step").
+#[test]
+#[ignore = "benchmark (about 15 min at Courant 1.5 for four designs): `FWAV_NS_COURANT=1.5 FWAV_NS_DESIGNS=\"9,20,0,90;11,40,-10,90\" cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_window_time_step_benchmark`"]
+fn ns_window_time_step_benchmark() {
+    use rayon::prelude::*;
+    let case = deforming_case(env_plate());
+    let designs: Vec<FlappingKinematics> = std::env::var("FWAV_NS_DESIGNS").map_or_else(
+        |_| vec![FlappingKinematics::INITIAL],
+        |v| v.split(';').map(parse_design).collect(),
+    );
+    let clock = std::time::Instant::now();
+    let results: Vec<_> = designs.par_iter().map(|d| case.evaluate(d)).collect();
+    for (design, result) in designs.iter().zip(&results) {
+        let r = result.as_ref().unwrap();
+        println!(
+            "{:?} at Courant {}: CT {:.4}, CP {:.4}, efficiency {:.4}",
+            design.degrees(),
+            env_plate().courant,
+            r.ct,
+            r.cp,
+            r.efficiency
+        );
+    }
+    println!("{:.0} s", clock.elapsed().as_secs_f64());
 }

@@ -204,9 +204,9 @@ fn relative_deviation(values: &[f64]) -> f64 {
 /// last two of four), the relative standard deviation of the windows' CT
 /// and efficiency `CT / CP` (sample, n - 1). On the default 384 x 320
 /// the rigid section's flow repeats from the fourth stroke, so both must
-/// lie well below the declared scatter, which is the deforming section's
-/// (`discipline_ns::ns_deforming_window_scatter_benchmark`): below half
-/// of it. Measured on 384 x 320 (2026-12-03, the
+/// lie well below the declared scatter, which is how far the deforming
+/// section's L18 rows move with the step (`discipline_ns::ns_discipline_benchmark`):
+/// below half of it. Measured on 384 x 320 (2026-12-03, the
 /// `default_section_four_cycles_benchmark` run with `FWAV_NS_CYCLES=12`,
 /// from its stroke means): CT 0.20 %, efficiency 0.32 %, 293 s in a slow
 /// hour. On 384 x 240, the default before, whose flow never settled:
