@@ -808,12 +808,26 @@ fn a_spin_up_keeps_the_deforming_window_scores() {
 /// Courant 4 (`ns_discipline_benchmark` with `FWAV_NS_COURANT=4`) against
 /// Courant 3 (the NS design run of docs/ns-design, cycle 1) moved CT by
 /// 5.6 % RMS and up to 12.8 %; this runs the rows that moved most at a
-/// step half the default's (README, "A longer step").
+/// step half the default's (README, "A longer step"). `FWAV_NS_CYCLES`
+/// sets the strokes (the last two scored; 4 by default). Measured
+/// (2026-12-04), CT and efficiency at Courant 4 / 3 / 1.5: row 2 (the
+/// initial design) 0.0895 / 0.0850 / 0.0855 and 0.0356 / 0.0341 /
+/// 0.0342; row 4 (9 Hz, ±20°, 0°, 90°) 0.0370 / 0.0328 / 0.0364 and
+/// 0.0454 / 0.0406 / 0.0452; row 14 (11, 40, −10, 90) 0.1081 / 0.1216 /
+/// 0.1270 and 0.0242 / 0.0270 / 0.0285; row 18 (13, 30, −10, 90) 0.1256
+/// / 0.1162 / 0.1288 and 0.0336 / 0.0314 / 0.0344 (898 s for the four at
+/// Courant 1.5). Six strokes, strokes 5–6 scored, Courant 4 / 3: row 4
+/// 0.0353 / 0.0339 and 0.0446 / 0.0422 (+4.1 %, +5.7 %), row 18 0.1168
+/// / 0.1164 and 0.0311 / 0.0313 (+0.3 %, −0.6 %); 247 s and 322 s for
+/// the pair.
 #[test]
 #[ignore = "benchmark (about 15 min at Courant 1.5 for four designs): `FWAV_NS_COURANT=1.5 FWAV_NS_DESIGNS=\"9,20,0,90;11,40,-10,90\" cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_window_time_step_benchmark`"]
 fn ns_window_time_step_benchmark() {
     use rayon::prelude::*;
-    let case = deforming_case(env_plate());
+    let case = SectionCase {
+        cycles: std::env::var("FWAV_NS_CYCLES").map_or(4, |v| v.parse().unwrap()),
+        ..deforming_case(env_plate())
+    };
     let designs: Vec<FlappingKinematics> = std::env::var("FWAV_NS_DESIGNS").map_or_else(
         |_| vec![FlappingKinematics::INITIAL],
         |v| v.split(';').map(parse_design).collect(),
