@@ -121,10 +121,11 @@ impl SectionFlowModel {
 /// efficiency by 4.95 % RMS (up to 11.7 %), the mean by +0.7 %: two
 /// draws, so one evaluation's deviation is those over √2, **3.95 %** and
 /// **3.50 %**. The rows that moved most, at a step half the default's
-/// (Courant 1.5, `discipline_ns::ns_window_time_step_benchmark`), moved
-/// as much from Courant 3 (CT −9.9 %, −4.3 %, −9.8 %, −0.6 % for rows 4,
-/// 14, 18 and the initial design 2): the window's scores do not converge
-/// with the step; they scatter.
+/// (Courant 1.5, `discipline_ns::ns_window_time_step_benchmark`), were
+/// as far from Courant 3's (Courant 3's CT −9.9 %, −4.3 %, −9.8 %,
+/// −0.6 % from Courant 1.5's for rows 4, 14, 18 and the initial design,
+/// row 2): the window's scores do not converge with the step; they
+/// scatter.
 ///
 /// From window to window of one 12-stroke run (strokes 3 to 12 as five
 /// windows of two; `discipline_ns::ns_deforming_window_scatter_benchmark`,

@@ -629,7 +629,7 @@ fn ns_discipline_benchmark() {
             100.0 * thrust,
             100.0 * efficiency
         );
-        if std::env::var("FWAV_NS_COURANT").as_deref() == Ok("4") {
+        if env_plate().courant == 4.0 {
             let one = |rms: f64| rms / std::f64::consts::SQRT_2;
             for (measured, declared) in [
                 (one(thrust), NS_WINDOW_SCATTER.0),
@@ -684,8 +684,9 @@ fn ns_deforming_evaluation_benchmark() {
 /// How much the Navier–Stokes scores of the deforming default section
 /// scatter from window to window of one run, which must be less than
 /// what two evaluations differ by (`section_model::NS_WINDOW_SCATTER`,
-/// taken from the L18 rows at two steps: `ns_discipline_benchmark`): 12 strokes on the full grid (no spin-up),
-/// deforming as the default design's first system analysis found, at the
+/// taken from the L18 rows at two steps: `ns_discipline_benchmark`): 12
+/// strokes on the full grid (no spin-up), deforming as the default
+/// design's first system analysis found, at the
 /// built-in initial kinematics (or `FWAV_NS_DESIGN="13,20,0,110"`: Hz and
 /// degrees; `FWAV_NS_RADIAL` sets the rings, `FWAV_NS_COURANT` the
 /// step's Courant number), strokes 3 to 12 as five
@@ -693,8 +694,8 @@ fn ns_deforming_evaluation_benchmark() {
 /// discipline scores its window (mean CT, mean CT over mean CP). Until
 /// 2026-12-04 this was the declared scatter (the efficiency's from the
 /// initial kinematics, the thrust's from the 13 Hz design), but these
-/// designs' flows settle where many L18 rows' do not. Measured on 384 x 320 (2026-12-03, slow hour): at the initial
-/// kinematics CT 0.0850, 0.0885, 0.0885, 0.0869, 0.0877 (1.65 %),
+/// designs' flows settle where many L18 rows' do not. Measured on 384 x
+/// 320 (2026-12-03, slow hour): at the initial kinematics CT 0.0850, 0.0885, 0.0885, 0.0869, 0.0877 (1.65 %),
 /// efficiency 0.0341, 0.0352, 0.0352, 0.0346, 0.0349 (1.38 %), 561 s; at
 /// 13 Hz, ±20°, plane 110° CT 0.0814, 0.0831, 0.0826, 0.0851, 0.0853
 /// (1.99 %), efficiency 0.0539, 0.0544, 0.0540, 0.0544, 0.0545 (0.52 %),
