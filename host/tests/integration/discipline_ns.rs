@@ -819,8 +819,12 @@ fn a_spin_up_keeps_the_deforming_window_scores() {
 /// / 0.1162 / 0.1288 and 0.0336 / 0.0314 / 0.0344 (898 s for the four at
 /// Courant 1.5). Six strokes, strokes 5–6 scored, Courant 4 / 3: row 4
 /// 0.0353 / 0.0339 and 0.0446 / 0.0422 (+4.1 %, +5.7 %), row 18 0.1168
-/// / 0.1164 and 0.0311 / 0.0313 (+0.3 %, −0.6 %); 247 s and 322 s for
-/// the pair.
+/// / 0.1164 and 0.0311 / 0.0313 (+0.3 %, −0.6 %) (247 s and 322 s for
+/// the pair); row 7 (9, 30, −10, 110) 0.0531 / 0.0562 and 0.0370 /
+/// 0.0384, row 11 (11, 20, −10, 110) 0.0536 / 0.0512 and 0.0513 /
+/// 0.0500, row 14 0.1202 / 0.0905 (+33 %) and 0.0268 / 0.0205, row 6
+/// (13, 40, −10, 70) 0.1638 / 0.1670 and 0.0254 / 0.0260 (552 s and
+/// 725 s for the four).
 #[test]
 #[ignore = "benchmark (about 15 min at Courant 1.5 for four designs): `FWAV_NS_COURANT=1.5 FWAV_NS_DESIGNS=\"9,20,0,90;11,40,-10,90\" cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_window_time_step_benchmark`"]
 fn ns_window_time_step_benchmark() {
