@@ -707,7 +707,12 @@ fn ns_deforming_evaluation_benchmark() {
 /// (docs/ns-design). At Courant 4 (`FWAV_NS_COURANT=4`, initial
 /// kinematics, 2026-12-04): 0.61 % and 0.65 %, 327 s against Courant 3's
 /// 498 s the same hour, but its first window 5.3 % (CT) and 4.4 %
-/// (efficiency) above Courant 3's (README, "Speed").
+/// (efficiency) above Courant 3's (README, "Speed"). At L18 row 14 (11
+/// Hz, ±40°, −10°, plane 90°; `RAYON_NUM_THREADS=1`, 2026-12-04): CT
+/// 0.1171, 0.1144, 0.1245, 0.1029, 0.1061 (7.7 %; efficiency 7.0 %),
+/// 754 s, at Courant 3, which fails the declared scatter, and 0.1090,
+/// 0.1035, 0.1276, 0.1297, 0.0993 (12.3 %), 581 s, at Courant 4; their
+/// means agree within 0.7 % (README, "The L18 rows at another step").
 #[test]
 #[ignore = "benchmark (about 10 min in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_deforming_window_scatter_benchmark`"]
 fn ns_deforming_window_scatter_benchmark() {
