@@ -711,9 +711,9 @@ fn ns_deforming_evaluation_benchmark() {
 /// Hz, ±40°, −10°, plane 90°; `RAYON_NUM_THREADS=1`, 2026-12-04): CT
 /// 0.1171, 0.1144, 0.1245, 0.1029, 0.1061 (7.7 %; efficiency 7.0 %),
 /// 754 s, at Courant 3 (above the declared scatter: not checked there),
-/// and 0.1090,
-/// 0.1035, 0.1276, 0.1297, 0.0993 (12.3 %), 581 s, at Courant 4; their
-/// means agree within 0.7 % (README, "The L18 rows at another step").
+/// and 0.1090, 0.1035, 0.1276, 0.1297, 0.0993 (12.3 %), 581 s, at
+/// Courant 4; their means agree within 0.7 % (README, "The L18 rows at
+/// another step").
 #[test]
 #[ignore = "benchmark (about 10 min in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_deforming_window_scatter_benchmark`"]
 fn ns_deforming_window_scatter_benchmark() {
