@@ -576,7 +576,8 @@ fn rows_against_the_default(runs: &[fwav::discipline::kinematic::Evaluated]) -> 
 fn ns_discipline_benchmark() {
     use fwav::discipline::kinematic::{optimize, DesignSpace, Weights};
     use fwav::optimize::nsga2::Nsga2Config;
-    let case = deforming_case(env_plate());
+    let plate = env_plate();
+    let case = deforming_case(plate);
     let cache = EvaluationCache::new();
     let clock = std::time::Instant::now();
     let result = optimize(
@@ -620,7 +621,7 @@ fn ns_discipline_benchmark() {
         );
     }
     assert!(result.runs.iter().all(|e| e.result.is_ok()));
-    if case.model != ns_case(ViscousPlate::new(0.04)).model {
+    if plate != ViscousPlate::new(0.04) {
         // Another step: the rows against the default's, the declared
         // scatter's measurement.
         let (thrust, efficiency) = rows_against_the_default(&result.runs);
@@ -629,7 +630,7 @@ fn ns_discipline_benchmark() {
             100.0 * thrust,
             100.0 * efficiency
         );
-        if env_plate().courant == 4.0 {
+        if plate.courant == 4.0 {
             let one = |rms: f64| rms / std::f64::consts::SQRT_2;
             for (measured, declared) in [
                 (one(thrust), NS_WINDOW_SCATTER.0),
@@ -841,9 +842,10 @@ fn a_spin_up_keeps_the_deforming_window_scores() {
 #[ignore = "benchmark (about 15 min at Courant 1.5 for four designs): `FWAV_NS_COURANT=1.5 FWAV_NS_DESIGNS=\"9,20,0,90;11,40,-10,90\" cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns::ns_window_time_step_benchmark`"]
 fn ns_window_time_step_benchmark() {
     use rayon::prelude::*;
+    let plate = env_plate();
     let case = SectionCase {
         cycles: std::env::var("FWAV_NS_CYCLES").map_or(4, |v| v.parse().unwrap()),
-        ..deforming_case(env_plate())
+        ..deforming_case(plate)
     };
     let designs: Vec<FlappingKinematics> = std::env::var("FWAV_NS_DESIGNS").map_or_else(
         |_| vec![FlappingKinematics::INITIAL],
@@ -856,7 +858,7 @@ fn ns_window_time_step_benchmark() {
         println!(
             "{:?} at Courant {}: CT {:.4}, CP {:.4}, efficiency {:.4}",
             design.degrees(),
-            env_plate().courant,
+            plate.courant,
             r.ct,
             r.cp,
             r.efficiency
