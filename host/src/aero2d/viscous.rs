@@ -491,7 +491,7 @@ impl ViscousSection {
     /// and the grid's motion, three inverse FFTs a ring a step: 48.5 s
     /// for the default section deforming as the built-in design's first
     /// system analysis found, 25.9 s rigid
-    /// (`discipline_ns::ns_deforming_evaluation_benchmark`).
+    /// (`discipline_ns_scores::ns_deforming_evaluation_benchmark`).
     ///
     /// # Errors
     /// As [`Self::run`]; [`ViscousError::DeformingWithoutPeriod`] for a

@@ -63,7 +63,7 @@ const DEFAULT_MEMORY: f64 = 680e6;
 /// evaluations (the initial design, the 18 rows, two confirmations) run
 /// two at a time, each on one core (README, "Speed"). Measured rather
 /// than counted from one evaluation: 21 times the initial design's (77 s
-/// on two threads, `discipline_ns::ns_deforming_evaluation_benchmark`),
+/// on two threads, `discipline_ns_scores::ns_deforming_evaluation_benchmark`),
 /// 27 minutes, fell short of the measured 38. The discipline computed 20
 /// (the analysed design is an array row, found in the cache): ten rounds
 /// of two single-threaded runs, 226 s each, where the initial

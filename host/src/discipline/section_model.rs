@@ -115,20 +115,20 @@ impl SectionFlowModel {
 /// Measured (2026-12-04) as a change of the time step on the first
 /// cycle's 18 L18 rows, the default section deforming as the default
 /// design's first system analysis found (384 × 320 nodes): Courant
-/// number 4 (`discipline_ns::ns_discipline_benchmark` with
+/// number 4 (`discipline_ns_scores::ns_discipline_benchmark` with
 /// `FWAV_NS_COURANT=4`) against the default 3 (docs/ns-design,
 /// `l18-384x320.txt`) moved CT by 5.59 % RMS (up to 12.8 %) and the
 /// efficiency by 4.95 % RMS (up to 11.7 %), the mean by +0.7 %: two
 /// draws, so one evaluation's deviation is those over √2, **3.95 %** and
 /// **3.50 %**. The rows that moved most, at a step half the default's
-/// (Courant 1.5, `discipline_ns::ns_window_time_step_benchmark`), were
+/// (Courant 1.5, `discipline_ns_scores::ns_window_time_step_benchmark`), were
 /// as far from Courant 3's (Courant 3's CT −9.9 %, −4.3 %, −9.8 %,
 /// −0.6 % from Courant 1.5's for rows 4, 14, 18 and the initial design,
 /// row 2): the window's scores do not converge with the step; they
 /// scatter.
 ///
 /// From window to window of one 12-stroke run (strokes 3 to 12 as five
-/// windows of two; `discipline_ns::ns_deforming_window_scatter_benchmark`,
+/// windows of two; `discipline_ns_scores::ns_deforming_window_scatter_benchmark`,
 /// `viscous_default_section::ns_evaluation_window_scatter_benchmark`)
 /// the scatter is smaller, as these designs' flows settle:
 ///

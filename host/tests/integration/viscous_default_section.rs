@@ -42,11 +42,11 @@ fn fwav_mid_span_run(section: &ViscousSection, cycles: f64) -> fwav::aero2d::vis
 /// at 3 m/s; 11 Hz, +-30 deg, stroke plane 90 deg), rigid, as a 4 % plate
 /// at the default resolution (384 x 320, Courant 3), under 60 s on this
 /// machine. Measured on 384 x 320: 118.3 s in a slow hour
-/// (`discipline_ns::ns_deforming_evaluation_benchmark`; 12 strokes 1.34
+/// (`discipline_ns_scores::ns_deforming_evaluation_benchmark`; 12 strokes 1.34
 /// times 384 x 240's in one hour), so about 43 s in a normal one. On 384
 /// x 240: 44.2 s, 20,905 steps, 22.9 ns per cell per step, on a day the
 /// same run took 31.9 s in
-/// `discipline_ns::ns_deforming_evaluation_benchmark` (the machine's
+/// `discipline_ns_scores::ns_deforming_evaluation_benchmark` (the machine's
 /// speed varies by half from hour to hour); the former default, 384 x
 /// 160 at Courant 1.5, 31.3 s, 36,025 steps, 14.1 ns, on a fast day (256
 /// x 160 at Courant 2 with a step never lengthened: 34.4 s, 19.8 ns, an
@@ -205,7 +205,7 @@ fn relative_deviation(values: &[f64]) -> f64 {
 /// and efficiency `CT / CP` (sample, n - 1). On the default 384 x 320
 /// the rigid section's flow repeats from the fourth stroke, so both must
 /// lie well below the declared scatter, which is how far the deforming
-/// section's L18 rows move with the step (`discipline_ns::ns_discipline_benchmark`):
+/// section's L18 rows move with the step (`discipline_ns_scores::ns_discipline_benchmark`):
 /// below half of it. Measured on 384 x 320 (2026-12-03, the
 /// `default_section_four_cycles_benchmark` run with `FWAV_NS_CYCLES=12`,
 /// from its stroke means): CT 0.20 %, efficiency 0.32 %, 293 s in a slow

@@ -1,0 +1,400 @@
+//! The Navier–Stokes section model's scores in the aerodynamic discipline
+//! measured on the default FWAV section at the default resolution: what
+//! an evaluation and a discipline run cost, how much the scores scatter
+//! from evaluation to evaluation, and how they move with the time step
+//! and a coarser spin-up. All heavy (minutes to half an hour): ignored
+//! benchmarks, run by name (the README, "Speed" and "The evaluation's
+//! window", quotes their figures).
+
+use fwav::aeroelastic::FlappingKinematics;
+use fwav::config::SystemConfig;
+use fwav::discipline::cache::EvaluationCache;
+use fwav::discipline::section::SectionCase;
+use fwav::discipline::section_model::{SectionFlowModel, ViscousPlate, NS_WINDOW_SCATTER};
+
+use crate::discipline_ns::ns_case;
+
+/// The NS model of `plate` on the default FWAV section, deforming as the
+/// built-in design's first system analysis found
+/// (`tests/data/fwav_cycle1_section.json`).
+fn deforming_case(plate: ViscousPlate) -> SectionCase {
+    use fwav::aeroelastic::handoff::section::SectionFile;
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/data/fwav_cycle1_section.json");
+    SectionCase {
+        deformation: SectionFile::read(&path).unwrap().samples,
+        ..ns_case(plate)
+    }
+}
+
+/// The design of `FWAV_NS_DESIGN` ("13,20,0,110": Hz and degrees), or
+/// the built-in initial kinematics.
+fn env_design() -> FlappingKinematics {
+    std::env::var("FWAV_NS_DESIGN").map_or(FlappingKinematics::INITIAL, |v| parse_design(&v))
+}
+
+/// A design written "13,20,0,110" (Hz and degrees).
+fn parse_design(text: &str) -> FlappingKinematics {
+    let x: Vec<f64> = text.split(',').map(|x| x.trim().parse().unwrap()).collect();
+    FlappingKinematics::from_degrees([x[0], x[1], x[2], x[3]])
+}
+
+/// The default plate, its rings and Courant number replaced by
+/// `FWAV_NS_RADIAL` and `FWAV_NS_COURANT` where set.
+fn env_plate() -> ViscousPlate {
+    let default = ViscousPlate::new(0.04);
+    ViscousPlate {
+        radial: std::env::var("FWAV_NS_RADIAL").map_or(default.radial, |v| v.parse().unwrap()),
+        courant: std::env::var("FWAV_NS_COURANT").map_or(default.courant, |v| v.parse().unwrap()),
+        ..default
+    }
+}
+
+/// The RMS relative change of the rows' net CT and net efficiency from
+/// the default resolution's, the first cycle's rows of the NS design run
+/// on the same section (docs/ns-design, `l18-384x320.txt`).
+fn rows_against_the_default(runs: &[fwav::discipline::kinematic::Evaluated]) -> (f64, f64) {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/ns-design/l18-384x320.txt");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .filter_map(|l| {
+            let cells: Vec<f64> = l.split('|').filter_map(|c| c.trim().parse().ok()).collect();
+            (cells.len() == 9).then_some(cells)
+        })
+        .collect();
+    assert_eq!(rows.len(), runs.len(), "{}", path.display());
+    let (mut thrust, mut efficiency) = (0.0, 0.0);
+    for (row, run) in rows.iter().zip(runs) {
+        assert_eq!(run.design.degrees(), [row[1], row[2], row[3], row[4]]);
+        let r = run.result.as_ref().unwrap();
+        thrust += (r.ct_net / row[5] - 1.0).powi(2);
+        efficiency += (r.efficiency_net / row[6] - 1.0).powi(2);
+    }
+    let n = rows.len() as f64;
+    ((thrust / n).sqrt(), (efficiency / n).sqrt())
+}
+
+/// The issue's speed target for the discipline: the whole aerodynamic
+/// discipline (the initial design, the 18 L18 rows and the ANOM and RSM
+/// confirmations, each a 4-stroke Navier–Stokes evaluation at the default
+/// resolution, in parallel) on the built-in FWAV's mid-span section, the
+/// 4 % plate deforming as the built-in design's first system analysis
+/// found (`tests/data/fwav_cycle1_section.json`), from the built-in
+/// initial design, equal weights, under 10 minutes on this 2-core
+/// machine: the work of the first cycle's discipline of `fwav design`
+/// with `section_model = "ns"` (885 s in the deforming design run of
+/// docs/ns-design, commit c35523c, on 256 × 160 before the step control
+/// that lengthens the step where the flow allows). Measured on the
+/// default 384 × 240 at Courant 3 (2026-12-03): 1,487 s for 19
+/// evaluations, in an hour when this machine ran slow (the deforming
+/// evaluation of `ns_deforming_evaluation_benchmark` took 84.9 s then,
+/// 57.3 s half an hour before; scaled, about 1,000 s). Before, 924 s on
+/// 384 × 160 at Courant 1.5 and 494 s on 256 × 160. Fails.
+///
+/// At another step (`FWAV_NS_COURANT`) it compares the rows with the
+/// default's (the NS design run's first cycle, docs/ns-design,
+/// `l18-384x320.txt`): at Courant 4 (2026-12-04) the 19 evaluations
+/// took 1,712 s, and the rows' CT moved by 5.59 % RMS and their
+/// efficiency by 4.95 %, so one evaluation's scatter is 3.95 % and 3.50 %
+/// (`NS_WINDOW_SCATTER`, which must be these within 10 %). The choice
+/// moved with them: best row 13 Hz, ±40°, −10°, plane 70° (2.595; at
+/// Courant 3 13 Hz, ±30°, 0°, 70°, 2.580), ANOM 13 Hz, ±40°, 10°, 110°
+/// (Courant 3: ±30°, 0°, 110°); frequency level means 1.56, 1.93, 2.47
+/// (1.61, 2.05, 2.55).
+#[test]
+#[ignore = "benchmark (17 to 25 min; over the issue's 10): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_discipline_benchmark`"]
+fn ns_discipline_benchmark() {
+    use fwav::discipline::kinematic::{optimize, DesignSpace, Weights};
+    use fwav::optimize::nsga2::Nsga2Config;
+    let plate = env_plate();
+    let case = deforming_case(plate);
+    let cache = EvaluationCache::new();
+    let clock = std::time::Instant::now();
+    let result = optimize(
+        &case,
+        &DesignSpace::fwav(),
+        SystemConfig::default().kinematics(),
+        Weights {
+            thrust: 1.0,
+            efficiency: 1.0,
+        },
+        &Nsga2Config::default(),
+        &cache,
+    )
+    .unwrap();
+    let seconds = clock.elapsed().as_secs_f64();
+    println!(
+        "NS discipline: {} evaluations in {seconds:.1} s; chosen {:?}",
+        cache.len(),
+        result.chosen.map(|i| &result.candidates[i].method)
+    );
+    // Each row's scores, to set beside docs/ns-design's listing.
+    for (row, run) in result.runs.iter().enumerate() {
+        if let Ok(r) = &run.result {
+            println!(
+                "row {}: {:?}: CT {:.4}, CP {:.4}, efficiency {:.4}",
+                row + 1,
+                run.design.degrees(),
+                r.ct,
+                r.cp,
+                r.efficiency
+            );
+        }
+    }
+    println!("level means: {:?}", result.level_means);
+    for c in &result.candidates {
+        println!(
+            "{}: {:?} combined {:?}",
+            c.method,
+            c.confirmation.design.degrees(),
+            c.combined
+        );
+    }
+    assert!(result.runs.iter().all(|e| e.result.is_ok()));
+    if plate != ViscousPlate::new(0.04) {
+        // Another step: the rows against the default's, the declared
+        // scatter's measurement.
+        let (thrust, efficiency) = rows_against_the_default(&result.runs);
+        println!(
+            "against the default step's rows: RMS change CT {:.2} %, efficiency {:.2} %",
+            100.0 * thrust,
+            100.0 * efficiency
+        );
+        if plate.courant == 4.0 {
+            let one = |rms: f64| rms / std::f64::consts::SQRT_2;
+            for (measured, declared) in [
+                (one(thrust), NS_WINDOW_SCATTER.0),
+                (one(efficiency), NS_WINDOW_SCATTER.1),
+            ] {
+                assert!(
+                    (declared / measured - 1.0).abs() < 0.1,
+                    "declared {declared:.4}, measured {measured:.4}"
+                );
+            }
+        }
+        return;
+    }
+    assert!(seconds < 600.0, "{seconds:.1} s against the issue's 600 s");
+}
+
+/// One Navier–Stokes evaluation of the default FWAV section at the
+/// default resolution, the 4 % plate deforming as the default design's
+/// first system analysis found (`host/tests/data/fwav_cycle1_section.json`,
+/// 40 samples of 53 points: a heave of ±0.13 chords from the wing's
+/// bending, a pitch of about ±1.4° and little camber) beside the rigid
+/// plate, at the built-in initial kinematics: the cost of the moving grid
+/// and what the deformation changes. Measured on the default 384 x 320
+/// (2026-12-03, a slow hour): rigid 118.3 s, deforming 190.4 s (CT
+/// 0.0850, efficiency 0.0341), which fails the issue's 60 s; about 43 s
+/// and 77 s in a normal hour (on 384 x 240: 31.9 s and 57.3 s).
+#[test]
+#[ignore = "benchmark (2 to 5 min); fails the issue's 60 s (deforming: about 77 s in a normal hour, 190 s in a slow one): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_deforming_evaluation_benchmark`"]
+fn ns_deforming_evaluation_benchmark() {
+    let rigid = ns_case(ViscousPlate::new(0.04));
+    let deforming = deforming_case(ViscousPlate::new(0.04));
+    let design = FlappingKinematics::INITIAL;
+    let mut seconds = Vec::new();
+    let mut results = Vec::new();
+    for case in [&rigid, &deforming] {
+        let clock = std::time::Instant::now();
+        results.push(case.evaluate(&design).unwrap());
+        seconds.push(clock.elapsed().as_secs_f64());
+    }
+    for (name, (r, s)) in ["rigid", "deforming"]
+        .iter()
+        .zip(results.iter().zip(&seconds))
+    {
+        println!(
+            "{name}: {s:.1} s, CT {:.4}, CP {:.4}, efficiency {:.4}, CT change {:+.4}",
+            r.ct, r.cp, r.efficiency, r.ct_change
+        );
+    }
+    assert!(seconds[1] < 60.0, "the issue's 60 s: {:.1} s", seconds[1]);
+}
+
+/// How much the Navier–Stokes scores of the deforming default section
+/// scatter from window to window of one run, which must be less than
+/// what two evaluations differ by (`section_model::NS_WINDOW_SCATTER`,
+/// taken from the L18 rows at two steps: `ns_discipline_benchmark`): 12
+/// strokes on the full grid (no spin-up), deforming as the default
+/// design's first system analysis found, at the
+/// built-in initial kinematics (or `FWAV_NS_DESIGN="13,20,0,110"`: Hz and
+/// degrees; `FWAV_NS_RADIAL` sets the rings, `FWAV_NS_COURANT` the
+/// step's Courant number), strokes 3 to 12 as five
+/// windows of two, each as the
+/// discipline scores its window (mean CT, mean CT over mean CP). Until
+/// 2026-12-04 this was the declared scatter (the efficiency's from the
+/// initial kinematics, the thrust's from the 13 Hz design), but these
+/// designs' flows settle where many L18 rows' do not. Measured on 384 x
+/// 320 (2026-12-03, slow hour): at the initial kinematics CT 0.0850, 0.0885, 0.0885, 0.0869, 0.0877 (1.65 %),
+/// efficiency 0.0341, 0.0352, 0.0352, 0.0346, 0.0349 (1.38 %), 561 s; at
+/// 13 Hz, ±20°, plane 110° CT 0.0814, 0.0831, 0.0826, 0.0851, 0.0853
+/// (1.99 %), efficiency 0.0539, 0.0544, 0.0540, 0.0544, 0.0545 (0.52 %),
+/// 642 s. On 384 x 240, the default before: 2.0 % and 1.8 % (461 s),
+/// 2.8 % and 1.1 % (335 s). At L18 row 18 (13 Hz, ±30°, −10°, plane 90°,
+/// `FWAV_NS_DESIGN=13,30,-10,90`; shared with a design run): 0.66 % and
+/// 0.57 % on 384 x 320 (1,106 s), 10.4 % and 8.9 % on 384 x 240, 7.4 %
+/// and 5.6 % on 384 x 400, whose first window is within 1.6 % of 320's
+/// (docs/ns-design). At Courant 4 (`FWAV_NS_COURANT=4`, initial
+/// kinematics, 2026-12-04): 0.61 % and 0.65 %, 327 s against Courant 3's
+/// 498 s the same hour, but its first window 5.3 % (CT) and 4.4 %
+/// (efficiency) above Courant 3's (README, "Speed"). At L18 row 14 (11
+/// Hz, ±40°, −10°, plane 90°; `RAYON_NUM_THREADS=1`, 2026-12-04): CT
+/// 0.1171, 0.1144, 0.1245, 0.1029, 0.1061 (7.7 %; efficiency 7.0 %),
+/// 754 s, at Courant 3 (above the declared scatter: not checked there),
+/// and 0.1090, 0.1035, 0.1276, 0.1297, 0.0993 (12.3 %), 581 s, at
+/// Courant 4; their means agree within 0.7 % (README, "The L18 rows at
+/// another step").
+#[test]
+#[ignore = "benchmark (about 10 min in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_deforming_window_scatter_benchmark`"]
+fn ns_deforming_window_scatter_benchmark() {
+    let design = env_design();
+    let plate = ViscousPlate {
+        spin_up: false,
+        ..env_plate()
+    };
+    let at_default_resolution = plate == ViscousPlate::new(0.04);
+    let case = SectionCase {
+        cycles: 12,
+        ..deforming_case(plate)
+    };
+    let clock = std::time::Instant::now();
+    let (history, _) = case.history(&design).unwrap();
+    let (windows, thrust, efficiency) =
+        crate::viscous_default_section::window_scatter(&history.ct, &history.cp);
+    println!(
+        "{:?}: windows (CT, efficiency): {windows:.4?}; relative deviation: CT {thrust:.4}, \
+         efficiency {efficiency:.4}; {:.0} s",
+        design.degrees(),
+        clock.elapsed().as_secs_f64()
+    );
+    // The declared scatter is the default resolution's: another is
+    // measured, not checked. From window to window of one run the
+    // scores scatter less than from run to run (`NS_WINDOW_SCATTER`).
+    // Checked at the two designs whose flows settle; a row whose flow
+    // wanders (row 14: 7.7 %) scatters beyond the rows' RMS.
+    let settled = [
+        FlappingKinematics::INITIAL,
+        FlappingKinematics::from_degrees([13.0, 20.0, 0.0, 110.0]),
+    ];
+    if !at_default_resolution || !settled.contains(&design) {
+        return;
+    }
+    for (measured, declared) in [
+        (thrust, NS_WINDOW_SCATTER.0),
+        (efficiency, NS_WINDOW_SCATTER.1),
+    ] {
+        assert!(
+            measured < declared,
+            "declared {declared:.4}, measured {measured:.4}"
+        );
+    }
+}
+
+/// The spin-up (`ViscousPlate::spin_up`: the two strokes before the
+/// scored window on 256 x 160 nodes) against the full grid throughout, on
+/// the deforming default section at the built-in initial kinematics: the
+/// window's CT and efficiency within 3 % (the issue's convergence
+/// figure; the full grid's own windows scatter 2.0 % and 1.8 %,
+/// `ns_deforming_window_scatter_benchmark`).
+///
+/// Fails: CT 0.0712 against 0.0859 (-17 %), efficiency 0.0286 against
+/// 0.0341 (-16 %), 75 s against 126 s. The full grid's flow still
+/// carries a mean lift from its start into the window (stroke means
+/// +0.81, +0.39, +0.22, +0.19); the spin-up grid's loses it within a
+/// stroke (+0.95, +0.03, then +0.02, +0.04 on the full grid), and the
+/// window differs. Over the 18 rows of the L18 array the spin-up moved
+/// CT by 13 % RMS (up to 29 %) with no mean shift (docs/ns-design, "The
+/// spin-up"), so it stays off.
+#[test]
+#[ignore = "fails (CT -17 %, efficiency -16 % against the full grid's window; docs/ns-design, \"The spin-up\"), and heavy (about 3 min): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::a_spin_up_keeps_the_deforming_window_scores`"]
+fn a_spin_up_keeps_the_deforming_window_scores() {
+    let full = deforming_case(ViscousPlate::new(0.04));
+    let spun = SectionCase {
+        model: SectionFlowModel::Ns(ViscousPlate {
+            spin_up: true,
+            ..ViscousPlate::new(0.04)
+        }),
+        ..full.clone()
+    };
+    let design = FlappingKinematics::INITIAL;
+    let mut results = Vec::new();
+    for (name, case) in [("full grid", &full), ("spun up", &spun)] {
+        let clock = std::time::Instant::now();
+        let r = case.evaluate(&design).unwrap();
+        println!(
+            "{name}: {:.1} s, CT {:.4}, CP {:.4}, efficiency {:.4}",
+            clock.elapsed().as_secs_f64(),
+            r.ct,
+            r.cp,
+            r.efficiency
+        );
+        results.push(r);
+    }
+    let (f, s) = (&results[0], &results[1]);
+    for (what, spun, full) in [
+        ("CT", s.ct, f.ct),
+        ("efficiency", s.efficiency, f.efficiency),
+    ] {
+        assert!(
+            (spun / full - 1.0).abs() < 0.03,
+            "{what}: spun up {spun:.4}, full grid {full:.4}"
+        );
+    }
+}
+
+/// How the scored window of the deforming default section moves with the
+/// time step, design by design: the section deforming as the built-in
+/// design's first system analysis found (`tests/data/fwav_cycle1_section.json`),
+/// the designs of `FWAV_NS_DESIGNS` ("9,20,0,90;11,40,-10,90": Hz and
+/// degrees) evaluated as the discipline evaluates them (two at a time)
+/// at `FWAV_NS_COURANT`. The L18 rows of the first cycle's discipline at
+/// Courant 4 (`ns_discipline_benchmark` with `FWAV_NS_COURANT=4`) against
+/// Courant 3 (the NS design run of docs/ns-design, cycle 1) moved CT by
+/// 5.6 % RMS and up to 12.8 %; this runs the rows that moved most at a
+/// step half the default's (README, "A longer step"). `FWAV_NS_CYCLES`
+/// sets the strokes (the last two scored; 4 by default). Measured
+/// (2026-12-04), CT and efficiency at Courant 4 / 3 / 1.5: row 2 (the
+/// initial design) 0.0895 / 0.0850 / 0.0855 and 0.0356 / 0.0341 /
+/// 0.0342; row 4 (9 Hz, ±20°, 0°, 90°) 0.0370 / 0.0328 / 0.0364 and
+/// 0.0454 / 0.0406 / 0.0452; row 14 (11, 40, −10, 90) 0.1081 / 0.1216 /
+/// 0.1270 and 0.0242 / 0.0270 / 0.0285; row 18 (13, 30, −10, 90) 0.1256
+/// / 0.1162 / 0.1288 and 0.0336 / 0.0314 / 0.0344 (898 s for the four at
+/// Courant 1.5). Six strokes, strokes 5–6 scored, Courant 4 / 3: row 4
+/// 0.0353 / 0.0339 and 0.0446 / 0.0422 (+4.1 %, +5.7 %), row 18 0.1168
+/// / 0.1164 and 0.0311 / 0.0313 (+0.3 %, −0.6 %) (247 s and 322 s for
+/// the pair); row 7 (9, 30, −10, 110) 0.0531 / 0.0562 and 0.0370 /
+/// 0.0384, row 11 (11, 20, −10, 110) 0.0536 / 0.0512 and 0.0513 /
+/// 0.0500, row 14 0.1202 / 0.0905 (+33 %) and 0.0268 / 0.0205, row 6
+/// (13, 40, −10, 70) 0.1638 / 0.1670 and 0.0254 / 0.0260 (552 s and
+/// 725 s for the four).
+#[test]
+#[ignore = "benchmark (about 15 min at Courant 1.5 for four designs): `FWAV_NS_COURANT=1.5 FWAV_NS_DESIGNS=\"9,20,0,90;11,40,-10,90\" cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_window_time_step_benchmark`"]
+fn ns_window_time_step_benchmark() {
+    use rayon::prelude::*;
+    let plate = env_plate();
+    let case = SectionCase {
+        cycles: std::env::var("FWAV_NS_CYCLES").map_or(4, |v| v.parse().unwrap()),
+        ..deforming_case(plate)
+    };
+    let designs: Vec<FlappingKinematics> = std::env::var("FWAV_NS_DESIGNS").map_or_else(
+        |_| vec![FlappingKinematics::INITIAL],
+        |v| v.split(';').map(parse_design).collect(),
+    );
+    let clock = std::time::Instant::now();
+    let results: Vec<_> = designs.par_iter().map(|d| case.evaluate(d)).collect();
+    for (design, result) in designs.iter().zip(&results) {
+        let r = result.as_ref().unwrap();
+        println!(
+            "{:?} at Courant {}: CT {:.4}, CP {:.4}, efficiency {:.4}",
+            design.degrees(),
+            plate.courant,
+            r.ct,
+            r.cp,
+            r.efficiency
+        );
+    }
+    println!("{:.0} s", clock.elapsed().as_secs_f64());
+}
