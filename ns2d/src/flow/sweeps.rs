@@ -173,21 +173,34 @@ impl<M: Motion> Flow<M> {
             &mut self.sweep_gain,
             nt,
         );
+        // A line's carried change stops where it falls to the rounding of
+        // the largest change of all lines (1e-17 of it; 1e-16 by ring 27
+        // to 41 of 160 on the default FWAV section): the line's rings
+        // above keep the first pass's values. Each line stops on its own,
+        // whatever block it is in, so the flow does not depend on how
+        // many threads share the lines (`tests/thread_count.rs`).
+        let rounding = 1e-17 * change.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
         lines
             .into_par_iter()
             .for_each(|((((mut w, upper_mod), mut solved), gain), k0)| {
                 let rings = solved.len();
                 // Ring by ring, the block's lines side by side (the rings
-                // are contiguous, the lines are not), until the carried
-                // change is below the rounding of the change itself (1e-17
-                // of it; it is 1e-16 by ring 27 to 41 of 160 on the
-                // default FWAV section): the rings above keep the first
-                // pass's values.
+                // are contiguous, the lines are not), until every line's
+                // carried change has stopped (is zeroed: it then adds
+                // nothing, and the back substitution of its rings above
+                // its stop gives the first pass's values again).
                 let mut carried = change[k0..k0 + solved[1].len()].to_vec();
-                let largest = carried.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
                 let mut top = 0;
                 for j in 1..rings - 1 {
-                    if carried.iter().fold(0.0_f64, |m, c| m.max(c.abs())) <= 1e-17 * largest {
+                    let mut live = false;
+                    for c in carried.iter_mut() {
+                        if c.abs() <= rounding {
+                            *c = 0.0;
+                        } else {
+                            live = true;
+                        }
+                    }
+                    if !live {
                         break;
                     }
                     for ((c, s), g) in carried
