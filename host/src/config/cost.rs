@@ -27,7 +27,10 @@
 //! do not grow with the mesh, and on the default wing they are a small
 //! part. The discipline's Navier–Stokes model (`[design] section_model =
 //! "ns"`) is not: its disciplines are added at their measured time
-//! ([`NS_DISCIPLINE_SECONDS`] each, [`NS_CYCLES`] of them).
+//! ([`NS_DISCIPLINE_SECONDS`] each, [`NS_CYCLES`] of them), scaled by the
+//! cycles each evaluation runs (`[design] section_cycles`, over the
+//! measured 4: the step follows the flow, and the flow's speeds are
+//! alike from stroke to stroke, so a stroke costs about the same).
 
 use std::fmt;
 
@@ -71,6 +74,10 @@ const DEFAULT_MEMORY: f64 = 680e6;
 /// the first stroke's 36.0 s over 24.2 s): the array's rows, with their
 /// faster strokes, cost about twice as much on average.
 pub const NS_DISCIPLINE_SECONDS: f64 = 2261.0;
+
+/// The cycles each evaluation ran in [`NS_DISCIPLINE_SECONDS`]'s run
+/// (`[design] section_cycles` of the default design).
+const NS_MEASURED_SECTION_CYCLES: f64 = 4.0;
 
 /// Navier–Stokes disciplines of a design run: the built-in design's
 /// three cycles (the section's deformation changes from cycle to cycle,
@@ -122,7 +129,10 @@ impl CostEstimate {
         let mesh_seconds = DEFAULT_SECONDS * (n / n0).powf(TIME_EXPONENT) * steps / DEFAULT_STEPS;
         let section_seconds = match config.design.section_model {
             SectionModelName::Ldvm => 0.0,
-            SectionModelName::Ns => NS_CYCLES * NS_DISCIPLINE_SECONDS,
+            SectionModelName::Ns => {
+                NS_CYCLES * NS_DISCIPLINE_SECONDS * config.design.section_cycles as f64
+                    / NS_MEASURED_SECTION_CYCLES
+            }
         };
         let seconds = mesh_seconds + section_seconds;
         Self {
@@ -224,5 +234,9 @@ mod tests {
         assert!((e.seconds - ldvm.seconds - e.section_seconds).abs() < 1e-9);
         assert!(e.time_ratio > 10.0 && e.is_far_beyond_default(), "{e}");
         assert!(e.to_string().contains("Navier–Stokes"), "{e}");
+        // Three times the strokes, three times the evaluations' time.
+        ns.design.section_cycles = 12;
+        let long = CostEstimate::of(&ns);
+        assert!((long.section_seconds - 3.0 * e.section_seconds).abs() < 1e-9);
     }
 }

@@ -274,6 +274,7 @@ impl SystemConfig {
             flight: self.flight(),
             lesp_critical: self.design.lesp(),
             model: self.design.flow_model(),
+            cycles: self.design.section_cycles,
             ..SectionCase::fwav_mid_span()
         }
     }

@@ -396,7 +396,7 @@ pub fn optimize_reporting(
         f64::NEG_INFINITY
     };
     // A candidate must beat it by more than the two runs' scatter.
-    let adoption_margin = objective.margin(&initial_result, case.model.window_scatter());
+    let adoption_margin = objective.margin(&initial_result, case.scatter());
     let chosen = best_beyond(&candidates, initial_score + adoption_margin);
     let section = case.modelled_section();
     Ok(KinematicResult {
@@ -777,7 +777,7 @@ mod tests {
         let margin = objective.margin(&at_reference, (0.04, 0.04));
         assert!((margin - std::f64::consts::SQRT_2 * 0.08).abs() < 1e-12);
         assert_eq!(
-            objective.margin(&at_reference, SectionFlowModel::Ldvm.window_scatter()),
+            objective.margin(&at_reference, SectionFlowModel::Ldvm.window_scatter(2)),
             0.0
         );
     }

@@ -24,11 +24,12 @@
 //! [`super::section_model`]): the LDVM above, or laminar Navier–Stokes of
 //! a thin plate ([`crate::aero2d::viscous`]) at the chord Reynolds number
 //! `U c / nu` ([`AIR_KINEMATIC_VISCOSITY`]), summarized the same way (the
-//! last two of `cycles` periods). Its forces include the friction, so its
-//! friction history is zero and `ct_net == ct`; it sheds vorticity where
-//! the flow does, so the critical LESP does not apply to it (the setting
-//! stays, unused); it does not take the deformation and analyses the rigid
-//! section ([`SectionCase::modelled`]).
+//! periods after the first [`TRANSIENT_CYCLES`] of `cycles`). Its forces
+//! include the friction, so its friction history is zero and `ct_net ==
+//! ct`; it sheds vorticity where the flow does, so the critical LESP does
+//! not apply to it (the setting stays, unused: [`SectionCase::modelled`]);
+//! it takes the deformation as the plate's mid-line, on a grid that moves
+//! with it ([`SectionCase::modelled_section`]).
 
 use serde::{Deserialize, Serialize};
 
@@ -66,6 +67,12 @@ pub const AIR_KINEMATIC_VISCOSITY: f64 = 1.46e-5;
 /// measured at the section's Re.
 pub const FWAV_LESP_CRITICAL: f64 = 0.11;
 
+/// The periods each analysis runs before the ones it scores: the start's
+/// transient. An analysis of `cycles` periods is scored by the means over
+/// its last `cycles - 2` ([`SectionCase::scored_cycles`]): strokes 3 and 4
+/// of the default 4.
+pub const TRANSIENT_CYCLES: usize = 2;
+
 /// The section and how to analyse it.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SectionCase {
@@ -79,7 +86,8 @@ pub struct SectionCase {
     /// frame, sample `k` at `(k + 1) dt` after a cycle start (the system
     /// analysis's `section_history`); empty: a rigid flat section.
     pub deformation: Vec<Vec<[f64; 2]>>,
-    /// Cycles simulated; the last two are averaged.
+    /// Cycles simulated; all after the first [`TRANSIENT_CYCLES`] are
+    /// averaged (`[design] section_cycles`).
     pub cycles: usize,
     /// Time steps per cycle (at least; the step is also at most 0.015
     /// chords travelled).
@@ -196,7 +204,7 @@ impl SectionCase {
     /// What this case's evaluations model of the section, for the
     /// reports.
     pub fn modelled_section(&self) -> ModelledSection {
-        ModelledSection::new(&self.model, !self.deformation.is_empty())
+        ModelledSection::new(&self.model, !self.deformation.is_empty(), self.cycles)
     }
 
     /// The chord Reynolds number `U c / nu` in sea-level air.
@@ -246,13 +254,26 @@ impl SectionCase {
         })
     }
 
+    /// The periods the scores average: all after the first
+    /// [`TRANSIENT_CYCLES`].
+    pub fn scored_cycles(&self) -> usize {
+        self.cycles.saturating_sub(TRANSIENT_CYCLES)
+    }
+
+    /// How much one evaluation's scores scatter (relative standard
+    /// deviations of the net thrust and efficiency) for this case's model
+    /// and scored periods ([`SectionFlowModel::window_scatter`]).
+    pub fn scatter(&self) -> (f64, f64) {
+        self.model.window_scatter(self.scored_cycles())
+    }
+
     /// Runs the 2D analysis for `kinematics` by the case's model and
-    /// summarizes its last two periods.
+    /// summarizes its periods after the first [`TRANSIENT_CYCLES`].
     ///
     /// Cost: the LDVM a fraction of a second; the Navier–Stokes model at
-    /// the default resolution 26 s (rigid) to 49 s (deforming as the
-    /// built-in design's first system analysis found) for 4 cycles on two
-    /// cores
+    /// the default resolution about 43 s (rigid) to 77 s (deforming as
+    /// the built-in design's first system analysis found) for 4 cycles on
+    /// two cores, in proportion to the cycles for more
     /// ([`crate::aero2d::viscous::ViscousSection::run`]).
     ///
     /// # Errors
@@ -264,7 +285,7 @@ impl SectionCase {
         kinematics: &FlappingKinematics,
     ) -> Result<SectionResult, EvaluationError> {
         let (history, k) = self.history(kinematics)?;
-        summarize(&history, std::f64::consts::PI / k, k)
+        summarize(&history, std::f64::consts::PI / k, k, self.scored_cycles())
     }
 
     /// The loads' history of the analysis [`Self::evaluate`] summarizes,
@@ -284,7 +305,7 @@ impl SectionCase {
             SectionFlowModel::Ns(plate) => {
                 let (path, duration) =
                     (SectionPath::Flapping(flapping), self.cycles as f64 * period);
-                let section = plate.section(self.cycles);
+                let section = plate.section();
                 let run = if self.deformation.is_empty() {
                     section.run(path, self.reynolds(), duration)?
                 } else {
@@ -351,7 +372,7 @@ impl SectionCase {
                 streamwise_friction(reynolds, 0.0, h_dot, x_dot)
             })
             .collect();
-        summarize(&history, std::f64::consts::PI / k, k)
+        summarize(&history, std::f64::consts::PI / k, k, self.scored_cycles())
     }
 
     /// Refuses case values out of range: a chord, radius or speed not
@@ -417,17 +438,22 @@ impl SectionCase {
     }
 }
 
-/// The cycle means of the last two periods of `history` (period `period`,
-/// reduced frequency `k`), the friction estimate's mean subtracted for the
-/// net values (zero for the Navier–Stokes model, whose forces include the
-/// friction: there `ct_net == ct`), and the change of the mean CT from the
-/// second-last period to the last.
-fn summarize(history: &History, period: f64, k: f64) -> Result<SectionResult, EvaluationError> {
-    let (ct, cp, efficiency) = cycle_means(history, period, 2);
+/// The cycle means of the last `scored` periods of `history` (period
+/// `period`, reduced frequency `k`), the friction estimate's mean
+/// subtracted for the net values (zero for the Navier–Stokes model, whose
+/// forces include the friction: there `ct_net == ct`), and the change of
+/// the mean CT from the second-last period to the last.
+fn summarize(
+    history: &History,
+    period: f64,
+    k: f64,
+    scored: usize,
+) -> Result<SectionResult, EvaluationError> {
+    let (ct, cp, efficiency) = cycle_means(history, period, scored);
     let end = history.time.last().copied().unwrap_or(0.0);
     let (ct_before, _, _) = cycle_means_until(history, period, 1, end - period);
     let (ct_last, _, _) = cycle_means(history, period, 1);
-    let friction = cycle_mean_of(history, &history.cd_friction, period, 2);
+    let friction = cycle_mean_of(history, &history.cd_friction, period, scored);
     let result = SectionResult {
         reduced_frequency: k,
         ct,

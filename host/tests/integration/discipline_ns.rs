@@ -11,7 +11,9 @@ use fwav::config::template::commented_toml;
 use fwav::config::SystemConfig;
 use fwav::discipline::cache::{key, EvaluationCache};
 use fwav::discipline::section::{EvaluationError, SectionCase, SectionResult};
-use fwav::discipline::section_model::{SectionFlowModel, SectionModelName, ViscousPlate};
+use fwav::discipline::section_model::{
+    SectionFlowModel, SectionModelName, ViscousPlate, NS_LONG_MEAN_SCATTER, NS_WINDOW_SCATTER,
+};
 
 /// A 12 % plate on 64 × 64 nodes out to 15 chords, first cell a fifth of
 /// the boundary layer: coarse, for a test of seconds (the default is
@@ -38,7 +40,9 @@ pub(crate) fn ns_case(plate: ViscousPlate) -> SectionCase {
 
 /// `section_model` reads "ldvm" (the default) or "ns", with the plate's
 /// thickness at the default resolution and no spin-up (a plate given
-/// one spins up through the strokes before the scored last two);
+/// one spins up through the two strokes before the scored ones); the
+/// strokes each analysis runs, 4 by default (strokes 3 and 4 scored),
+/// are `section_cycles`;
 /// `fwav init`'s template writes both keys with their docs.
 #[test]
 fn section_model_setting_chooses_the_model() {
@@ -59,28 +63,46 @@ fn section_model_setting_chooses_the_model() {
         (plate.thickness, plate.around, plate.radial, plate.spin_up),
         (0.1, 384, 320, false)
     );
-    assert_eq!(plate.section(4).spin_up_periods, 0.0);
+    assert_eq!(plate.section().spin_up_periods, 0.0);
     let spun = ViscousPlate {
         spin_up: true,
         ..plate
     };
-    assert_eq!(spun.section(4).spin_up_periods, 2.0);
-    assert_eq!(spun.section(6).spin_up_periods, 4.0);
+    assert_eq!(spun.section().spin_up_periods, 2.0);
+    assert_eq!(default.section_case().cycles, 4);
+    assert_eq!(default.section_case().scored_cycles(), 2);
+    let long = SystemConfig::from_toml("[design]\nsection_cycles = 12\n").unwrap();
+    assert_eq!(long.section_case().scored_cycles(), 10);
+    // The adoption margin's scatter follows the strokes scored: the
+    // LDVM's none; the Navier–Stokes model's two-stroke window's, and the
+    // long mean's from ten strokes on.
+    assert_eq!(long.section_case().scatter(), (0.0, 0.0));
+    assert_eq!(ns.section_case().scatter(), NS_WINDOW_SCATTER);
+    let long_ns =
+        SystemConfig::from_toml("[design]\nsection_model = \"ns\"\nsection_cycles = 12\n").unwrap();
+    assert_eq!(long_ns.section_case().scatter(), NS_LONG_MEAN_SCATTER);
+    let eleven = SectionCase {
+        cycles: 11,
+        ..long_ns.section_case()
+    };
+    assert_eq!(eleven.scatter(), NS_WINDOW_SCATTER);
     let template = commented_toml(&SystemConfig::default()).unwrap();
     assert!(
         template.contains("section_model = \"ldvm\"\n"),
         "{template}"
     );
     assert!(template.contains("ns_thickness = 0.04\n"), "{template}");
+    assert!(template.contains("section_cycles = 4\n"), "{template}");
     assert!(
         template.contains("\"ldvm\" or \"ns\".\nsection_model"),
         "{template}"
     );
 }
 
-/// An unknown model, a model that is not a word, and a plate thickness
-/// out of the solver's range are refused naming the key, the value and
-/// what is allowed.
+/// An unknown model, a model that is not a word, a plate thickness out
+/// of the solver's range and fewer than three cycles (none scored after
+/// the start's two) are refused naming the key, the value and what is
+/// allowed.
 #[test]
 fn section_model_setting_refuses_bad_values() {
     for (text, value) in [
@@ -101,6 +123,10 @@ fn section_model_setting_refuses_bad_values() {
         e,
         "design.ns_thickness = 0.001 is outside [0.005, 0.3] chords"
     );
+    let e = SystemConfig::from_toml("[design]\nsection_cycles = 2\n")
+        .unwrap_err()
+        .to_string();
+    assert_eq!(e, "design.section_cycles = 2 is outside 3..=40");
 }
 
 fn result(ct: f64) -> SectionResult {
@@ -287,7 +313,7 @@ fn ns_on_a_deforming_section_says_the_deformation_is_modelled() {
     assert_eq!(
         said.note,
         "ns: the section deforms as the system analysis found (a plate 0.04 chords thick round \
-         the deforming mid-line)"
+         the deforming mid-line), scored over strokes 3 to 4"
     );
     let ldvm = SectionCase {
         deformation,
@@ -433,7 +459,7 @@ fn design_report_says_the_ns_section_deforms() {
     use fwav::discipline::section_model::ModelledSection;
     use fwav::mdois::summary::{CycleSummary, KinematicsSummary, Summary};
     let design = FlappingKinematics::INITIAL;
-    let said = ModelledSection::new(&SectionFlowModel::ns(0.04), true);
+    let said = ModelledSection::new(&SectionFlowModel::ns(0.04), true, 4);
     let summary = Summary {
         format: "fwav-design-summary".into(),
         format_version: 1,
@@ -474,9 +500,9 @@ fn design_report_says_the_ns_section_deforms() {
     assert!(
         report.contains(
             "- cycle 1: ns: the section deforms as the system analysis found (a plate 0.04 \
-             chords thick round the deforming mid-line); a candidate had to beat the analysed \
-             design's combined objective by 0.066, the scatter of two runs (the flow does not \
-             repeat from stroke to stroke)\n"
+             chords thick round the deforming mid-line), scored over strokes 3 to 4; a candidate \
+             had to beat the analysed design's combined objective by 0.066, the scatter of two \
+             runs (the flow does not repeat from stroke to stroke)\n"
         ),
         "{report}"
     );
