@@ -163,11 +163,12 @@ pub const NS_LONG_MEAN_STROKES: usize = 10;
 /// measured as a change of the time step.
 ///
 /// Measured (2026-12-04; twelve strokes each at Courant 4 and 3, one
-/// thread, `discipline_ns_scores::ns_deforming_window_scatter_benchmark`,
-/// whose five windows' mean this is) on the rows whose two-stroke windows
-/// moved most with the step, and the initial design, the default section
-/// deforming as the default design's first system analysis found (384 ×
-/// 320):
+/// thread, the initial design's on two;
+/// `discipline_ns_scores::ns_deforming_window_scatter_benchmark`, whose
+/// five windows' mean this is) on seven of the 18 rows, among them the
+/// four whose two-stroke windows moved most with the step (4, 14, 18, 6),
+/// the default section deforming as the default design's first system
+/// analysis found (384 × 320):
 ///
 /// | row | design (Hz, °, °, °) | CT, Courant 3 and 4 | efficiency | the two-stroke window's move |
 /// | --- | --- | --- | --- | --- |
@@ -183,9 +184,10 @@ pub const NS_LONG_MEAN_STROKES: usize = 10;
 /// (the two-stroke window of the same rows: 7.7 % and 7.0 %, about
 /// `√5` times as much, as for five independent windows); one
 /// evaluation's deviation is those over √2, **2.36 %** and **1.90 %**.
-/// These rows are the most wandering of the 18, so the figure bounds the
-/// array's from above. Row 4 (9 Hz, ±20°) still moves by 7 %: its
-/// windows scatter by 10 % to 13 % from one to the next.
+/// These rows' two-stroke windows moved more than the array's (7.7 %
+/// RMS in CT against 5.6 %), so the figure likely overstates the
+/// array's. Row 4 (9 Hz, ±20°) still moves by 7 %: its windows scatter
+/// by 10 % to 13 % from one to the next.
 pub const NS_LONG_MEAN_SCATTER: (f64, f64) = (0.0236, 0.019);
 
 /// The Navier–Stokes model's thin plate and grid ([`ViscousSection`]'s
