@@ -2,7 +2,11 @@
 //! (rings contiguous) is swept along its columns (radial lines, Fourier
 //! modes) with the columns of a block side by side, one block per worker
 //! thread. Used by the radial sweeps ([`crate::Flow`]) and the
-//! streamfunction's mode systems ([`crate::stream`]).
+//! streamfunction's mode systems ([`crate::stream`]). Nothing a block
+//! computes may depend on which columns share it (a test over a block's
+//! columns, say), or the flow would change with the thread count:
+//! `tests/thread_count.rs` runs flows on one, two and three threads and
+//! asserts them the same to the bit.
 
 /// The bounds of the blocks of columns `start..end`: one block per worker
 /// thread (fewer if there are fewer columns).
