@@ -254,7 +254,11 @@ fn ns_deforming_evaluation_benchmark() {
 /// (13, 40, −10, 70), 1.4 % and 9.6 % at row 7 (9, 30, −10, 110), 1.7 %
 /// and 4.0 % at row 11 (11, 20, −10, 110), and 7.3 % and 3.5 % at row 18,
 /// whose run of before scattered by 0.66 %: whether a row's flow settles
-/// depends on the way it took. The five windows' mean is the score of
+/// depends on the way it took. Row 4 at Courant 3 on 400 and 480 rings
+/// (`FWAV_NS_RADIAL`; one thread, 827 s and 1,087 s): 12.9 % and 6.6 %,
+/// means 0.0332 and 0.0355; on 320 rings again after the thread-count
+/// fix (the flow changed only at rounding): 0.0327, 0.0339, 0.0350,
+/// 0.0310, 0.0348 (5.0 %), mean 0.0335 against the first run's 0.0310. The five windows' mean is the score of
 /// `[design] section_cycles = 12`; where the windows scatter less than
 /// the two-stroke declared figure (the settled designs) it must too
 /// scatter less than its own, `NS_LONG_MEAN_SCATTER`.
