@@ -42,8 +42,8 @@ pub(crate) fn ns_case(plate: ViscousPlate) -> SectionCase {
 /// thickness at the default resolution and no spin-up (a plate given
 /// one spins up through the two strokes before the scored ones); the
 /// strokes each analysis runs, 4 by default (strokes 3 and 4 scored),
-/// are `section_cycles`;
-/// `fwav init`'s template writes both keys with their docs.
+/// are `section_cycles`, and the scatter of the adoption margin follows
+/// them; `fwav init`'s template writes the three keys with their docs.
 #[test]
 fn section_model_setting_chooses_the_model() {
     let default = SystemConfig::from_toml("").unwrap();
