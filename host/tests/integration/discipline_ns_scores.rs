@@ -106,7 +106,7 @@ fn rows_against_the_default(runs: &[fwav::discipline::kinematic::Evaluated]) -> 
 /// (Courant 3: ±30°, 0°, 110°); frequency level means 1.56, 1.93, 2.47
 /// (1.61, 2.05, 2.55).
 #[test]
-#[ignore = "benchmark (17 to 25 min; over the issue's 10): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_discipline_benchmark`"]
+#[ignore = "benchmark (29 to 38 min: 1,712 s at Courant 4, 2,261 s at Courant 3; over the issue's 10): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_discipline_benchmark`"]
 fn ns_discipline_benchmark() {
     use fwav::discipline::kinematic::{optimize, DesignSpace, Weights};
     use fwav::optimize::nsga2::Nsga2Config;
