@@ -6,8 +6,11 @@
 //! The section is set in the solver's body frame with the pitch axis at
 //! the origin, the chord along `+x` from the leading edge at `x = -pivot`;
 //! the stream is along `+x`. Thrust is the force upstream (`-Fx`), lift
-//! the force across (`Fy`), the input power the work rate of the wall on
-//! the fluid, all on `1/2 rho U^2 c` (`U^3` for the power). The forces
+//! the force across (`Fy`), the input power the work rate of the
+//! section's motion relative to steady flight (the wall's work rate on the
+//! fluid less the flight's, `-T U`: `viscous/march.rs`; as the inviscid
+//! models and Garrick's theory count it, so a section at rest in the
+//! stream has none), all on `1/2 rho U^2 c` (`U^3` for the power). The forces
 //! include the wall's friction: the thrust is net of it, and the run's
 //! friction history is zero (the inviscid models' estimate is not added).
 //!

@@ -7,9 +7,10 @@
 //! The case is keyed as its model reads it ([`SectionCase::modelled`]):
 //! the flow model and its plate and grid are part of the key (an LDVM
 //! result is never served for a Navier–Stokes request, nor one grid's for
-//! another's), and the Navier–Stokes model's rigid result is served to
-//! every deformation (it does not take one). An LDVM case is written as
-//! before the model was chosen, so older cache files still match.
+//! another's, nor one deformation's for another's). An LDVM case is written as
+//! before the model was chosen, so older cache files still match; a
+//! Navier–Stokes case carries the revision of that model's results
+//! ([`NS_RESULTS_REVISION`]), so results it no longer gives are not served.
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -20,6 +21,7 @@ use serde::{Deserialize, Serialize};
 use crate::aeroelastic::kinematics::FlappingKinematics;
 
 use super::section::{SectionCase, SectionResult};
+use super::section_model::SectionFlowModel;
 
 /// Why the cache file could not be read or written.
 #[derive(Debug, thiserror::Error)]
@@ -139,14 +141,54 @@ impl EvaluationCache {
     }
 }
 
+/// The revision of the Navier–Stokes model's results, part of its keys:
+/// raised when the same inputs give other results, so that a cache file
+/// never serves the former ones. 2 (2026-12-04): the input power counts
+/// the section's motion relative to steady flight only (before, the
+/// flight's `-T U` too: `aero2d/viscous/march.rs`).
+pub const NS_RESULTS_REVISION: u32 = 2;
+
 /// The key of an evaluation: FNV-1a of its inputs' JSON (the case as its
-/// model reads it), hex.
+/// model reads it; a Navier–Stokes case with [`NS_RESULTS_REVISION`]),
+/// hex.
 pub fn key(case: &SectionCase, design: &FlappingKinematics) -> String {
-    let text = serde_json::json!({ "case": case.modelled(), "design": design }).to_string();
+    let mut inputs = serde_json::json!({ "case": case.modelled(), "design": design });
+    if matches!(case.model, SectionFlowModel::Ns(_)) {
+        inputs["ns_results"] = NS_RESULTS_REVISION.into();
+    }
+    fnv1a(&inputs.to_string())
+}
+
+/// The 64-bit FNV-1a hash of `text`, hex.
+fn fnv1a(text: &str) -> String {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
     for b in text.bytes() {
         h ^= u64::from(b);
         h = h.wrapping_mul(0x0100_0000_01b3);
     }
     format!("{h:016x}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An LDVM case keeps the key it had before the results' revision
+    /// (older cache files still serve it); a Navier–Stokes case's key
+    /// changes with the revision, so a result of the former input power
+    /// is not served.
+    #[test]
+    fn only_navier_stokes_keys_carry_the_results_revision() {
+        let design = FlappingKinematics::from_degrees([11.0, 30.0, 0.0, 90.0]);
+        let ldvm = SectionCase::fwav_mid_span();
+        let ns = SectionCase {
+            model: SectionFlowModel::ns(0.04),
+            ..SectionCase::fwav_mid_span()
+        };
+        let unrevised = |case: &SectionCase| {
+            fnv1a(&serde_json::json!({ "case": case.modelled(), "design": design }).to_string())
+        };
+        assert_eq!(key(&ldvm, &design), unrevised(&ldvm));
+        assert_ne!(key(&ns, &design), unrevised(&ns));
+    }
 }

@@ -18,7 +18,10 @@ pub struct WallLoads {
     pub force: Complex64,
     /// Moment about the frame origin, counter-clockwise positive.
     pub moment: f64,
-    /// Power the section gives the fluid, `-∮ f·u_wall ds`.
+    /// Power the section gives the fluid, `-∮ f·u_wall ds`, with `u_wall`
+    /// the wall's velocity relative to the far fluid: the frame's whole
+    /// motion, its steady translation included (a body towed at rest in
+    /// its frame gives the fluid its drag times the speed).
     pub power: f64,
     /// Wall pressure round the section (mean zero).
     pub pressure: Vec<f64>,

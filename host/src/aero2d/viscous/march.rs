@@ -93,13 +93,18 @@ impl StepControl {
 }
 
 /// The loads at one instant: `(CL, CT, CP)`.
+///
+/// The input power is the work rate of the section's motion relative to
+/// steady flight, as in the inviscid models and Garrick's (1936) theory
+/// (`P = -L dh/dt - M dα/dt`, and the efficiency `T U / P`). The solver's
+/// [`fwav_ns2d::WallLoads::power`] is the wall's whole work rate on the
+/// fluid, which also counts the flight at `U` through it: `-T U` (the
+/// force `F` times the flight velocity `(-U, 0)`, with `T = -F_x`). So
+/// `CP = 2 power + CT`; a section at rest in the stream has none.
 fn coefficients<M: fwav_ns2d::Motion>(flow: &Flow<M>) -> [f64; 3] {
     let loads = flow.loads();
-    [
-        2.0 * loads.force.im,
-        -2.0 * loads.force.re,
-        2.0 * loads.power,
-    ]
+    let ct = -2.0 * loads.force.re;
+    [2.0 * loads.force.im, ct, 2.0 * loads.power + ct]
 }
 
 /// The sampling of a run's loads as its flows step ([`March::to`]).
