@@ -23,6 +23,7 @@ use super::panel::{
 };
 use super::theory::garrick_plunge;
 use super::viscous::{SectionPath, ViscousError, ViscousSection, ViscousShape};
+use super::window::WindowStatistics;
 
 /// Fewest chord stations a thin section's deformation is resampled onto.
 const MIN_CAMBER_STATIONS: usize = 21;
@@ -41,6 +42,12 @@ const MIN_STEPS_PER_CYCLE: f64 = 100.0;
 /// the dev profile on two busy cores; k = 0.001 (a period of 3,142
 /// chords) would take a million steps and hours.
 pub const MAX_STEPS: usize = 20_000;
+
+/// The longest run without a period ([`Case::duration`]), chords
+/// travelled: a cylinder's wake settles to its periodic shedding within
+/// about 100 diameters at Re 100 (`fwav_ns2d::cases::CylinderWake` runs
+/// 150).
+pub const MAX_DURATION_CHORDS: f64 = 1000.0;
 
 /// Thickest NACA section the panel method takes, chords. Measured on
 /// NACA 00TT plunging at h = 0.05, k = 1 (5 cycles, 160 panels): up to
@@ -119,6 +126,24 @@ pub enum CaseError {
     /// viscous model.
     #[error("leading-edge vortex shedding (a critical LESP) applies to the thin-line model only")]
     LespOnThick,
+    /// A run of a given duration asked of an inviscid model.
+    #[error(
+        "a run of a given duration (a body at rest in a stream, a sudden start) is the \
+         Navier–Stokes model's; the inviscid models run whole periods of a motion: give cycles \
+         instead, or choose the Navier–Stokes model"
+    )]
+    DurationNeedsNs,
+    /// A duration out of range.
+    #[error(
+        "a duration of {duration} chords travelled: give more than 0 and at most {max} (a \
+         cylinder's wake settles within about 100 diameters)"
+    )]
+    Duration {
+        /// The duration asked, chords travelled.
+        duration: f64,
+        /// The longest allowed ([`MAX_DURATION_CHORDS`]).
+        max: f64,
+    },
     /// The viscous model refused the case or failed.
     #[error(transparent)]
     Viscous(#[from] ViscousError),
@@ -283,6 +308,11 @@ pub struct Case {
     pub motion: Motion,
     /// Periods to simulate.
     pub cycles: u32,
+    /// Chords travelled to run instead of `cycles` periods: a run without
+    /// a period (a body at rest in a stream, a sudden start), for the
+    /// Navier–Stokes model only ([`CaseError::DurationNeedsNs`]), read by
+    /// [`CaseRun::second_half`]. `None`: `cycles` periods.
+    pub duration: Option<f64>,
     /// Critical LESP for leading-edge vortex shedding (thin line only).
     pub lesp_critical: Option<f64>,
     /// Chord Reynolds number of the skin-friction estimate.
@@ -373,7 +403,7 @@ impl Case {
         let defaults = Settings::default();
         Settings {
             dt: defaults.dt.min(period / MIN_STEPS_PER_CYCLE),
-            duration: f64::from(self.cycles) * period,
+            duration: self.duration.unwrap_or(f64::from(self.cycles) * period),
             lesp_critical: self.lesp_critical,
             reynolds: Some(self.reynolds),
             ..defaults
@@ -390,6 +420,18 @@ impl Case {
             && self.deformation.is_none()
             && self.lesp_critical.is_none();
         rigid_plunge.then(|| garrick_plunge(m.reduced_frequency, m.plunge_amplitude))
+    }
+
+    /// Whether the case is a rigid section at rest in the stream run for a
+    /// [`Self::duration`] (no plunge or pitch amplitude): a body in a
+    /// steady stream, started impulsively, without a period (its loads are
+    /// then sampled over the duration, not a period of the motion).
+    pub fn is_still(&self) -> bool {
+        let m = &self.motion;
+        self.duration.is_some()
+            && m.plunge_amplitude == 0.0
+            && m.pitch_amplitude == 0.0
+            && self.deformation.is_none()
     }
 
     /// The time steps the case takes.
@@ -418,6 +460,20 @@ impl Case {
     /// frequency so small that a period is thousands of chords), with the
     /// smallest reduced frequency that fits.
     pub fn check_work(&self) -> Result<(), CaseError> {
+        if let Some(duration) = self.duration {
+            // The viscous model bounds its own steps
+            // (`ViscousError::TooManySteps`).
+            if !matches!(self.section, SectionModel::Viscous(_)) {
+                return Err(CaseError::DurationNeedsNs);
+            }
+            if !(duration > 0.0 && duration <= MAX_DURATION_CHORDS) {
+                return Err(CaseError::Duration {
+                    duration,
+                    max: MAX_DURATION_CHORDS,
+                });
+            }
+            return Ok(());
+        }
         let steps = self.steps();
         if steps <= MAX_STEPS {
             return Ok(());
@@ -550,7 +606,14 @@ impl Case {
             return Err(CaseError::LespOnThick);
         }
         let duration = self.settings().duration;
-        let path = SectionPath::Harmonic(self.motion);
+        let path = if self.is_still() {
+            SectionPath::Still {
+                pivot: self.motion.pivot,
+                pitch: self.motion.mean_pitch,
+            }
+        } else {
+            SectionPath::Harmonic(self.motion)
+        };
         let run = match &self.deformation {
             Some(samples) => section.run_deforming(path, self.reynolds, duration, samples)?,
             None => section.run(path, self.reynolds, duration)?,
@@ -580,6 +643,13 @@ impl Case {
 }
 
 impl CaseRun {
+    /// The loads over the second half of a run without a period (a
+    /// [`Case::duration`]); `None` when it holds fewer than two samples.
+    pub fn second_half(&self) -> Option<WindowStatistics> {
+        let end = *self.history.time.last()?;
+        WindowStatistics::of(&self.history, 0.5 * end)
+    }
+
     /// The last period's means, and the change of the mean CT from the
     /// period before (the window ending one period's worth of steps before
     /// the last sample).
@@ -628,6 +698,7 @@ mod tests {
                 pivot: 0.25,
             },
             cycles: 5,
+            duration: None,
             lesp_critical: None,
             reynolds: 15_000.0,
             deformation: None,

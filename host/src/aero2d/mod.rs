@@ -14,7 +14,8 @@
 //! - [`viscous`]: laminar Navier–Stokes of the section (`fwav-ns2d`),
 //!   the viscous model behind the same case.
 //! - [`case`]: one analysis as `fwav aero2d` runs it: the solver chosen by
-//!   the section, the last cycle's means and periodicity.
+//!   the section, the last cycle's means and periodicity; or, for a run
+//!   without a period, the loads over its second half ([`window`]).
 //!
 //! Imports: no other room of the crate (a solver room: the 2D models stand
 //! alone; pictures of their results are drawn in [`crate::output`]).
@@ -29,3 +30,4 @@ pub mod naca;
 pub mod panel;
 pub mod theory;
 pub mod viscous;
+pub mod window;

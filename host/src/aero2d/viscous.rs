@@ -323,11 +323,16 @@ impl ViscousSection {
             })
             .fold(0.0, f64::max);
         let first = self.first_cell_layers / reynolds.sqrt() / stretch;
+        let outer_radius = self.outer_chords / map.scale();
+        // At a low Reynolds number the layer is thick: the first cell is
+        // kept at most half a uniform grid's, so that the rings still
+        // crowd to the wall (a cylinder at Re 100 on 320 rings).
+        let uniform = outer_radius.ln() / (self.radial.max(2) - 1) as f64;
         GridSpec {
             around: self.around,
             radial: self.radial,
-            outer_radius: self.outer_chords / map.scale(),
-            first_cell: first.min(0.05),
+            outer_radius,
+            first_cell: first.min(0.05).min(0.5 * uniform),
         }
     }
 }
@@ -593,6 +598,12 @@ impl ViscousSection {
     }
 }
 
+/// The peak rate of [`SectionPath::Still`]'s start-up turn, `U / c`.
+pub const STILL_KICK_RATE: f64 = 0.05;
+
+/// Its length, chords travelled.
+pub const STILL_KICK_CHORDS: f64 = 2.0;
+
 /// How the section moves, in chords and chords travelled (`c = U = 1`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum SectionPath {
@@ -611,6 +622,20 @@ pub enum SectionPath {
         /// The pitch history.
         ramp: PitchRamp,
     },
+    /// A section at rest in the stream at a fixed nose-up pitch (radians)
+    /// about `pivot` (chords from the leading edge), started impulsively:
+    /// a body in a steady stream, or a sudden start (no period). Over its
+    /// first [`STILL_KICK_CHORDS`] it turns to and fro by one period of a
+    /// sine of peak rate [`STILL_KICK_RATE`] (back to its pitch at the
+    /// end), which breaks the flow's mirror symmetry, as any disturbance
+    /// of a real stream does: without it the symmetric wake of a
+    /// symmetric body stays symmetric to round-off and never sheds.
+    Still {
+        /// The pitch axis, chords from the leading edge.
+        pivot: f64,
+        /// The nose-up pitch, radians.
+        pitch: f64,
+    },
 }
 
 impl SectionPath {
@@ -619,7 +644,7 @@ impl SectionPath {
         match self {
             Self::Harmonic(m) => m.pivot,
             Self::Flapping(_) => 0.5,
-            Self::Ramp { pivot, .. } => *pivot,
+            Self::Ramp { pivot, .. } | Self::Still { pivot, .. } => *pivot,
         }
     }
 
@@ -627,7 +652,7 @@ impl SectionPath {
         match self {
             Self::Harmonic(m) => m.reduced_frequency,
             Self::Flapping(f) => f.reduced_frequency,
-            Self::Ramp { .. } => 0.0,
+            Self::Ramp { .. } | Self::Still { .. } => 0.0,
         }
     }
 
@@ -644,6 +669,7 @@ impl SectionPath {
                 (x, h, 0.0)
             }
             Self::Ramp { ramp, .. } => (0.0, 0.0, ramp.at(t).0),
+            Self::Still { pitch, .. } => (0.0, 0.0, *pitch),
         }
     }
 
@@ -668,6 +694,7 @@ impl SectionPath {
                 let arm = pivot.max(1.0 - pivot);
                 (1.0 + 2.0 * ramp.pitch_rate * arm, 1.0)
             }
+            Self::Still { .. } => (1.0, 1.0),
         };
         peak / start
     }
@@ -710,6 +737,21 @@ impl fwav_ns2d::Motion for SectionPath {
                     angular_acceleration: -ramp.acceleration(t),
                     ..FrameState::default()
                 }
+            }
+            Self::Still { pitch, .. } => {
+                let mut state = FrameState {
+                    velocity: Complex64::new(-1.0, 0.0),
+                    angle: -pitch,
+                    ..FrameState::default()
+                };
+                if t > 0.0 && t < STILL_KICK_CHORDS {
+                    let w = std::f64::consts::TAU / STILL_KICK_CHORDS;
+                    let (s, c) = (w * t).sin_cos();
+                    state.rate = STILL_KICK_RATE * s;
+                    state.angular_acceleration = STILL_KICK_RATE * w * c;
+                    state.angle += STILL_KICK_RATE / w * (1.0 - c);
+                }
+                state
             }
         }
     }

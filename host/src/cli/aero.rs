@@ -4,10 +4,11 @@
 use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
-use fwav::aero2d::case::{Case, CaseRun, SectionModel, PERIODIC_CHANGE};
+use fwav::aero2d::case::{Case, CaseRun, SectionModel, MAX_DURATION_CHORDS, PERIODIC_CHANGE};
 use fwav::aero2d::friction::FWAV_REYNOLDS;
 use fwav::aero2d::motion::Motion;
 use fwav::aero2d::viscous::ViscousSection;
+use fwav::aero2d::window::MIN_SHEDDING_PERIODS;
 use fwav::aeroelastic::handoff::SectionFile;
 use fwav::output::history_csv::write_history_csv;
 use fwav::output::section_plot::draw;
@@ -24,7 +25,7 @@ pub struct Aero2dArgs {
     pub model: FlowModel,
     /// Thickness of the plate that models a `flat` section in the
     /// Navier–Stokes model, chords (semicircular edges).
-    #[arg(long, default_value_t = ViscousSection::DEFAULT_THICKNESS)]
+    #[arg(long, default_value_t = ViscousSection::DEFAULT_THICKNESS, allow_negative_numbers = true)]
     pub ns_thickness: f64,
     /// Grid nodes round the section in the Navier–Stokes model (even, 16
     /// to 8192; default 384).
@@ -34,32 +35,46 @@ pub struct Aero2dArgs {
     /// model (8 to 8192; default 320).
     #[arg(long)]
     pub ns_radial: Option<usize>,
+    /// Largest Courant number of a time step in the Navier–Stokes model
+    /// (0.1 to 10; default 3, chosen on the FWAV plate's thrust; a bluff
+    /// body's wake needs a shorter step: a cylinder's lift swing at Re 100
+    /// is 0.289 at 3 and 0.314 at 1 on the default grid).
+    #[arg(long, allow_negative_numbers = true)]
+    pub ns_courant: Option<f64>,
     /// Section: `flat` (thin line, LDVM), a NACA 4-digit name such as
     /// `naca0012` (thick section, panel method), or a file of x y points
     /// (Selig order or clockwise from the trailing edge, chords).
     #[arg(long, default_value = "flat")]
     pub section: String,
     /// Plunge amplitude, chords.
-    #[arg(long, default_value_t = 0.05)]
+    #[arg(long, default_value_t = 0.05, allow_negative_numbers = true)]
     pub plunge_amplitude: f64,
     /// Reduced frequency k = omega c / (2 U).
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     pub reduced_frequency: f64,
     /// Pitch amplitude, degrees.
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     pub pitch_amplitude_deg: f64,
     /// Phase by which pitch leads plunge, degrees.
-    #[arg(long, default_value_t = 90.0)]
+    #[arg(long, default_value_t = 90.0, allow_negative_numbers = true)]
     pub pitch_phase_deg: f64,
     /// Mean pitch angle, degrees.
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     pub mean_pitch_deg: f64,
     /// Pitch axis, chords from the leading edge.
-    #[arg(long, default_value_t = 0.25)]
+    #[arg(long, default_value_t = 0.25, allow_negative_numbers = true)]
     pub pivot: f64,
-    /// Cycles to simulate.
+    /// Cycles to simulate (or `--duration`, for `--model ns`).
     #[arg(long, default_value_t = 5)]
     pub cycles: u32,
+    /// Chords travelled to run instead of `--cycles`, for `--model ns`: a
+    /// run without a period, such as a body at rest in a stream (no plunge
+    /// or pitch amplitude) or a sudden start (the flow starts from rest).
+    /// Reports the loads over the run's second half (means, swings, the
+    /// lift's Strouhal number `f c / U` when it oscillates) and at its end;
+    /// at most 1000.
+    #[arg(long, conflicts_with = "cycles", allow_negative_numbers = true)]
+    pub duration: Option<f64>,
     /// Critical leading-edge suction parameter: shed leading-edge vortices
     /// beyond it (LDVM). Off when not given.
     #[arg(long)]
@@ -67,7 +82,7 @@ pub struct Aero2dArgs {
     /// Chord Reynolds number: of the laminar skin-friction estimate of the
     /// inviscid models, of the flow in the Navier–Stokes model (default:
     /// the built-in FWAV, 3 m/s, 0.075 m chord, sea-level air).
-    #[arg(long, default_value_t = FWAV_REYNOLDS)]
+    #[arg(long, default_value_t = FWAV_REYNOLDS, allow_negative_numbers = true)]
     pub reynolds: f64,
     /// Deformation history of the section over one period: a
     /// `section.json` (`fwav system-analysis --out` writes one;
@@ -116,9 +131,15 @@ fn check(a: &Aero2dArgs) -> Result<()> {
     }
     let ns_options = a.ns_around.is_some()
         || a.ns_radial.is_some()
+        || a.ns_courant.is_some()
         || a.ns_thickness != ViscousSection::DEFAULT_THICKNESS;
     if a.model != FlowModel::Ns && ns_options {
-        bail!("--ns-thickness, --ns-around and --ns-radial apply to --model ns only");
+        bail!("--ns-thickness, --ns-around, --ns-radial and --ns-courant apply to --model ns only");
+    }
+    if let Some(c) = a.ns_courant {
+        if !(0.1..=10.0).contains(&c) {
+            bail!("--ns-courant {c} must be in [0.1, 10]");
+        }
     }
     if a.model == FlowModel::Ns
         && a.section != "flat"
@@ -152,6 +173,17 @@ fn check(a: &Aero2dArgs) -> Result<()> {
             a.pivot
         );
     }
+    if let Some(d) = a.duration {
+        if a.model != FlowModel::Ns {
+            bail!(
+                "--duration applies to --model ns (a body at rest in a stream, a sudden start); \
+                 the inviscid models run whole periods: give --cycles"
+            );
+        }
+        if !(d > 0.0 && d <= MAX_DURATION_CHORDS) {
+            bail!("--duration {d} must be in (0, {MAX_DURATION_CHORDS}] chords travelled");
+        }
+    }
     if a.cycles < 2 || a.cycles > 50 {
         bail!("--cycles {} must be between 2 and 50", a.cycles);
     }
@@ -176,6 +208,7 @@ fn case(a: &Aero2dArgs) -> Result<Case> {
             SectionModel::Viscous(ViscousSection {
                 around: a.ns_around.unwrap_or(plate.around),
                 radial: a.ns_radial.unwrap_or(plate.radial),
+                courant: a.ns_courant.unwrap_or(plate.courant),
                 ..plate
             })
         }
@@ -198,6 +231,7 @@ fn case(a: &Aero2dArgs) -> Result<Case> {
             pivot: a.pivot,
         },
         cycles: a.cycles,
+        duration: a.duration,
         lesp_critical: a.lesp_critical,
         reynolds: a.reynolds,
         deformation,
@@ -278,14 +312,10 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         None => format!("--section {}", a.section),
     })?;
     if let Some(png) = &a.plot {
-        draw(
-            &run.history,
-            &run.vortices,
-            &run.body,
-            Some(run.period),
-            png,
-        )
-        .with_context(|| format!("--plot {}", png.display()))?;
+        // A run of a given duration has no periods to mark.
+        let period = a.duration.is_none().then_some(run.period);
+        draw(&run.history, &run.vortices, &run.body, period, png)
+            .with_context(|| format!("--plot {}", png.display()))?;
     }
     if let Some(csv) = &a.history {
         write_history_csv(&run.history, csv).with_context(|| {
@@ -296,6 +326,102 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
             )
         })?;
     }
+    match a.duration {
+        Some(duration) => report_window(a, &case, &run, duration),
+        None => report_cycles(a, &case, &run),
+    }
+}
+
+/// The motion in words: `at rest, pitch 10 deg` or `k = 1, h0 = 0.05 c,
+/// pitch 0 +- 5 deg`.
+fn motion_words(a: &Aero2dArgs, still: bool) -> String {
+    if still {
+        format!("at rest, pitch {} deg", a.mean_pitch_deg)
+    } else {
+        format!(
+            "k = {}, h0 = {} c, pitch {} +- {} deg",
+            a.reduced_frequency, a.plunge_amplitude, a.mean_pitch_deg, a.pitch_amplitude_deg
+        )
+    }
+}
+
+/// Prints a run without a period (`--duration`): the loads over its
+/// second half and at its end.
+fn report_window(a: &Aero2dArgs, case: &Case, run: &CaseRun, duration: f64) -> Result<()> {
+    let w = run.second_half().context(
+        "the run left fewer than two load samples over its second half: give a longer --duration",
+    )?;
+    let h = &run.history;
+    let last = h.time.len() - 1;
+    let (end, cl_end, cd_end) = (h.time[last], h.cl[last], -h.ct[last]);
+    let still = case.is_still();
+    if a.json {
+        let v = serde_json::json!({
+            "section": a.section,
+            "model": model_name(&case.section),
+            "reynolds": a.reynolds,
+            "at_rest": still,
+            "reduced_frequency": a.reduced_frequency,
+            "plunge_amplitude_chords": a.plunge_amplitude,
+            "pitch_amplitude_deg": a.pitch_amplitude_deg,
+            "mean_pitch_deg": a.mean_pitch_deg,
+            "pitch_phase_deg": a.pitch_phase_deg,
+            "pivot_chords": a.pivot,
+            "deforming": a.deformation.is_some(),
+            "duration_chords": duration,
+            "sample_chords": run.dt,
+            "window": {
+                "from_chords": w.from,
+                "to_chords": w.to,
+                "mean_cl": w.cl_mean,
+                "cl_swing": w.cl_swing,
+                "mean_cd": w.cd_mean,
+                "cd_swing": w.cd_swing,
+                "mean_cp": w.cp_mean,
+            },
+            "shedding": w.shedding.map(|s| serde_json::json!({
+                "strouhal": s.strouhal,
+                "periods": s.periods,
+            })),
+            "end": {"time_chords": end, "cl": cl_end, "cd": cd_end},
+        });
+        println!("{v:#}");
+        return Ok(());
+    }
+    println!(
+        "{} section ({}), {}, {duration} chords travelled (loads every {:.4} c/U), Re {:.0}{}",
+        a.section,
+        model_name(&case.section),
+        motion_words(a, still),
+        run.dt,
+        a.reynolds,
+        if a.deformation.is_some() {
+            ", deforming"
+        } else {
+            ""
+        }
+    );
+    println!(
+        "  over U t/c {:.2} to {:.2}: CL {:.4} +- {:.4}  CD {:.4} +- {:.4}  CP {:.5}",
+        w.from, w.to, w.cl_mean, w.cl_swing, w.cd_mean, w.cd_swing, w.cp_mean
+    );
+    match w.shedding {
+        Some(s) => println!(
+            "  the lift oscillates at Strouhal number f c/U {:.4} ({} periods)",
+            s.strouhal, s.periods
+        ),
+        None => println!(
+            "  the lift does not oscillate over it (steady, or fewer than {MIN_SHEDDING_PERIODS} \
+             periods)"
+        ),
+    }
+    println!("  at U t/c {end:.2}: CL {cl_end:.4}  CD {cd_end:.4}");
+    Ok(())
+}
+
+/// Prints a periodic run: the last cycle's means and its periodicity
+/// (an error, [`Doubtful`], when it is not periodic).
+fn report_cycles(a: &Aero2dArgs, case: &Case, run: &CaseRun) -> Result<()> {
     let m = run.means();
     let doubt = (!m.is_periodic()).then(|| {
         format!(
@@ -344,7 +470,7 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         }
         println!("{v:#}");
     } else {
-        print_text(a, &case, &run);
+        print_text(a, case, run);
     }
     match doubt {
         Some(message) => Err(Doubtful(message).into()),

@@ -32,6 +32,7 @@ fn case(section: SectionModel, motion: Motion, reynolds: f64) -> Case {
         section,
         motion,
         cycles: 2,
+        duration: None,
         lesp_critical: None,
         reynolds,
         deformation: None,
@@ -481,6 +482,151 @@ fn aero2d_runs_the_viscous_model() {
     }
     let out = fwav(&["aero2d", "--ns-around", "64"]);
     assert!(String::from_utf8_lossy(&out.stderr).contains("apply to --model ns only"));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A circle of unit diameter as a point file (`dir/circle.dat`, 200
+/// points from the right, counter-clockwise): chord and diameter are one.
+fn circle_file(dir: &std::path::Path) -> std::path::PathBuf {
+    let text: String = (0..200)
+        .map(|i| {
+            let t = 2.0 * PI * f64::from(i) / 200.0;
+            format!("{} {}\n", 0.5 + 0.5 * t.cos(), 0.5 * t.sin())
+        })
+        .collect();
+    let path = dir.join("circle.dat");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// `fwav aero2d --model ns --duration`, a run without a period, on a
+/// circle given as a point file:
+/// - the sudden start at Re 550 (256 x 192, 1.5 diameters, 3 s): the
+///   drag history of `--history` within 5% of Koumoutsakos & Leonard
+///   (1995, fig. 18; `ns2d/tests/data`) over U t/R in [0.5, 3], as the
+///   solver's own validated case (measured 2.2%, with the start-up turn
+///   that breaks the symmetry: 2.0% without it, which moves the drag by
+///   at most 0.18% there);
+/// - the wake at Re 100 (128 x 128, 150 diameters, 2 s): the lift sheds
+///   at Strouhal 0.164-0.165 and the mean drag is 1.33-1.35 (Liu, Zheng &
+///   Sung 1998; Park, Kwon & Choi 1998), each within the 3% of
+///   the band, over the run's second half (measured 0.1653 and 1.331;
+///   the default 384 x 320, 30 s: 0.1654 and 1.329). Its lift swing,
+///   0.322 here and 0.289 on the default grid at the default Courant
+///   number 3 (0.314 at 1), is not asserted: the band's 0.33-0.34 is
+///   `fwav-ns2d`'s to meet at its validated step (0.323,
+///   `the_cylinder_wake_at_re_100_sheds_as_published`); the default
+///   step was chosen on the FWAV plate's thrust;
+/// - `--duration` is refused for the inviscid models, out of range, and
+///   with `--cycles`.
+#[test]
+fn aero2d_runs_a_body_at_rest_for_a_duration() {
+    let dir = std::env::temp_dir().join(format!("fwav-ns-duration-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::create_dir_all(&dir).unwrap();
+    let circle = circle_file(&dir);
+    let circle = circle.to_str().unwrap();
+    let csv = dir.join("start.csv");
+    let base = [
+        "aero2d",
+        "--model",
+        "ns",
+        "--section",
+        circle,
+        "--plunge-amplitude",
+        "0",
+    ];
+    let mut start = base.to_vec();
+    start.extend_from_slice(&[
+        "--reynolds",
+        "550",
+        "--duration",
+        "1.5",
+        "--ns-around",
+        "256",
+    ]);
+    start.extend_from_slice(&["--ns-radial", "192", "--history", csv.to_str().unwrap()]);
+    let out = fwav(&start);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("at rest") && text.contains("1.5 chords travelled"),
+        "{text}"
+    );
+    let history = std::fs::read_to_string(&csv).unwrap();
+    // U t / R = 2 U t / c; CD = -CT.
+    let drag: Vec<(f64, f64)> = history
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let v: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
+            (2.0 * v[0], -v[2])
+        })
+        .collect();
+    let reference = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../ns2d/tests/data/koumoutsakos_leonard_1995_re550.dat"
+    ))
+    .unwrap();
+    let (error, at) = fwav_ns2d::ReferenceCurve::parse(&reference)
+        .unwrap()
+        .worst_deviation(&drag, (0.5, 3.0), f64::abs);
+    println!(
+        "sudden start, Re 550: worst {:.2}% at U t/R = {at:.2}",
+        100.0 * error
+    );
+    assert!(error < 0.05, "{error} at {at}");
+
+    let mut wake = base.to_vec();
+    wake.extend_from_slice(&[
+        "--reynolds",
+        "100",
+        "--duration",
+        "150",
+        "--ns-around",
+        "128",
+    ]);
+    wake.extend_from_slice(&["--ns-radial", "128", "--json"]);
+    let out = fwav(&wake);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON on stdout");
+    let strouhal = v["shedding"]["strouhal"].as_f64().unwrap();
+    let drag = v["window"]["mean_cd"].as_f64().unwrap();
+    println!(
+        "wake, Re 100: Strouhal {strouhal:.4}, CD {drag:.3}, CL +- {:.3}",
+        v["window"]["cl_swing"].as_f64().unwrap()
+    );
+    assert!(strouhal > 0.164 * 0.97 && strouhal < 0.165 * 1.03, "{v}");
+    assert!(drag > 1.33 * 0.97 && drag < 1.35 * 1.03, "{v}");
+    assert_eq!(v["at_rest"], true);
+    assert!(v["window"]["mean_cp"].as_f64().unwrap().abs() < 1e-3, "{v}");
+
+    for (bad, says) in [
+        (&["aero2d", "--duration", "3"][..], "applies to --model ns"),
+        (
+            &["aero2d", "--model", "ns", "--duration", "-1"][..],
+            "(0, 1000]",
+        ),
+        (
+            &[
+                "aero2d",
+                "--model",
+                "ns",
+                "--duration",
+                "3",
+                "--cycles",
+                "4",
+            ][..],
+            "cannot be used",
+        ),
+    ] {
+        let out = fwav(bad);
+        let e = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success() && e.contains(says), "{bad:?}: {e}");
+    }
     std::fs::remove_dir_all(&dir).ok();
 }
 
