@@ -345,6 +345,26 @@ fn motion_words(a: &Aero2dArgs, still: bool) -> String {
     }
 }
 
+/// The case as the JSON output names it (the section, its motion and
+/// deformation, the Reynolds number), with the report's own `fields`.
+fn case_json(a: &Aero2dArgs, fields: serde_json::Value) -> serde_json::Value {
+    let mut v = serde_json::json!({
+        "section": a.section,
+        "reduced_frequency": a.reduced_frequency,
+        "plunge_amplitude_chords": a.plunge_amplitude,
+        "pitch_amplitude_deg": a.pitch_amplitude_deg,
+        "mean_pitch_deg": a.mean_pitch_deg,
+        "pitch_phase_deg": a.pitch_phase_deg,
+        "pivot_chords": a.pivot,
+        "deforming": a.deformation.is_some(),
+        "reynolds": a.reynolds,
+    });
+    if let (Some(v), serde_json::Value::Object(fields)) = (v.as_object_mut(), fields) {
+        v.extend(fields);
+    }
+    v
+}
+
 /// Prints a run without a period (`--duration`): the loads over its
 /// second half and at its end.
 fn report_window(a: &Aero2dArgs, case: &Case, run: &CaseRun, duration: f64) -> Result<()> {
@@ -356,35 +376,29 @@ fn report_window(a: &Aero2dArgs, case: &Case, run: &CaseRun, duration: f64) -> R
     let (end, cl_end, cd_end) = (h.time[last], h.cl[last], -h.ct[last]);
     let still = case.is_still();
     if a.json {
-        let v = serde_json::json!({
-            "section": a.section,
-            "model": model_name(&case.section),
-            "reynolds": a.reynolds,
-            "at_rest": still,
-            "reduced_frequency": a.reduced_frequency,
-            "plunge_amplitude_chords": a.plunge_amplitude,
-            "pitch_amplitude_deg": a.pitch_amplitude_deg,
-            "mean_pitch_deg": a.mean_pitch_deg,
-            "pitch_phase_deg": a.pitch_phase_deg,
-            "pivot_chords": a.pivot,
-            "deforming": a.deformation.is_some(),
-            "duration_chords": duration,
-            "sample_chords": run.dt,
-            "window": {
-                "from_chords": w.from,
-                "to_chords": w.to,
-                "mean_cl": w.cl_mean,
-                "cl_swing": w.cl_swing,
-                "mean_cd": w.cd_mean,
-                "cd_swing": w.cd_swing,
-                "mean_cp": w.cp_mean,
-            },
-            "shedding": w.shedding.map(|s| serde_json::json!({
-                "strouhal": s.strouhal,
-                "periods": s.periods,
-            })),
-            "end": {"time_chords": end, "cl": cl_end, "cd": cd_end},
-        });
+        let v = case_json(
+            a,
+            serde_json::json!({
+                "model": model_name(&case.section),
+                "at_rest": still,
+                "duration_chords": duration,
+                "sample_chords": run.dt,
+                "window": {
+                    "from_chords": w.from,
+                    "to_chords": w.to,
+                    "mean_cl": w.cl_mean,
+                    "cl_swing": w.cl_swing,
+                    "mean_cd": w.cd_mean,
+                    "cd_swing": w.cd_swing,
+                    "mean_cp": w.cp_mean,
+                },
+                "shedding": w.shedding.map(|s| serde_json::json!({
+                    "strouhal": s.strouhal,
+                    "periods": s.periods,
+                })),
+                "end": {"time_chords": end, "cl": cl_end, "cd": cd_end},
+            }),
+        );
         println!("{v:#}");
         return Ok(());
     }
@@ -433,37 +447,30 @@ fn report_cycles(a: &Aero2dArgs, case: &Case, run: &CaseRun) -> Result<()> {
         )
     });
     let net = m.net_ct();
-    let k = a.reduced_frequency;
     let (wake_count, lev_count) = (run.wake_vortices, run.leading_edge_vortices);
     let garrick = case.garrick();
     if a.json {
-        let mut v = serde_json::json!({
-            "section": a.section,
-            "reduced_frequency": k,
-            "plunge_amplitude_chords": a.plunge_amplitude,
-            "pitch_amplitude_deg": a.pitch_amplitude_deg,
-            "mean_pitch_deg": a.mean_pitch_deg,
-            "pitch_phase_deg": a.pitch_phase_deg,
-            "pivot_chords": a.pivot,
-            "deforming": a.deformation.is_some(),
-            "lesp_critical": a.lesp_critical,
-            "reynolds": a.reynolds,
-            "cycles": a.cycles,
-            "time_step_chords": run.dt,
-            "mean_cl": m.cl,
-            "mean_ct": m.ct,
-            "mean_cd_friction": m.cd_friction,
-            "mean_ct_net": net,
-            "mean_cp": m.cp,
-            "efficiency": m.efficiency(),
-            "net_efficiency": m.net_efficiency(),
-            "mean_ct_change_last_two_cycles": m.periodicity,
-            "periodic": m.is_periodic(),
-            "warnings": doubt.iter().collect::<Vec<_>>(),
-            "wake_vortices": wake_count,
-            "leading_edge_vortices": lev_count,
-            "model": model_name(&case.section),
-        });
+        let mut v = case_json(
+            a,
+            serde_json::json!({
+                "lesp_critical": a.lesp_critical,
+                "cycles": a.cycles,
+                "time_step_chords": run.dt,
+                "mean_cl": m.cl,
+                "mean_ct": m.ct,
+                "mean_cd_friction": m.cd_friction,
+                "mean_ct_net": net,
+                "mean_cp": m.cp,
+                "efficiency": m.efficiency(),
+                "net_efficiency": m.net_efficiency(),
+                "mean_ct_change_last_two_cycles": m.periodicity,
+                "periodic": m.is_periodic(),
+                "warnings": doubt.iter().collect::<Vec<_>>(),
+                "wake_vortices": wake_count,
+                "leading_edge_vortices": lev_count,
+                "model": model_name(&case.section),
+            }),
+        );
         if let Some((gct, gcp, geta)) = garrick {
             let geta = (gcp != 0.0).then_some(geta);
             v["garrick"] = serde_json::json!({"mean_ct": gct, "mean_cp": gcp, "efficiency": geta});
