@@ -22,7 +22,7 @@ use super::panel::{
     PanelError, PanelSettings, PanelSolver, SectionShape, ShapeError, ShapeHistory,
 };
 use super::theory::garrick_plunge;
-use super::viscous::{SectionPath, ViscousError, ViscousSection, ViscousShape};
+use super::viscous::{SectionPath, ViscousError, ViscousSection, ViscousShape, STILL_KICK_RATE};
 use super::window::WindowStatistics;
 
 /// Fewest chord stations a thin section's deformation is resampled onto.
@@ -607,9 +607,12 @@ impl Case {
         }
         let duration = self.settings().duration;
         let path = if self.is_still() {
+            // Only a mirror symmetric flow needs the start-up turn.
+            let symmetric = self.motion.mean_pitch == 0.0 && section.shape.is_mirror_symmetric();
             SectionPath::Still {
                 pivot: self.motion.pivot,
                 pitch: self.motion.mean_pitch,
+                kick_rate: if symmetric { STILL_KICK_RATE } else { 0.0 },
             }
         } else {
             SectionPath::Harmonic(self.motion)
