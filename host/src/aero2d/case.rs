@@ -22,7 +22,9 @@ use super::panel::{
     PanelError, PanelSettings, PanelSolver, SectionShape, ShapeError, ShapeHistory,
 };
 use super::theory::garrick_plunge;
-use super::viscous::{SectionPath, ViscousError, ViscousSection, ViscousShape, STILL_KICK_RATE};
+use super::viscous::{
+    SectionPath, SurfaceLoads, ViscousError, ViscousSection, ViscousShape, STILL_KICK_RATE,
+};
 use super::window::WindowStatistics;
 
 /// Fewest chord stations a thin section's deformation is resampled onto.
@@ -388,6 +390,9 @@ pub struct CaseRun {
     /// The section's points at the end (global frame, chords), for a
     /// picture.
     pub body: Vec<(f64, f64)>,
+    /// The wall's pressure and skin friction at the end (the viscous
+    /// model's; `None` for the inviscid ones).
+    pub surface: Option<SurfaceLoads>,
 }
 
 impl Case {
@@ -571,6 +576,7 @@ impl Case {
                 .copied()
                 .collect(),
             body: solver.section_points(),
+            surface: None,
         })
     }
 
@@ -598,6 +604,7 @@ impl Case {
             leading_edge_vortices: 0,
             vortices: solver.wake().to_vec(),
             body: self.body_at(settings.duration, solver.surface_pressure().0),
+            surface: None,
         })
     }
 
@@ -629,6 +636,7 @@ impl Case {
             leading_edge_vortices: 0,
             vortices: run.vorticity,
             body: run.body,
+            surface: Some(run.surface),
         })
     }
 

@@ -53,11 +53,13 @@
 use fwav_ns2d::{Complex64, Contour, Deformation, Flow, FrameState, GridSpec, NsError, SectionMap};
 
 mod march;
+mod surface;
 
 use super::history::History;
 use super::ldvm::FreeVortex;
 use super::motion::{Motion, PitchRamp, SectionFlapping};
 use march::March;
+pub use surface::SurfaceLoads;
 
 /// Most grid cells drawn in the vorticity picture.
 const PICTURE_CELLS: usize = 20_000;
@@ -454,6 +456,8 @@ pub struct ViscousRun {
     pub vorticity: Vec<FreeVortex>,
     /// The section's outline at the end, global frame.
     pub body: Vec<(f64, f64)>,
+    /// The wall's pressure and skin friction at the end.
+    pub surface: SurfaceLoads,
 }
 
 /// The mid-line `points` (leading to trailing edge) shortened by `cut`
@@ -521,7 +525,7 @@ impl ViscousSection {
             let spec = section.grid(&map, reynolds);
             Ok(Flow::new(&map, spec, path, 1.0 / reynolds)?)
         };
-        self.run_flows(build, path, duration)
+        self.run_flows(build, path, reynolds, duration)
     }
 
     /// [`Self::run`] with the section deforming through `samples` over
@@ -558,7 +562,7 @@ impl ViscousSection {
             let spec = section.grid(&deformation.map_at(0.0), reynolds);
             Ok(Flow::deforming(deformation, spec, path, 1.0 / reynolds)?)
         };
-        self.run_flows(build, path, duration)
+        self.run_flows(build, path, reynolds, duration)
     }
 
     /// The grid of the spin-up ([`Self::spin_up_periods`]): its cells
@@ -579,11 +583,12 @@ impl ViscousSection {
 
     /// Steps the flows `build` makes of this section (and of its
     /// spin-up grid first, when it has one) through `path` to
-    /// `duration`, sampling their loads.
+    /// `duration` at `reynolds`, sampling their loads.
     fn run_flows(
         &self,
         build: impl Fn(&Self) -> Result<Flow<SectionPath>, ViscousError>,
         path: SectionPath,
+        reynolds: f64,
         duration: f64,
     ) -> Result<ViscousRun, ViscousError> {
         let mut march = March::new(path, duration, self.courant);
@@ -601,6 +606,7 @@ impl ViscousSection {
         };
         march.to(&mut flow, duration)?;
         let (vorticity, body) = picture(&flow, &path);
+        let surface = SurfaceLoads::of(&flow, &path, 1.0 / reynolds);
         Ok(ViscousRun {
             history: march.history,
             sample: march.sample,
@@ -609,6 +615,7 @@ impl ViscousSection {
             spin_up_steps: march.spin_up_steps,
             vorticity,
             body,
+            surface,
         })
     }
 
@@ -698,6 +705,17 @@ impl SectionPath {
         }
     }
 
+    /// Where a point `z` of the body frame is at `t` in the global frame
+    /// of [`super::case`] (the pivot at `x = pivot` plus the surge,
+    /// plunged by `h`; the body axes turned by `-alpha`, a nose-up pitch
+    /// being clockwise).
+    fn placement(&self, t: f64) -> impl Fn(Complex64) -> (f64, f64) {
+        let (x0, h, alpha) = self.pose(t);
+        let pivot = self.pivot() + x0;
+        let (s, c) = alpha.sin_cos();
+        move |z: Complex64| (pivot + z.re * c + z.im * s, h - z.re * s + z.im * c)
+    }
+
     /// `(x, h, alpha)`: downstream surge and plunge of the pivot, chords,
     /// and the nose-up pitch, at `t`.
     fn pose(&self, t: f64) -> (f64, f64, f64) {
@@ -711,7 +729,8 @@ impl SectionPath {
                 (x, h, 0.0)
             }
             Self::Ramp { ramp, .. } => (0.0, 0.0, ramp.at(t).0),
-            Self::Still { pitch, .. } => (0.0, 0.0, *pitch),
+            // The start-up turn included.
+            Self::Still { .. } => (0.0, 0.0, -fwav_ns2d::Motion::state(self, t).angle),
         }
     }
 
@@ -806,11 +825,8 @@ impl fwav_ns2d::Motion for SectionPath {
 /// the surge, plunged by `h`).
 fn picture(flow: &Flow<SectionPath>, path: &SectionPath) -> (Vec<FreeVortex>, Vec<(f64, f64)>) {
     let g = flow.grid();
-    let (x0, h, alpha) = path.pose(flow.time());
-    let pivot = path.pivot() + x0;
-    // The body axes are turned by -alpha (a nose-up pitch is clockwise).
-    let (s, c) = alpha.sin_cos();
-    let place = |x: f64, y: f64| (pivot + x * c + y * s, h - x * s + y * c);
+    let placement = path.placement(flow.time());
+    let place = |x: f64, y: f64| placement(Complex64::new(x, y));
     let omega = flow.vorticity();
     let mut cells: Vec<FreeVortex> = (1..g.nr - 1)
         .flat_map(|j| (0..g.nt).map(move |k| (j, k)))

@@ -12,6 +12,7 @@ use fwav::aero2d::window::MIN_SHEDDING_PERIODS;
 use fwav::aeroelastic::handoff::SectionFile;
 use fwav::output::history_csv::write_history_csv;
 use fwav::output::section_plot::draw;
+use fwav::output::surface_csv::write_surface_csv;
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -102,6 +103,14 @@ pub struct Aero2dArgs {
     /// CL, CT, CP; a file that exists is refused).
     #[arg(long)]
     pub history: Option<PathBuf>,
+    /// Write the wall's pressure and skin friction at the run's end to
+    /// this CSV (`--model ns` only): arc length, position, the pressure
+    /// coefficient less its mean round the wall (the solver fixes its
+    /// differences, not its level; forces and the loading across a thin
+    /// section do not depend on it), the wall shear stress's x and y (a
+    /// file that exists is refused).
+    #[arg(long)]
+    pub surface: Option<PathBuf>,
     /// Machine-readable output.
     #[arg(long)]
     pub json: bool,
@@ -132,9 +141,13 @@ fn check(a: &Aero2dArgs) -> Result<()> {
     let ns_options = a.ns_around.is_some()
         || a.ns_radial.is_some()
         || a.ns_courant.is_some()
+        || a.surface.is_some()
         || a.ns_thickness != ViscousSection::DEFAULT_THICKNESS;
     if a.model != FlowModel::Ns && ns_options {
-        bail!("--ns-thickness, --ns-around, --ns-radial and --ns-courant apply to --model ns only");
+        bail!(
+            "--ns-thickness, --ns-around, --ns-radial, --ns-courant and --surface apply to \
+             --model ns only"
+        );
     }
     if let Some(c) = a.ns_courant {
         if !(0.1..=10.0).contains(&c) {
@@ -321,6 +334,15 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         write_history_csv(&run.history, csv).with_context(|| {
             format!(
                 "--history {}: not written (an existing file is never overwritten; \
+                 choose a new name)",
+                csv.display()
+            )
+        })?;
+    }
+    if let (Some(csv), Some(surface)) = (&a.surface, &run.surface) {
+        write_surface_csv(surface, csv).with_context(|| {
+            format!(
+                "--surface {}: not written (an existing file is never overwritten; \
                  choose a new name)",
                 csv.display()
             )

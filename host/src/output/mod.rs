@@ -4,7 +4,8 @@
 //! - [`drawing`]: the one drawing error and what every picture shares.
 //! - [`section_plot`]: one 2D section run ([`crate::aero2d`]): the wake
 //!   and the section, and the force histories; [`history_csv`]: the
-//!   histories as CSV.
+//!   histories as CSV; [`surface_csv`]: a viscous run's wall pressure
+//!   and skin friction as CSV.
 //! - [`discipline_plot`]: the aerodynamic discipline
 //!   ([`crate::discipline`]): main effects and the CT–efficiency plane
 //!   with the Pareto front.
@@ -29,6 +30,7 @@ pub mod drawing;
 pub mod history_csv;
 pub mod layout_picture;
 pub mod section_plot;
+pub mod surface_csv;
 pub mod vtu;
 pub mod wing_series;
 
