@@ -145,8 +145,9 @@ impl ViscousShape {
 
 /// How far (chords) a contour's mirrored point may lie from it for the
 /// contour to be mirror symmetric ([`ViscousShape::is_mirror_symmetric`]):
-/// a file's rounding, not a shape's asymmetry.
-pub const MIRROR_TOLERANCE: f64 = 1e-6;
+/// a file's rounding (points given to 5 or 6 decimals), far below any
+/// camber a section is given.
+pub const MIRROR_TOLERANCE: f64 = 1e-4;
 
 /// The viscous model's section and resolution.
 #[derive(Clone, Debug, PartialEq)]
