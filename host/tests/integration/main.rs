@@ -30,3 +30,4 @@ mod uvlm;
 mod validate;
 mod viscous_default_section;
 mod viscous_section;
+mod viscous_stream;

@@ -1,0 +1,143 @@
+//! Why a 2D case cannot be set up or run ([`CaseError`]): each variant
+//! carries what was found and says what to change.
+
+use crate::aero2d::camber::CamberError;
+use crate::aero2d::naca::{NacaError, PointsError};
+use crate::aero2d::panel::{PanelError, ShapeError};
+use crate::aero2d::viscous::ViscousError;
+
+/// Why a case cannot be set up or run.
+#[derive(Debug, thiserror::Error)]
+pub enum CaseError {
+    /// A section name that is neither `flat`, a NACA 4-digit name nor an
+    /// existing point file.
+    #[error("{name:?}: neither `flat`, a NACA 4-digit name ({naca}), nor an existing point file")]
+    SectionName {
+        /// The name given.
+        name: String,
+        /// Why it is not a NACA name.
+        naca: NacaError,
+    },
+    /// A NACA section whose points cannot be made.
+    #[error(transparent)]
+    Naca(#[from] NacaError),
+    /// A point file that cannot be read.
+    #[error(transparent)]
+    Points(#[from] PointsError),
+    /// A contour the panel method cannot take.
+    #[error(transparent)]
+    Shape(#[from] ShapeError),
+    /// A thin section's deformation that is not a camber history.
+    #[error(transparent)]
+    Camber(#[from] CamberError),
+    /// The panel solver refused the section, settings or deformation.
+    #[error(transparent)]
+    Panel(#[from] PanelError),
+    /// Leading-edge vortex shedding asked of the panel method or the
+    /// viscous model.
+    #[error("leading-edge vortex shedding (a critical LESP) applies to the thin-line model only")]
+    LespOnThick,
+    /// A run of a given duration asked of an inviscid model.
+    #[error(
+        "a run of a given duration (a body at rest in a stream, a sudden start) is the \
+         Navier–Stokes model's; the inviscid models run whole periods of a motion: give cycles \
+         instead, or choose the Navier–Stokes model"
+    )]
+    DurationNeedsNs,
+    /// A duration out of range.
+    #[error(
+        "a duration of {duration} chords travelled: give more than 0 and at most {max} (a \
+         cylinder's wake settles within about 100 diameters)"
+    )]
+    Duration {
+        /// The duration asked, chords travelled.
+        duration: f64,
+        /// The longest allowed ([`super::MAX_DURATION_CHORDS`]).
+        max: f64,
+    },
+    /// The viscous model refused the case or failed.
+    #[error(transparent)]
+    Viscous(#[from] ViscousError),
+    /// A NACA section thicker than the panel method can take (the
+    /// message leaves the name to the caller, who gave it).
+    #[error(
+        "{thickness_percent}% thick; the panel method takes NACA sections up to \
+         {max_percent}% (thicker ones blow up); choose a thinner section"
+    )]
+    TooThick {
+        /// The name given.
+        name: String,
+        /// Its thickness, per cent of the chord.
+        thickness_percent: f64,
+        /// The thickest allowed, per cent of the chord.
+        max_percent: f64,
+    },
+    /// A section file with too few points to resolve the section (the
+    /// message leaves the file to the caller, who gave it).
+    #[error(
+        "{got} points; the panel method needs at least {min} to resolve a section \
+         (with fewer its thrust is wrong, with 3 it blows up): give more points"
+    )]
+    TooFewPoints {
+        /// The file.
+        path: String,
+        /// Points in it.
+        got: usize,
+        /// The fewest allowed.
+        min: usize,
+    },
+    /// A case whose periods are so long that it would take too many steps.
+    #[error(
+        "reduced frequency {reduced_frequency}: a period is {period:.0} chords travelled, so \
+         {cycles} cycles take {steps} time steps of {dt} chords (at most {max} are allowed, \
+         a run's time growing faster than its steps); use a reduced frequency of at least \
+         {min_reduced_frequency:.3} or fewer cycles"
+    )]
+    TooManySteps {
+        /// The reduced frequency.
+        reduced_frequency: f64,
+        /// The period, chords travelled.
+        period: f64,
+        /// Cycles asked.
+        cycles: u32,
+        /// The time step, chords travelled.
+        dt: f64,
+        /// Steps the case would take.
+        steps: usize,
+        /// The most allowed ([`super::MAX_STEPS`]).
+        max: usize,
+        /// The smallest reduced frequency that fits for these cycles.
+        min_reduced_frequency: f64,
+    },
+    /// The solution stopped being finite.
+    #[error(
+        "the solution diverged: {quantity} is not finite at t = {time:.3} chords travelled; \
+         the section or its motion is beyond what the model can take (try a smaller \
+         amplitude, a thinner or smoother section, or more section points)"
+    )]
+    NonFinite {
+        /// The load that went non-finite.
+        quantity: &'static str,
+        /// When, chords travelled.
+        time: f64,
+    },
+    /// A wake vortex far outside the region the flow can reach: the
+    /// solution blew up.
+    #[error(
+        "the solution blew up: a wake vortex reached ({x:.0}, {y:.0}) chords, {distance:.0} \
+         chords from the region the section sweeps (the domain of validity reaches \
+         {reach:.0}); its loads are not reported. The section or its motion is beyond what \
+         the model can take: try a smaller amplitude, a thinner or smoother section, or more \
+         section points"
+    )]
+    WakeLeftDomain {
+        /// The vortex's position, chords.
+        x: f64,
+        /// The vortex's position, chords.
+        y: f64,
+        /// Its distance from the swept region, chords.
+        distance: f64,
+        /// How far a vortex may be, chords.
+        reach: f64,
+    },
+}
