@@ -102,6 +102,11 @@ pub struct StreamSolver {
     upper_coefficient: f64,
     /// `g'²` per radial node.
     slope2: Vec<f64>,
+    /// Each ring's transformed right-hand side `-g'_j² ŝ_j` of the last
+    /// solve (kept: a later solve whose source changed on its first rings
+    /// only transforms those again, [`Self::solve_vorticity_changed`]),
+    /// and the solution's modes.
+    source_spectrum: Vec<Complex64>,
     spectrum: Vec<Complex64>,
     /// Mode 0's column.
     mean_column: Vec<Complex64>,
@@ -195,6 +200,7 @@ impl StreamSolver {
             wall_weights: wall_slope_weights(grid.xi[1], grid.xi[2]),
             upper_coefficient: c,
             slope2,
+            source_spectrum: vec![Complex64::new(0.0, 0.0); modes * nr],
             spectrum: vec![Complex64::new(0.0, 0.0); modes * nr],
             mean_column: vec![Complex64::new(0.0, 0.0); nr],
             ring: vec![0.0; nt],
@@ -219,7 +225,7 @@ impl StreamSolver {
         let nt = self.nt;
         let ring = |j: usize, out: &mut [f64]| out.copy_from_slice(&source[j * nt..(j + 1) * nt]);
         let rings = self.nr;
-        self.solve_rings(ring, wall_shape, wall_slope_mean, outer, psi, rings);
+        self.solve_rings(ring, wall_shape, wall_slope_mean, outer, psi, rings, rings);
     }
 
     /// [`Self::solve`] with the source `J ω` of the Jacobian `jac` and the
@@ -227,6 +233,15 @@ impl StreamSolver {
     /// transformed), for the first `rings` rings from the wall out only:
     /// the rest of `psi` is left as it was (the wall vorticity needs two;
     /// the inverse transforms are about a third of a solve's cost).
+    ///
+    /// Only the first `changed` rings of the source are transformed; the
+    /// others' transforms are the last solve's (`N_r` for all: the
+    /// caller promises that the source differs from the last solve's on
+    /// those rings only, and the result is then bit for bit the same as
+    /// transforming them all). [`crate::Flow::step`]'s second solve: the
+    /// wall's correction reaches the first few dozen rings of 320 on the
+    /// default FWAV section, and the rest's forward transforms are about
+    /// a quarter of a solve's cost.
     #[allow(clippy::too_many_arguments)]
     pub fn solve_vorticity(
         &mut self,
@@ -237,6 +252,7 @@ impl StreamSolver {
         outer: &[f64],
         psi: &mut [f64],
         rings: usize,
+        changed: usize,
     ) {
         let nt = self.nt;
         let ring = |j: usize, out: &mut [f64]| {
@@ -245,11 +261,21 @@ impl StreamSolver {
                 *o = a * w;
             }
         };
-        self.solve_rings(ring, wall_shape, wall_slope_mean, outer, psi, rings);
+        self.solve_rings(
+            ring,
+            wall_shape,
+            wall_slope_mean,
+            outer,
+            psi,
+            rings,
+            changed,
+        );
     }
 
     /// [`Self::solve`] with the source's ring `j` written by `source(j,
-    /// ring)`, the first `rings` rings of `psi` written.
+    /// ring)` for the first `fresh` rings (the others' transforms kept
+    /// from the last solve), the first `rings` rings of `psi` written.
+    #[allow(clippy::too_many_arguments)]
     fn solve_rings(
         &mut self,
         source: impl Fn(usize, &mut [f64]) + Sync,
@@ -258,13 +284,14 @@ impl StreamSolver {
         outer: &[f64],
         psi: &mut [f64],
         rings: usize,
+        fresh: usize,
     ) {
         let (nt, nr, modes) = (self.nt, self.nr, self.modes);
         let scratch_len = self.fft_scratch.len();
         // Each ring's modes, scaled into the right-hand side -g'_j² ŝ_j.
         let forward = &self.forward;
         let slope2 = &self.slope2;
-        self.spectrum
+        self.source_spectrum[..fresh.min(nr) * modes]
             .par_chunks_mut(modes)
             .enumerate()
             .for_each_init(
@@ -291,7 +318,7 @@ impl StreamSolver {
         // given.
         let column = &mut self.mean_column;
         for (j, c) in column.iter_mut().enumerate() {
-            *c = self.spectrum[j * modes];
+            *c = self.source_spectrum[j * modes];
         }
         let n = nr - 1;
         column[0] = Complex64::new(wall_slope_mean * nt as f64, 0.0) - column[1] * (w2 / upper_c);
@@ -304,6 +331,7 @@ impl StreamSolver {
         // The other modes' radial systems side by side along the rings,
         // blocks of modes in parallel: wall and outer values given.
         let (lower, inv_pivot, upper) = (&self.mode_lower, &self.mode_inv_pivot, &self.mode_upper);
+        let sources = &self.source_spectrum;
         let bounds = blocks::bounds(1, modes);
         blocks::pieces(&mut self.spectrum, modes, &bounds)
             .into_par_iter()
@@ -311,18 +339,33 @@ impl StreamSolver {
             .for_each(|(mut rows, &m0)| {
                 let width = rows[0].len();
                 let (wall, outer) = (&wall[m0..m0 + width], &outer_modes[m0..m0 + width]);
-                for (i, v) in rows[1].iter_mut().enumerate() {
-                    *v -= wall[i] * lower_c;
-                }
-                for (i, v) in rows[nr - 2].iter_mut().enumerate() {
-                    *v -= outer[i] * upper_c;
-                }
-                // Row 1's lower coefficient is zero (the wall is given).
+                // The right-hand sides (the wall's and the outer ring's
+                // given values moved to rows 1 and nr - 2), eliminated
+                // outward; row 1's lower coefficient is zero (the wall is
+                // given).
                 for j in 1..=nr - 2 {
                     let (done, rest) = rows.split_at_mut(j);
                     let (prev, row) = (&*done[j - 1], &mut *rest[0]);
                     let at = j * modes + m0;
+                    let source = &sources[at..at + width];
                     let (lo, inv) = (&lower[at..at + width], &inv_pivot[at..at + width]);
+                    if j != 1 && j != nr - 2 {
+                        for i in 0..width {
+                            row[i] = (source[i] - prev[i] * lo[i]) * inv[i];
+                        }
+                        continue;
+                    }
+                    row.copy_from_slice(source);
+                    if j == 1 {
+                        for (i, v) in row.iter_mut().enumerate() {
+                            *v -= wall[i] * lower_c;
+                        }
+                    }
+                    if j == nr - 2 {
+                        for (i, v) in row.iter_mut().enumerate() {
+                            *v -= outer[i] * upper_c;
+                        }
+                    }
                     for i in 0..width {
                         row[i] = (row[i] - prev[i] * lo[i]) * inv[i];
                     }
@@ -379,7 +422,7 @@ impl StreamSolver {
                     values[0] = 1.0;
                 }
             };
-            self.solve_rings(source, &zeros, 0.0, &zeros, &mut psi, 2);
+            self.solve_rings(source, &zeros, 0.0, &zeros, &mut psi, 2, nr);
             out[2 * j * nt..2 * (j + 1) * nt].copy_from_slice(&psi[..2 * nt]);
         }
         out

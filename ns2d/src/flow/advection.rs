@@ -11,7 +11,8 @@
 //! streamfunction at its two corners (so the fluxes round a cell sum to
 //! zero exactly and none crosses the wall) times a face value of the
 //! vorticity; the relative streamfunction is the step's middle's
-//! (extrapolated: [`super::Flow::step`]), so that the velocity is
+//! (extrapolated from the step's start and the last one's as the corners
+//! are formed: [`super::Flow::step`]), so that the velocity is
 //! centred in the step as Crank–Nicolson and Adams–Bashforth need.
 //! Every flux is shared by the two cells of its face with one weight, so
 //! advection changes the fluid's circulation only by what crosses the
@@ -197,28 +198,42 @@ impl RadialFaces {
         }
     }
 
-    /// Every row of `rows`'s flow (rows in parallel).
-    fn fill(&mut self, rows: &RateRows<'_>) {
+    /// Every row of `rows`'s flow (rows in parallel), and the relative
+    /// streamfunction at the step's start into `start` (every ring: the
+    /// next step's previous one).
+    fn fill(&mut self, rows: &RateRows<'_>, start: &mut [f64]) {
         let nt = self.nt;
-        rows.corners(usize::MAX, &mut self.wall);
+        let nr = start.len() / nt;
+        rows.corners(
+            usize::MAX,
+            &mut self.wall,
+            &mut start[..nt],
+            &mut vec![0.0; 2 * nt],
+        );
+        let (_, outer) = start.split_at_mut((nr - 1) * nt);
+        rows.relative_at_start(nr - 1, outer);
         self.corners
             .par_chunks_mut(nt)
             .zip(self.speed.par_chunks_mut(nt))
             .zip(self.first.par_chunks_mut(nt))
             .zip(self.correction.par_chunks_mut(nt))
             .zip(self.weight.par_chunks_mut(nt))
+            .zip(start.par_chunks_mut(nt))
             .enumerate()
             .skip(1)
-            .for_each(|(j, ((((corners, speed), first), correction), weight))| {
-                rows.corners(j, corners);
-                let mut faces = Faces {
-                    speed,
-                    first,
-                    correction,
-                    weight,
-                };
-                rows.radial_faces(j, corners, &mut faces);
-            });
+            .for_each_init(
+                || vec![0.0; 2 * nt],
+                |middle, (j, (((((corners, speed), first), correction), weight), start))| {
+                    rows.corners(j, corners, start, middle);
+                    let mut faces = Faces {
+                        speed,
+                        first,
+                        correction,
+                        weight,
+                    };
+                    rows.radial_faces(j, corners, &mut faces);
+                },
+            );
     }
 
     /// The corners of row `j`.
@@ -282,19 +297,35 @@ pub(super) struct RateRows<'a> {
     /// The radial stretching's `g'` at each ring and `g''/g'`.
     pub(super) slope: &'a [f64],
     pub(super) curvature: f64,
-    /// The vorticity at the step's start, and the relative
-    /// streamfunction (the fluid's less the rigid motion's) at the step's
-    /// middle, which carries it ([`super::Flow::step`]), at all nodes.
+    /// The vorticity at the step's start, at all nodes.
     pub(super) w: &'a [f64],
-    pub(super) relative: &'a [f64],
+    /// The streamfunction and the rigid motion's at the step's start
+    /// (their difference the relative streamfunction), and the relative
+    /// streamfunction at the last step's start, at all nodes, and ½ of
+    /// the ratio of this step to the last (0 on the first): the relative
+    /// streamfunction that carries the vorticity is the step's middle's,
+    /// `now + half (now - previous)` ([`super::Flow::step`]).
+    pub(super) psi: &'a [f64],
+    pub(super) frame_psi: &'a [f64],
+    pub(super) previous_relative: &'a [f64],
+    pub(super) half: f64,
     /// `1/J` at all nodes.
     pub(super) inv_jac: &'a [f64],
     /// The inverse cell areas ([`FaceAreas`]).
     pub(super) areas: &'a FaceAreas,
     /// A deforming grid's swept fluxes of the radial faces (above each
-    /// node) and ring faces (`k + ½`) at the step's middle, taken off the
-    /// fluid's (`flow/deforming.rs`); `None` for a rigid grid.
-    pub(super) swept: Option<(&'a [f64], &'a [f64])>,
+    /// node) and ring faces (`k + ½`), taken off the fluid's at the
+    /// step's middle as the relative streamfunction is
+    /// ([`super::deforming`]'s `DeformingGrid::swept`: radial now and
+    /// before, ring now and before); `None` for a rigid grid.
+    pub(super) swept: Option<[&'a [f64]; 4]>,
+}
+
+/// A quantity at the step's middle from its value at the step's start,
+/// `now`, and at the last step's, `previous`: `now + half (now -
+/// previous)` ([`RateRows::half`]).
+fn at_middle(now: f64, previous: f64, half: f64) -> f64 {
+    now + half * (now - previous)
 }
 
 impl RateRows<'_> {
@@ -303,21 +334,73 @@ impl RateRows<'_> {
         &f[j * self.nt..(j + 1) * self.nt]
     }
 
-    /// The relative streamfunction at the corners `(j + ½, k + ½)` of ring
-    /// `j` (`j + 1` is a ring; the wall's corners for `j` = `usize::MAX`
-    /// are the wall's own values, so no flux crosses it) into `out`.
-    fn corners(&self, j: usize, out: &mut [f64]) {
+    /// Ring `j`'s relative streamfunction at the step's start into `out`.
+    fn relative_at_start(&self, j: usize, out: &mut [f64]) {
+        let r = j * self.nt..(j + 1) * self.nt;
+        for ((o, p), f) in out
+            .iter_mut()
+            .zip(&self.psi[r.clone()])
+            .zip(&self.frame_psi[r])
+        {
+            *o = p - f;
+        }
+    }
+
+    /// The relative streamfunction at the step's middle at the corners
+    /// `(j + ½, k + ½)` of ring `j` (`j + 1` is a ring; the wall's corners
+    /// for `j` = `usize::MAX` are the wall's own values, so no flux
+    /// crosses it) into `out`, and ring `j`'s (the wall's) at the step's
+    /// start into `start`; `middle` two rings of work space.
+    fn corners(&self, j: usize, out: &mut [f64], start: &mut [f64], middle: &mut [f64]) {
         let nt = self.nt;
-        let rel = |j: usize, k: usize| self.relative[j * nt + k];
-        if j == usize::MAX {
+        let wall = j == usize::MAX;
+        let ring = if wall { 0 } else { j };
+        self.relative_at_start(ring, start);
+        let (here, above) = middle.split_at_mut(nt);
+        for ((m, s), p) in here
+            .iter_mut()
+            .zip(&*start)
+            .zip(self.ring(self.previous_relative, ring))
+        {
+            *m = at_middle(*s, *p, self.half);
+        }
+        if wall {
             for (k, c) in out.iter_mut().enumerate() {
-                *c = 0.5 * (rel(0, k) + rel(0, (k + 1) % nt));
+                *c = 0.5 * (here[k] + here[(k + 1) % nt]);
             }
             return;
         }
+        for (((m, s), f), p) in above
+            .iter_mut()
+            .zip(self.ring(self.psi, j + 1))
+            .zip(self.ring(self.frame_psi, j + 1))
+            .zip(self.ring(self.previous_relative, j + 1))
+        {
+            *m = at_middle(s - f, *p, self.half);
+        }
         for (k, c) in out.iter_mut().enumerate() {
             let kp = if k + 1 == nt { 0 } else { k + 1 };
-            *c = 0.25 * (rel(j, k) + rel(j, kp) + rel(j + 1, k) + rel(j + 1, kp));
+            *c = 0.25 * (here[k] + here[kp] + above[k] + above[kp]);
+        }
+    }
+
+    /// A deforming grid's swept fluxes of ring `j`'s radial faces
+    /// (`radial`) or ring faces at the step's middle, taken off the face
+    /// speeds `speed`.
+    fn take_swept(&self, j: usize, radial: bool, speed: &mut [f64]) {
+        if let Some([radial_now, radial_before, ring_now, ring_before]) = self.swept {
+            let (now, before) = if radial {
+                (radial_now, radial_before)
+            } else {
+                (ring_now, ring_before)
+            };
+            for ((q, n), b) in speed
+                .iter_mut()
+                .zip(self.ring(now, j))
+                .zip(self.ring(before, j))
+            {
+                *q -= at_middle(*n, *b, self.half);
+            }
         }
     }
 
@@ -331,11 +414,7 @@ impl RateRows<'_> {
         for k in 1..nt {
             faces.speed[k] = corners[k] - corners[k - 1];
         }
-        if let Some((swept, _)) = self.swept {
-            for (q, s) in faces.speed.iter_mut().zip(self.ring(swept, j)) {
-                *q -= s;
-            }
-        }
+        self.take_swept(j, true, faces.speed);
         let (below, here, above) = (
             self.ring(self.w, j - 1),
             self.ring(self.w, j),
@@ -389,11 +468,7 @@ impl RateRows<'_> {
         for ((q, l), u) in faces.speed.iter_mut().zip(lower).zip(upper) {
             *q = l - u;
         }
-        if let Some((_, swept)) = self.swept {
-            for (q, s) in faces.speed.iter_mut().zip(self.ring(swept, j)) {
-                *q -= s;
-            }
-        }
+        self.take_swept(j, false, faces.speed);
         for k in 0..nt {
             let q = faces.speed[k];
             // Nodes k - 1, k, k + 1, k + 2.
@@ -509,6 +584,12 @@ impl<M: Motion> Flow<M> {
     pub(super) fn advection_rates(&mut self, dt: f64, now: f64, before: f64) {
         let g = &self.grid;
         let (nt, nr) = (g.nt, g.nr);
+        // The carrier at the step's middle (module docs of `flow`).
+        let half = if self.steps == 0 {
+            0.0
+        } else {
+            0.5 * dt / self.last_dt
+        };
         let rows = RateRows {
             nt,
             nr,
@@ -520,16 +601,16 @@ impl<M: Motion> Flow<M> {
             slope: &g.slope,
             curvature: g.curvature,
             w: &self.omega,
-            relative: &self.relative,
+            psi: &self.psi,
+            frame_psi: &self.frame_psi,
+            previous_relative: &self.previous_relative,
+            half,
             inv_jac: &g.inv_jac,
             areas: &self.face_areas,
-            swept: self
-                .deforming
-                .as_ref()
-                .map(|d| (&d.middle_radial[..], &d.middle_ring[..])),
+            swept: self.deforming.as_ref().map(|d| d.swept()),
         };
         let mut radial = std::mem::take(&mut self.radial_faces);
-        radial.fill(&rows);
+        radial.fill(&rows, &mut self.relative_start);
         self.rate
             .par_chunks_mut(nt)
             .zip(self.previous_rate.par_chunks_mut(nt))
@@ -572,6 +653,8 @@ impl<M: Motion> Flow<M> {
             .map(|(f, w)| (1.0 - w) * f)
             .sum();
         self.radial_faces = radial;
+        // This step's start is the next one's previous.
+        std::mem::swap(&mut self.relative_start, &mut self.previous_relative);
     }
 
     /// The implicit part of the step's outflow through the outer face (the

@@ -113,13 +113,10 @@ pub(super) struct DeformingGrid {
     /// sweeps per unit time, outward and forward.
     swept_radial: Vec<f64>,
     swept_ring: Vec<f64>,
-    /// The same at the last step's start, and extrapolated to the
-    /// current step's middle (the advection's:
-    /// [`DeformingGrid::swept_at_middle`]).
+    /// The same at the last step's start (the advection extrapolates the
+    /// two to the current step's middle: [`DeformingGrid::swept`]).
     previous_radial: Vec<f64>,
     previous_ring: Vec<f64>,
-    pub(super) middle_radial: Vec<f64>,
-    pub(super) middle_ring: Vec<f64>,
     /// At the wall: the deformation's streamfunction and `ψ_ξ`, its
     /// acceleration `∂²z/∂t²` and `∂w/∂θ`.
     pub(super) wall_psi: Vec<f64>,
@@ -187,8 +184,6 @@ impl DeformingGrid {
             swept_ring: vec![0.0; n],
             previous_radial: vec![0.0; n],
             previous_ring: vec![0.0; n],
-            middle_radial: vec![0.0; n],
-            middle_ring: vec![0.0; n],
             wall_psi: vec![0.0; nt],
             wall_slope: vec![0.0; nt],
             wall_acceleration: vec![zero; nt],
@@ -236,30 +231,26 @@ impl DeformingGrid {
         self.circulation = wall.iter().map(|s| s.im).sum::<f64>() * grid.d_theta;
     }
 
-    /// The swept fluxes at the middle of a step from the current grid
-    /// (the step's start) and the last step's start,
-    /// `now + half (now - previous)` (`half` = ½ of the ratio of the
-    /// steps; 0 on the first), as the fluid's relative streamfunction
-    /// ([`super::Flow::step`]); the current ones kept for the next step.
-    pub(super) fn swept_at_middle(&mut self, half: f64) {
-        for (now, previous, middle) in [
-            (
-                &self.swept_radial,
-                &mut self.previous_radial,
-                &mut self.middle_radial,
-            ),
-            (
-                &self.swept_ring,
-                &mut self.previous_ring,
-                &mut self.middle_ring,
-            ),
-        ] {
-            middle
-                .par_iter_mut()
-                .zip(previous.par_iter_mut())
-                .zip(now.par_iter())
-                .for_each(|((m, p), n)| *m = super::at_middle(*n, p, half));
-        }
+    /// The swept fluxes of the radial and ring faces at the current
+    /// step's start and at the last one's, `(now radial, previous
+    /// radial, now ring, previous ring)`: the advection takes them at the
+    /// step's middle, `now + half (now - previous)` (`half` = ½ of the
+    /// ratio of the steps; 0 on the first), as the fluid's relative
+    /// streamfunction ([`super::Flow::step`]).
+    pub(super) fn swept(&self) -> [&[f64]; 4] {
+        [
+            &self.swept_radial,
+            &self.previous_radial,
+            &self.swept_ring,
+            &self.previous_ring,
+        ]
+    }
+
+    /// Keep the current swept fluxes as the last step's (before the grid
+    /// moves to the step's end; a swap, no copy).
+    pub(super) fn keep_swept_as_previous(&mut self) {
+        std::mem::swap(&mut self.swept_radial, &mut self.previous_radial);
+        std::mem::swap(&mut self.swept_ring, &mut self.previous_ring);
     }
 
     /// The fluxes the faces sweep (module docs) from the nodes'
@@ -354,17 +345,16 @@ impl<M: Motion> Flow<M> {
             .zip(self.face_areas.node_mut().par_chunks_mut(nt))
             .zip(g.xi.par_iter().zip(self.inv_cell.par_iter()))
             .for_each_init(
-                || (vec![zero; nt], vec![zero; scratch_len]),
-                |(buf, scratch), (((((((z, dz), v), swept), jac), inv_jac), area), (xi, cell))| {
+                || vec![zero; scratch_len],
+                |scratch, (((((((z, dz), v), swept), jac), inv_jac), area), (xi, cell))| {
                     let rho = xi.exp();
                     for (series, coefficients, out) in [
                         (Series::Value, &state.coefficients, &mut *z),
                         (Series::Radial, &state.coefficients, &mut *dz),
                         (Series::Value, &state.rate, &mut *v),
                     ] {
-                        fill(buf, coefficients, rho, series);
-                        fft.process_with_scratch(buf, scratch);
-                        out.copy_from_slice(buf);
+                        fill(out, coefficients, rho, series);
+                        fft.process_with_scratch(out, scratch);
                     }
                     let nodes = jac.iter_mut().zip(inv_jac.iter_mut()).zip(area.iter_mut());
                     for (((((j, ij), a), d), w), s) in

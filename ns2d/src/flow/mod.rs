@@ -58,7 +58,8 @@
 //!
 //! The velocity that carries the vorticity through a step is the one of
 //! the step's middle, the relative streamfunction extrapolated from the
-//! step's start and the last one's (`Flow::carrier_at_middle`; a
+//! step's start and the last one's (`flow/advection.rs`, as it forms the
+//! corners' streamfunction; a
 //! deforming grid's swept fluxes likewise). With the start's velocity,
 //! as until 2026-12-03, the step was first order in the velocity's
 //! change: the default FWAV section's first-stroke thrust kept falling
@@ -182,10 +183,11 @@ pub struct Flow<M: Motion> {
     frame: FrameState,
     /// The time of `frame` and `frame_psi`.
     frame_time: Option<f64>,
-    /// The relative streamfunction `ψ - ψ_frame` that carries the
-    /// vorticity through the current step (extrapolated to its middle),
-    /// and the one of the last step's start.
-    relative: Vec<f64>,
+    /// The relative streamfunction `ψ - ψ_frame` at the current step's
+    /// start (written by the advection, which carries the vorticity by
+    /// its extrapolation to the step's middle) and at the last one's
+    /// (swapped after the advection).
+    relative_start: Vec<f64>,
     previous_relative: Vec<f64>,
     /// The explicit rate of the previous step (Adams–Bashforth) and its
     /// time step; the diffusion's implicit weight of the current step.
@@ -279,7 +281,7 @@ impl<M: Motion> Flow<M> {
             widths,
             inv_cell,
             deforming: None,
-            relative: vec![0.0; n],
+            relative_start: vec![0.0; n],
             previous_relative: vec![0.0; n],
             previous_rate: vec![0.0; n],
             last_dt: 0.0,
@@ -341,6 +343,14 @@ impl<M: Motion> Flow<M> {
     /// wall's two rings only, which are all that Thom's formula reads
     /// (the rest of `psi` is left as it was).
     fn solve_stream(&mut self, t: f64, homogeneous: bool, extent: Extent) {
+        let all = self.grid.nr;
+        self.solve_stream_changed(t, homogeneous, extent, all);
+    }
+
+    /// [`Self::solve_stream`] when the vorticity has changed since the
+    /// last solve on its first `changed` rings only, at the same time and
+    /// on the same grid (the step's second solve: [`Self::step`]).
+    fn solve_stream_changed(&mut self, t: f64, homogeneous: bool, extent: Extent, changed: usize) {
         let g = &self.grid;
         let nt = g.nt;
         if homogeneous {
@@ -386,6 +396,7 @@ impl<M: Motion> Flow<M> {
                 Extent::All => g.nr,
                 Extent::Wall => 2,
             },
+            changed,
         );
     }
 
@@ -512,7 +523,6 @@ impl<M: Motion> Flow<M> {
             let r = dt / self.last_dt;
             (1.0 + 0.5 * r, -0.5 * r)
         };
-        self.carrier_at_middle(dt);
         self.advection_rates(dt, now, before);
         let explicit_outflow =
             now * self.outflow_rate + before * self.previous_outflow + self.outflow_explicit;
@@ -520,6 +530,9 @@ impl<M: Motion> Flow<M> {
         let t = self.time + dt;
         // The explicit part was the step start's grid; the rest is the
         // end's (`flow/deforming.rs`).
+        if let Some(d) = self.deforming.as_mut() {
+            d.keep_swept_as_previous();
+        }
         self.move_grid(t);
         self.start_outer
             .copy_from_slice(&self.omega[(self.grid.nr - 1) * nt..]);
@@ -539,7 +552,7 @@ impl<M: Motion> Flow<M> {
             *w += r;
         }
         // The radial sweep again with the corrected wall vorticity.
-        self.radial_wall_change(&residual);
+        let changed = self.radial_wall_change(&residual);
         self.omega[..nt].copy_from_slice(&wall);
         let outer_start = (self.grid.nr - 1) * nt;
         self.omega[outer_start..].copy_from_slice(&outer_ring);
@@ -548,7 +561,9 @@ impl<M: Motion> Flow<M> {
         self.time = t;
         self.steps += 1;
         self.last_dt = dt;
-        self.solve_stream(t, false, Extent::All);
+        // The vorticity changed on the wall's `changed` rings only since
+        // the first solve (the outer ring is back to its value then).
+        self.solve_stream_changed(t, false, Extent::All, changed);
         self.wall_mismatch(&wall, &mut residual);
         let largest = wall.iter().fold(0.0_f64, |m, w| m.max(w.abs()));
         self.wall_residual =
@@ -567,41 +582,6 @@ impl<M: Motion> Flow<M> {
             });
         }
         Ok(())
-    }
-
-    /// The velocity that carries the vorticity through a step of `dt`,
-    /// at the step's middle: the relative streamfunction extrapolated
-    /// from the step's start and the last one's,
-    /// `ψr^(n+½) = ψr^n + (r/2)(ψr^n - ψr^(n-1))` with `r` the ratio of
-    /// the steps (the start's alone on the first step), into
-    /// `self.relative`; a deforming grid's swept fluxes likewise
-    /// (`flow/deforming.rs`). Module docs: with the start's velocity, as
-    /// before, the step was first order in the velocity's change.
-    /// Cost `O(N)`.
-    fn carrier_at_middle(&mut self, dt: f64) {
-        let nt = self.grid.nt;
-        let half = if self.steps == 0 {
-            0.0
-        } else {
-            0.5 * dt / self.last_dt
-        };
-        self.relative
-            .par_chunks_mut(nt)
-            .zip(self.previous_relative.par_chunks_mut(nt))
-            .zip(self.psi.par_chunks(nt).zip(self.frame_psi.par_chunks(nt)))
-            .for_each(|((middle, previous), (psi, frame))| {
-                for (((m, p), s), f) in middle
-                    .iter_mut()
-                    .zip(previous.iter_mut())
-                    .zip(psi)
-                    .zip(frame)
-                {
-                    *m = at_middle(s - f, p, half);
-                }
-            });
-        if let Some(d) = self.deforming.as_mut() {
-            d.swept_at_middle(half);
-        }
     }
 
     /// How far the last step's wall vorticity was from the one Thom's
@@ -644,15 +624,18 @@ impl<M: Motion> Flow<M> {
     pub fn circulation(&self) -> f64 {
         let g = &self.grid;
         let (nt, nr) = (g.nt, g.nr);
-        g.jac[..(nr - 1) * nt]
-            .chunks(nt)
-            .zip(self.omega.chunks(nt))
-            .zip(&self.widths)
+        // Each ring's sum on its own thread, the rings' sums added in
+        // order: the same to the bit whatever the threads.
+        let rings: Vec<f64> = g.jac[..(nr - 1) * nt]
+            .par_chunks(nt)
+            .zip(self.omega.par_chunks(nt))
+            .zip(self.widths.par_iter())
             .map(|((jac, omega), width)| {
                 let ring: f64 = jac.iter().zip(omega).map(|(j, w)| j * w).sum();
                 width * g.d_theta * ring
             })
-            .sum()
+            .collect();
+        rings.iter().sum()
     }
 
     /// The circulation carried out through the far boundary so far.
@@ -660,18 +643,6 @@ impl<M: Motion> Flow<M> {
     pub fn exited_circulation(&self) -> f64 {
         self.exited
     }
-}
-
-/// A quantity of the step's start, `now`, extrapolated to the step's
-/// middle from it and the last step's start, `previous` (which then
-/// takes `now`): `now + half (now - previous)`, `half` being ½ of the
-/// ratio of the steps (0 on the first). The carrier of
-/// [`Flow::step`]: the fluid's relative streamfunction and the
-/// swept fluxes alike.
-fn at_middle(now: f64, previous: &mut f64, half: f64) -> f64 {
-    let middle = now + half * (now - *previous);
-    *previous = now;
-    middle
 }
 
 /// Where a streamfunction solve is wanted ([`Flow::solve_stream`]).

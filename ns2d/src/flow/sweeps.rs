@@ -164,7 +164,10 @@ impl<M: Motion> Flow<M> {
     /// The radial sweep of [`Self::radial_crank_nicolson`] again with the
     /// wall vorticity changed by `change`: the same elimination, the
     /// change carried through it (linear), and the back substitution.
-    pub(super) fn radial_wall_change(&mut self, change: &[f64]) {
+    /// Returns the rings from the wall out that it may have changed (the
+    /// wall ring, whose value the caller sets, included): the others keep
+    /// the first pass's values bit for bit.
+    pub(super) fn radial_wall_change(&mut self, change: &[f64]) -> usize {
         let nt = self.grid.nt;
         let lines = line_blocks(
             &mut self.omega,
@@ -180,9 +183,9 @@ impl<M: Motion> Flow<M> {
         // whatever block it is in, so the flow does not depend on how
         // many threads share the lines (`tests/thread_count.rs`).
         let rounding = 1e-17 * change.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
-        lines
+        let top = lines
             .into_par_iter()
-            .for_each(|((((mut w, upper_mod), mut solved), gain), k0)| {
+            .map(|((((mut w, upper_mod), mut solved), gain), k0)| {
                 let rings = solved.len();
                 // Ring by ring, the block's lines side by side (the rings
                 // are contiguous, the lines are not), until every line's
@@ -214,7 +217,11 @@ impl<M: Motion> Flow<M> {
                     top = j;
                 }
                 back_substitute(&mut w, &upper_mod, &solved, top);
-            });
+                top
+            })
+            .max()
+            .unwrap_or(0);
+        top + 1
     }
 }
 
