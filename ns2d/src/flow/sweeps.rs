@@ -39,28 +39,33 @@ impl<M: Motion> Flow<M> {
                     let (b, rest) = rest.split_at_mut(span);
                     let (work, z) = rest.split_at_mut(span);
                     let count = rings.len() / nt;
-                    let interior = |l: usize| {
-                        let j = block * LANES + l;
-                        l < count && j > 0 && j < nr - 1
-                    };
+                    // Per lane (ring of the block): whether it is an
+                    // interior ring (the others get an identity system and
+                    // are not written) and its `dt / (w_j Δθ)`.
+                    let mut live = [false; LANES];
+                    let mut inv_width = [0.0; LANES];
                     for l in 0..LANES {
-                        if !interior(l) {
-                            // An identity system: the ring is not written.
-                            for k in 0..nt {
-                                let i = k * LANES + l;
-                                (lower[i], diag[i], upper[i], b[i]) = (0.0, 1.0, 0.0, 0.0);
-                            }
-                            continue;
-                        }
                         let j = block * LANES + l;
-                        let inv_width = dt / (widths[j] * g.d_theta);
-                        let at = l * nt;
-                        for k in 0..nt {
-                            let km = if k == 0 { nt - 1 } else { k - 1 };
-                            let sigma = factor * inv_jac[at + k];
-                            let s = inv_width * inv_jac[at + k];
-                            let (q, p) = (speed[at + k], speed[at + km]);
+                        live[l] = l < count && j > 0 && j < nr - 1;
+                        if live[l] {
+                            inv_width[l] = dt / (widths[j] * g.d_theta);
+                        }
+                    }
+                    // Node by node, the lanes inner: the interleaved
+                    // systems are written in order (lane by lane, each
+                    // write touched another cache line).
+                    for k in 0..nt {
+                        let km = if k == 0 { nt - 1 } else { k - 1 };
+                        for l in 0..LANES {
                             let i = k * LANES + l;
+                            if !live[l] {
+                                (lower[i], diag[i], upper[i], b[i]) = (0.0, 1.0, 0.0, 0.0);
+                                continue;
+                            }
+                            let at = l * nt;
+                            let sigma = factor * inv_jac[at + k];
+                            let s = inv_width[l] * inv_jac[at + k];
+                            let (q, p) = (speed[at + k], speed[at + km]);
                             lower[i] = -sigma - s * p.max(0.0);
                             diag[i] = 1.0 + 2.0 * sigma + s * (q.max(0.0) - p.min(0.0));
                             upper[i] = -sigma + s * q.min(0.0);
@@ -68,9 +73,11 @@ impl<M: Motion> Flow<M> {
                         }
                     }
                     solve_periodic(lower, diag, upper, b, work, z);
-                    for l in (0..LANES).filter(|&l| interior(l)) {
-                        for (k, w) in rings[l * nt..(l + 1) * nt].iter_mut().enumerate() {
-                            *w = b[k * LANES + l];
+                    for (k, solved) in b.chunks_exact(LANES).enumerate() {
+                        for (l, x) in solved.iter().enumerate() {
+                            if live[l] {
+                                rings[l * nt + k] = *x;
+                            }
                         }
                     }
                 },
