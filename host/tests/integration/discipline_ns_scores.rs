@@ -200,8 +200,9 @@ fn ns_discipline_benchmark() {
 /// (2026-12-03, a slow hour): rigid 118.3 s, deforming 190.4 s (CT
 /// 0.0850, efficiency 0.0341), which fails the 60 s; about 43 s
 /// and 77 s in a normal hour (on 384 x 240: 31.9 s and 57.3 s). With the
-/// step's passes fused (2026-12-04, the same flow to the bit, 5 % sooner
-/// run alternately): 84.7 s and 127.4 s in a slow hour (135.5 s and
+/// step's passes fused and the ring sweep's set-up reordered (2026-12-04,
+/// the same flow to the bit, about 6.5 % sooner run alternately): 84.7 s
+/// and 127.4 s, then 80.7 s and 130.1 s, in slow hours (135.5 s and
 /// 209.7 s before, in a slower one).
 #[test]
 #[ignore = "benchmark (2 to 5 min); fails the issue's 60 s (deforming: about 77 s in a normal hour, 190 s in a slow one): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_deforming_evaluation_benchmark`"]
