@@ -180,6 +180,8 @@ pub(super) struct RadialFaces {
     weight: Vec<f64>,
     /// A row of zeros: the wall's face, which no flux crosses.
     zero: Vec<f64>,
+    /// Two rings of work space for the wall's corners.
+    wall_middle: Vec<f64>,
 }
 
 impl RadialFaces {
@@ -195,6 +197,7 @@ impl RadialFaces {
             correction: vec![0.0; rows],
             weight: vec![0.0; rows],
             zero: vec![0.0; nt],
+            wall_middle: vec![0.0; 2 * nt],
         }
     }
 
@@ -208,7 +211,7 @@ impl RadialFaces {
             usize::MAX,
             &mut self.wall,
             &mut start[..nt],
-            &mut vec![0.0; 2 * nt],
+            &mut self.wall_middle,
         );
         let (_, outer) = start.split_at_mut((nr - 1) * nt);
         rows.relative_at_start(nr - 1, outer);
