@@ -104,7 +104,7 @@ pub struct StreamSolver {
     slope2: Vec<f64>,
     /// Each ring's transformed right-hand side `-g'_j² ŝ_j` of the last
     /// solve (kept: a later solve whose source changed on its first rings
-    /// only transforms those again, [`Self::solve_vorticity_changed`]),
+    /// only transforms those again, [`Self::solve_vorticity`]),
     /// and the solution's modes.
     source_spectrum: Vec<Complex64>,
     spectrum: Vec<Complex64>,
