@@ -50,7 +50,7 @@ impl<M: Motion> Flow<M> {
     /// wall vorticity on every line gives every column's vorticity at
     /// once, each on its own line; the streamfunction of a source on one
     /// line is a sum of the solver's turned responses to a unit source on
-    /// each ring ([`StreamSolver::wall_responses`], computed once per
+    /// each ring ([`crate::StreamSolver::wall_responses`], computed once per
     /// flow: the operator is the polar one for any section and any
     /// deformation), over the rings where the line's source is above
     /// rounding. Cost: one radial sweep and `N_θ²` products per ring the
