@@ -286,9 +286,17 @@ impl StreamSolver {
         rings: usize,
         fresh: usize,
     ) {
+        self.transform_sources(source, fresh);
+        self.solve_modes(wall_shape, wall_slope_mean, outer);
+        self.transform_back(psi, rings);
+    }
+
+    /// The first `fresh` rings' sources, each ring's modes scaled into the
+    /// right-hand side `-g'_j² ŝ_j` (into `source_spectrum`; rings in
+    /// parallel).
+    fn transform_sources(&mut self, source: impl Fn(usize, &mut [f64]) + Sync, fresh: usize) {
         let (nt, nr, modes) = (self.nt, self.nr, self.modes);
         let scratch_len = self.fft_scratch.len();
-        // Each ring's modes, scaled into the right-hand side -g'_j² ŝ_j.
         let forward = &self.forward;
         let slope2 = &self.slope2;
         self.source_spectrum[..fresh.min(nr) * modes]
@@ -306,6 +314,12 @@ impl StreamSolver {
                     }
                 },
             );
+    }
+
+    /// Every mode's radial system from the transformed sources, with the
+    /// wall's and the outer ring's conditions (into `spectrum`).
+    fn solve_modes(&mut self, wall_shape: &[f64], wall_slope_mean: f64, outer: &[f64]) {
+        let (nt, nr, modes) = (self.nt, self.nr, self.modes);
         let wall = self.modes_of(wall_shape);
         let outer_modes = self.modes_of(outer);
         let (lower_c, upper_c, w2) = (
@@ -349,25 +363,15 @@ impl StreamSolver {
                     let at = j * modes + m0;
                     let source = &sources[at..at + width];
                     let (lo, inv) = (&lower[at..at + width], &inv_pivot[at..at + width]);
-                    if j != 1 && j != nr - 2 {
-                        for i in 0..width {
-                            row[i] = (source[i] - prev[i] * lo[i]) * inv[i];
-                        }
-                        continue;
-                    }
-                    row.copy_from_slice(source);
-                    if j == 1 {
-                        for (i, v) in row.iter_mut().enumerate() {
-                            *v -= wall[i] * lower_c;
-                        }
-                    }
-                    if j == nr - 2 {
-                        for (i, v) in row.iter_mut().enumerate() {
-                            *v -= outer[i] * upper_c;
-                        }
-                    }
                     for i in 0..width {
-                        row[i] = (row[i] - prev[i] * lo[i]) * inv[i];
+                        let mut v = source[i];
+                        if j == 1 {
+                            v -= wall[i] * lower_c;
+                        }
+                        if j == nr - 2 {
+                            v -= outer[i] * upper_c;
+                        }
+                        row[i] = (v - prev[i] * lo[i]) * inv[i];
                     }
                 }
                 for j in (1..nr - 2).rev() {
@@ -382,7 +386,13 @@ impl StreamSolver {
                 rows[0].copy_from_slice(wall);
                 rows[nr - 1].copy_from_slice(outer);
             });
-        // Each asked-for ring's inverse transform.
+    }
+
+    /// The first `rings` rings' inverse transforms into `psi` (rings in
+    /// parallel).
+    fn transform_back(&mut self, psi: &mut [f64], rings: usize) {
+        let (nt, nr, modes) = (self.nt, self.nr, self.modes);
+        let scratch_len = self.fft_scratch.len();
         let inverse = &self.inverse;
         let scale = 1.0 / nt as f64;
         let rings = rings.min(nr);
