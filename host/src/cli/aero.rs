@@ -105,10 +105,8 @@ pub struct Aero2dArgs {
     pub history: Option<PathBuf>,
     /// Write the wall's pressure and skin friction at the run's end to
     /// this CSV (`--model ns` only): arc length, position, the pressure
-    /// coefficient less its mean round the wall (the solver fixes its
-    /// differences, not its level; forces and the loading across a thin
-    /// section do not depend on it), the wall shear stress's x and y (a
-    /// file that exists is refused).
+    /// coefficient `(p - p∞) / (1/2 rho U^2)`, the wall shear stress's x
+    /// and y (a file that exists is refused).
     #[arg(long)]
     pub surface: Option<PathBuf>,
     /// Machine-readable output.

@@ -1,6 +1,6 @@
 //! A viscous run's wall loads as CSV ([`SurfaceLoads`]): `s, x, y, cp,
 //! cf_x, cf_y` (arc length and position in chords, global frame; the
-//! pressure coefficient less its mean round the wall; the skin friction's
+//! pressure coefficient, `(p - p∞)` on `1/2 rho U^2`; the skin friction's
 //! shear stress on the wall, `x` downstream, `y` up; all on
 //! `1/2 rho U^2`), one row a wall node, counter-clockwise round the
 //! section, after a comment line with the time.
@@ -23,7 +23,7 @@ pub fn write_surface_csv(surface: &SurfaceLoads, path: &Path) -> std::io::Result
     let mut out = std::io::BufWriter::new(file);
     writeln!(
         out,
-        "# wall loads at U t / c = {} (cp less its mean round the wall)",
+        "# wall loads at U t / c = {} (cp: p - p_inf on 1/2 rho U^2)",
         surface.time
     )?;
     writeln!(out, "s,x,y,cp,cf_x,cf_y")?;

@@ -23,7 +23,9 @@ pub struct WallLoads {
     /// motion, its steady translation included (a body towed at rest in
     /// its frame gives the fluid its drag times the speed).
     pub power: f64,
-    /// Wall pressure round the section (mean zero).
+    /// Wall pressure round the section, less its mean over the nodes:
+    /// add [`Flow::wall_pressure_mean`] for the pressure relative to the
+    /// far fluid's.
     pub pressure: Vec<f64>,
     /// The pressure jump a trip round the wall gave before it was spread
     /// (zero for the exact solution: a measure of the discrete no-slip

@@ -95,6 +95,7 @@
 mod advection;
 mod deforming;
 mod loads;
+mod pressure_level;
 mod regrid;
 mod sweeps;
 mod wall_influence;

@@ -3,10 +3,12 @@
 //!
 //! The solver integrates the wall pressure along the wall from the
 //! momentum equation there (`fwav_ns2d::WallLoads`), which fixes its
-//! differences, not its level: the level is set so that its mean round
-//! the wall is zero. The forces do not depend on it (a uniform pressure
-//! on a closed contour gives none), nor does the loading across a thin
-//! section (the difference between its two faces at a station). The
+//! differences; its level, the mean round the wall relative to the far
+//! stream's pressure, comes from the momentum equation along the grid's
+//! radial lines (`fwav_ns2d::Flow::wall_pressure_mean`), so `cp` is the
+//! usual `(p - p∞) / (1/2 rho U^2)`: 1 at a steady stagnation point. The
+//! forces do not depend on the level (a uniform pressure on a closed
+//! contour gives none), nor does the loading across a thin section. The
 //! skin friction is the wall's shear stress `ν ω` along the wall,
 //! given as a vector.
 
@@ -24,7 +26,7 @@ pub struct SurfaceLoads {
     pub points: Vec<(f64, f64)>,
     /// Arc length from the first node, chords.
     pub arc: Vec<f64>,
-    /// Pressure coefficient less its mean round the wall (module docs).
+    /// Pressure coefficient, `(p - p∞) / (1/2 rho U^2)` (module docs).
     pub cp: Vec<f64>,
     /// Skin-friction coefficient: the shear stress the fluid puts on the
     /// wall, global axes `(x downstream, y up)`.
@@ -33,10 +35,12 @@ pub struct SurfaceLoads {
 
 impl SurfaceLoads {
     /// The wall of `flow` (kinematic viscosity `viscosity`, moving by
-    /// `path`) now. Cost: one pass of the solver's loads round the wall.
+    /// `path`) now. Cost: one pass of the solver's loads round the wall
+    /// and one over the grid (the level).
     pub(super) fn of(flow: &Flow<SectionPath>, path: &SectionPath, viscosity: f64) -> Self {
         let g = flow.grid();
         let loads = flow.loads();
+        let level = flow.wall_pressure_mean();
         let place = path.placement(flow.time());
         // Body to global axes: the frame's angle (a nose-up pitch turns
         // the body axes clockwise), as the solver's resultant force.
@@ -58,7 +62,7 @@ impl SurfaceLoads {
             let stress = 2.0 * viscosity * loads.wall_vorticity[k] * tangent * turn;
             surface.points.push(place(g.z[i]));
             surface.arc.push(arc);
-            surface.cp.push(2.0 * loads.pressure[k]);
+            surface.cp.push(2.0 * (loads.pressure[k] + level));
             surface.cf.push((stress.re, stress.im));
         }
         surface
