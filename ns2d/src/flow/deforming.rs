@@ -106,6 +106,12 @@ pub(super) fn drifted(before: &[f64], now: &[f64]) -> bool {
 pub(super) struct DeformingGrid {
     deformation: Deformation,
     fft: Arc<dyn Fft<f64>>,
+    /// Each ring's [`ring_powers`] (ring `j` at `j · stride`, `stride`
+    /// the terms or 1 without any), and the wall series' (all 1: they are
+    /// taken on `|ζ| = 1`).
+    powers: Vec<f64>,
+    stride: usize,
+    unit_powers: Vec<f64>,
     /// `∂z/∂t` at the nodes (body axes), and `conj(z_ξ) w` there.
     velocity: Vec<Complex64>,
     swept_node: Vec<Complex64>,
@@ -138,9 +144,26 @@ enum Series {
     Around,
 }
 
-/// The ring `|ζ| = rho`'s spectrum of the coefficients `c` = `[a, z0,
-/// b_1 …]` into `buf` (length `nt`; frequency `-k` at `nt - k`).
-fn fill(buf: &mut [Complex64], c: &[Complex64], rho: f64, series: Series) {
+/// The powers `rho^-1, rho^-2, …` of the ring `|ζ| = rho` that [`fill`]
+/// weighs the Laurent terms `b_1 …` by, `terms` of them: each the last
+/// times `1/rho`, zero from where that underflows. The rings do not move
+/// in `ξ`, so each ring's are made once ([`DeformingGrid::new`]).
+fn ring_powers(rho: f64, terms: usize) -> Vec<f64> {
+    let inv = 1.0 / rho;
+    let mut power = inv;
+    (0..terms)
+        .map(|_| {
+            let p = power;
+            power *= inv;
+            p
+        })
+        .collect()
+}
+
+/// The ring's spectrum of the coefficients `c` = `[a, z0, b_1 …]` into
+/// `buf` (length `nt`; frequency `-k` at `nt - k`), the ring `|ζ| = rho`
+/// whose [`ring_powers`] are `powers`.
+fn fill(buf: &mut [Complex64], c: &[Complex64], rho: f64, powers: &[f64], series: Series) {
     let nt = buf.len();
     buf.fill(Complex64::new(0.0, 0.0));
     let i = Complex64::new(0.0, 1.0);
@@ -153,9 +176,10 @@ fn fill(buf: &mut [Complex64], c: &[Complex64], rho: f64, series: Series) {
     if let Series::Value = series {
         buf[0] += c[1];
     }
-    let inv = 1.0 / rho;
-    let mut power = inv;
-    for (k, b) in c[2..].iter().enumerate() {
+    for (k, (b, &power)) in c[2..].iter().zip(powers).enumerate() {
+        if power == 0.0 {
+            break;
+        }
         let m = (k + 1) as f64;
         let factor = match series {
             Series::Value => Complex64::new(tail, 0.0),
@@ -163,10 +187,6 @@ fn fill(buf: &mut [Complex64], c: &[Complex64], rho: f64, series: Series) {
             Series::Around => -i * m,
         };
         buf[nt - k - 1] += factor * b * power;
-        power *= inv;
-        if power == 0.0 {
-            break;
-        }
     }
 }
 
@@ -175,9 +195,19 @@ impl DeformingGrid {
     fn new(deformation: Deformation, grid: &OGrid) -> Self {
         let (nt, n) = (grid.nt, grid.len());
         let zero = Complex64::new(0.0, 0.0);
+        let terms = deformation.terms();
+        let stride = terms.max(1);
+        let powers = grid
+            .xi
+            .iter()
+            .flat_map(|xi| ring_powers(xi.exp(), stride))
+            .collect();
         Self {
             deformation,
             fft: FftPlanner::new().plan_fft_inverse(nt),
+            powers,
+            stride,
+            unit_powers: vec![1.0; terms],
             velocity: vec![zero; n],
             swept_node: vec![zero; n],
             swept_radial: vec![0.0; n],
@@ -203,7 +233,7 @@ impl DeformingGrid {
             ),
             (&mut self.wall_velocity_theta, &state.rate, Series::Around),
         ] {
-            fill(buf, coefficients, 1.0, series);
+            fill(buf, coefficients, 1.0, &self.unit_powers, series);
             fft.process(buf);
         }
     }
@@ -344,16 +374,17 @@ impl<M: Motion> Flow<M> {
             .zip(g.inv_jac.par_chunks_mut(nt))
             .zip(self.face_areas.node_mut().par_chunks_mut(nt))
             .zip(g.xi.par_iter().zip(self.inv_cell.par_iter()))
+            .zip(d.powers.par_chunks(d.stride))
             .for_each_init(
                 || vec![zero; scratch_len],
-                |scratch, (((((((z, dz), v), swept), jac), inv_jac), area), (xi, cell))| {
+                |scratch, ((((((((z, dz), v), swept), jac), inv_jac), area), (xi, cell)), powers)| {
                     let rho = xi.exp();
                     for (series, coefficients, out) in [
                         (Series::Value, &state.coefficients, &mut *z),
                         (Series::Radial, &state.coefficients, &mut *dz),
                         (Series::Value, &state.rate, &mut *v),
                     ] {
-                        fill(out, coefficients, rho, series);
+                        fill(out, coefficients, rho, powers, series);
                         fft.process_with_scratch(out, scratch);
                     }
                     let nodes = jac.iter_mut().zip(inv_jac.iter_mut()).zip(area.iter_mut());
@@ -416,12 +447,13 @@ mod tests {
         let nt = 16;
         let fft = FftPlanner::new().plan_fft_inverse(nt);
         let rho: f64 = 1.3;
+        let powers = ring_powers(rho, b.len());
         let mut out = vec![vec![Complex64::new(0.0, 0.0); nt]; 3];
         for (buf, s) in out
             .iter_mut()
             .zip([Series::Value, Series::Radial, Series::Around])
         {
-            fill(buf, &c, rho, s);
+            fill(buf, &c, rho, &powers, s);
             fft.process(buf);
         }
         let (value, rest) = out.split_first().unwrap();
