@@ -318,16 +318,15 @@ pub(super) struct RateRows<'a> {
     pub(super) areas: &'a FaceAreas,
     /// A deforming grid's swept fluxes of the radial faces (above each
     /// node) and ring faces (`k + ½`), taken off the fluid's at the
-    /// step's middle as the relative streamfunction is
-    /// ([`super::deforming`]'s `DeformingGrid::swept`: radial now and
-    /// before, ring now and before); `None` for a rigid grid.
-    pub(super) swept: Option<[&'a [f64]; 4]>,
+    /// step's middle as the relative streamfunction is; `None` for a
+    /// rigid grid.
+    pub(super) swept: Option<super::deforming::SweptFluxes<'a>>,
 }
 
 /// A quantity at the step's middle from its value at the step's start,
 /// `now`, and at the last step's, `previous`: `now + half (now -
 /// previous)` ([`RateRows::half`]).
-fn at_middle(now: f64, previous: f64, half: f64) -> f64 {
+pub(super) fn at_middle(now: f64, previous: f64, half: f64) -> f64 {
     now + half * (now - previous)
 }
 
@@ -391,19 +390,10 @@ impl RateRows<'_> {
     /// (`radial`) or ring faces at the step's middle, taken off the face
     /// speeds `speed`.
     fn take_swept(&self, j: usize, radial: bool, speed: &mut [f64]) {
-        if let Some([radial_now, radial_before, ring_now, ring_before]) = self.swept {
-            let (now, before) = if radial {
-                (radial_now, radial_before)
-            } else {
-                (ring_now, ring_before)
-            };
-            for ((q, n), b) in speed
-                .iter_mut()
-                .zip(self.ring(now, j))
-                .zip(self.ring(before, j))
-            {
-                *q -= at_middle(*n, *b, self.half);
-            }
+        match &self.swept {
+            Some(swept) if radial => swept.take_off_radial(j, self.half, speed),
+            Some(swept) => swept.take_off_ring(j, self.half, speed),
+            None => {}
         }
     }
 
@@ -610,7 +600,7 @@ impl<M: Motion> Flow<M> {
             half,
             inv_jac: &g.inv_jac,
             areas: &self.face_areas,
-            swept: self.deforming.as_ref().map(|d| d.swept()),
+            swept: self.deforming.as_ref().map(|d| d.swept(g)),
         };
         let mut radial = std::mem::take(&mut self.radial_faces);
         radial.fill(&rows, &mut self.relative_start);

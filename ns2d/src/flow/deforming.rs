@@ -82,6 +82,7 @@ use rayon::prelude::*;
 use realfft::num_complex::Complex64;
 use rustfft::{Fft, FftPlanner};
 
+use super::advection::at_middle;
 use super::Flow;
 use crate::deformation::{Deformation, MapState};
 use crate::error::NsError;
@@ -112,17 +113,12 @@ pub(super) struct DeformingGrid {
     powers: Vec<f64>,
     stride: usize,
     unit_powers: Vec<f64>,
-    /// `∂z/∂t` at the nodes (body axes), and `conj(z_ξ) w` there.
+    /// `∂z/∂t` at the nodes (body axes), and `conj(z_ξ) w` there (from
+    /// which the faces' swept fluxes are taken: [`SweptFluxes`]), also as
+    /// it was at the last step's start.
     velocity: Vec<Complex64>,
     swept_node: Vec<Complex64>,
-    /// The flux each radial face (above its node) and ring face (`k + ½`)
-    /// sweeps per unit time, outward and forward.
-    swept_radial: Vec<f64>,
-    swept_ring: Vec<f64>,
-    /// The same at the last step's start (the advection extrapolates the
-    /// two to the current step's middle: [`DeformingGrid::swept`]).
-    previous_radial: Vec<f64>,
-    previous_ring: Vec<f64>,
+    previous_node: Vec<Complex64>,
     /// At the wall: the deformation's streamfunction and `ψ_ξ`, its
     /// acceleration `∂²z/∂t²` and `∂w/∂θ`.
     pub(super) wall_psi: Vec<f64>,
@@ -210,10 +206,7 @@ impl DeformingGrid {
             unit_powers: vec![1.0; terms],
             velocity: vec![zero; n],
             swept_node: vec![zero; n],
-            swept_radial: vec![0.0; n],
-            swept_ring: vec![0.0; n],
-            previous_radial: vec![0.0; n],
-            previous_ring: vec![0.0; n],
+            previous_node: vec![zero; n],
             wall_psi: vec![0.0; nt],
             wall_slope: vec![0.0; nt],
             wall_acceleration: vec![zero; nt],
@@ -261,63 +254,79 @@ impl DeformingGrid {
         self.circulation = wall.iter().map(|s| s.im).sum::<f64>() * grid.d_theta;
     }
 
-    /// The swept fluxes of the radial and ring faces at the current
-    /// step's start and at the last one's, `(now radial, previous
-    /// radial, now ring, previous ring)`: the advection takes them at the
-    /// step's middle, `now + half (now - previous)` (`half` = ½ of the
-    /// ratio of the steps; 0 on the first), as the fluid's relative
-    /// streamfunction ([`super::Flow::step`]).
-    pub(super) fn swept(&self) -> [&[f64]; 4] {
-        [
-            &self.swept_radial,
-            &self.previous_radial,
-            &self.swept_ring,
-            &self.previous_ring,
-        ]
+    /// The faces' swept fluxes at the current step's start and at the
+    /// last one's ([`SweptFluxes`]) on `grid`.
+    pub(super) fn swept<'a>(&'a self, grid: &'a OGrid) -> SweptFluxes<'a> {
+        SweptFluxes {
+            now: &self.swept_node,
+            before: &self.previous_node,
+            xi: &grid.xi,
+            d_theta: grid.d_theta,
+        }
     }
 
-    /// Keep the current swept fluxes as the last step's (before the grid
-    /// moves to the step's end; a swap, no copy).
+    /// Keep the nodes' `conj(z_ξ) w` as the last step's before the grid
+    /// moves (a swap: [`Flow::move_grid`] writes every node).
     pub(super) fn keep_swept_as_previous(&mut self) {
-        std::mem::swap(&mut self.swept_radial, &mut self.previous_radial);
-        std::mem::swap(&mut self.swept_ring, &mut self.previous_ring);
+        std::mem::swap(&mut self.swept_node, &mut self.previous_node);
+    }
+}
+
+/// The fluxes the faces sweep (module docs), by the midpoint rule from
+/// the nodes' `conj(z_ξ) w` at the step's start (`now`) and at the last
+/// step's (`before`), taken at the step's middle, `now + half (now -
+/// before)` (`half` = ½ of the ratio of the steps; 0 on the first), as
+/// the fluid's relative streamfunction is ([`super::Flow::step`]). Taken
+/// where the advection needs them, not kept for every face.
+pub(super) struct SweptFluxes<'a> {
+    now: &'a [Complex64],
+    before: &'a [Complex64],
+    xi: &'a [f64],
+    d_theta: f64,
+}
+
+impl SweptFluxes<'_> {
+    /// Take the swept fluxes of ring `j`'s radial faces (above its nodes,
+    /// outward; `j` below the outer ring) at the step's middle off their
+    /// speeds `speed`.
+    pub(super) fn take_off_radial(&self, j: usize, half: f64, speed: &mut [f64]) {
+        let nt = speed.len();
+        if j + 1 >= self.xi.len() {
+            return;
+        }
+        let at = j * nt;
+        let flux = |node: &[Complex64], k: usize| {
+            0.5 * (node[at + k].re + node[at + nt + k].re) * self.d_theta
+        };
+        for (k, q) in speed.iter_mut().enumerate() {
+            *q -= at_middle(flux(self.now, k), flux(self.before, k), half);
+        }
     }
 
-    /// The fluxes the faces sweep (module docs) from the nodes'
-    /// `conj(z_ξ) w` (in `swept_node`), rows in parallel.
-    fn swept_fluxes(&mut self, grid: &OGrid) {
-        let (nt, nr) = (grid.nt, grid.nr);
-        let node = &self.swept_node;
-        let radial_rate = |i: usize| node[i].re;
-        let ring_rate = |i: usize| node[i].im;
-        self.swept_radial
-            .par_chunks_mut(nt)
-            .zip(self.swept_ring.par_chunks_mut(nt))
-            .enumerate()
-            .for_each(|(j, (radial, ring))| {
-                if j + 1 < nr {
-                    for (k, r) in radial.iter_mut().enumerate() {
-                        let i = j * nt + k;
-                        *r = 0.5 * (radial_rate(i) + radial_rate(i + nt)) * grid.d_theta;
-                    }
-                }
-                if j == 0 || j + 1 == nr {
-                    ring.fill(0.0);
-                    return;
-                }
-                // The ring face spans the corners below and above: the
-                // wall itself below ring 1.
-                let below = if j == 1 {
-                    grid.xi[0]
-                } else {
-                    0.5 * (grid.xi[j - 1] + grid.xi[j])
-                };
-                let span = 0.5 * (grid.xi[j] + grid.xi[j + 1]) - below;
-                for (k, r) in ring.iter_mut().enumerate() {
-                    let kp = if k + 1 == nt { 0 } else { k + 1 };
-                    *r = 0.5 * (ring_rate(j * nt + k) + ring_rate(j * nt + kp)) * span;
-                }
-            });
+    /// Take the swept fluxes of ring `j`'s ring faces `k + ½` (forward;
+    /// none on the wall's and the outer ring) at the step's middle off
+    /// their speeds `speed`.
+    pub(super) fn take_off_ring(&self, j: usize, half: f64, speed: &mut [f64]) {
+        let (nt, xi) = (speed.len(), self.xi);
+        if j == 0 || j + 1 >= xi.len() {
+            return;
+        }
+        // The ring face spans the corners below and above: the wall itself
+        // below ring 1.
+        let below = if j == 1 {
+            xi[0]
+        } else {
+            0.5 * (xi[j - 1] + xi[j])
+        };
+        let span = 0.5 * (xi[j] + xi[j + 1]) - below;
+        let at = j * nt;
+        let flux = |node: &[Complex64], k: usize, kp: usize| {
+            0.5 * (node[at + k].im + node[at + kp].im) * span
+        };
+        for (k, q) in speed.iter_mut().enumerate() {
+            let kp = if k + 1 == nt { 0 } else { k + 1 };
+            *q -= at_middle(flux(self.now, k, kp), flux(self.before, k, kp), half);
+        }
     }
 }
 
@@ -400,7 +409,6 @@ impl<M: Motion> Flow<M> {
             );
         d.wall_series(&state);
         d.wall_conditions(g);
-        d.swept_fluxes(g);
         self.area = state.map().area();
         self.face_areas.update_faces(nt);
         // The rigid field's streamfunction moves with the nodes.
