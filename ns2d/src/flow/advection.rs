@@ -50,28 +50,19 @@ fn upwind_face(behind: f64, near: f64, far: f64) -> f64 {
 }
 
 /// The grid's inverse cell areas as the faces use them (constant for a
-/// grid): a face's Courant number takes the larger of its two cells'
-/// `1/(J w_j Δθ)`.
+/// rigid grid): a face's Courant number takes the larger of its two
+/// cells' `1/(J w_j Δθ)`, taken where the face is ([`RateRows`]).
 pub(super) struct FaceAreas {
     /// Each node's `1/(J w_j Δθ)`.
     node: Vec<f64>,
-    /// The larger of nodes `(j, k)` and `(j + 1, k)`'s (the radial face
-    /// above the node; the outer ring's entries unused).
-    radial: Vec<f64>,
-    /// The larger of nodes `(j, k)` and `(j, k + 1)`'s (the ring face
-    /// `k + ½`).
-    ring: Vec<f64>,
 }
 
 impl FaceAreas {
     /// The areas of a grid of `nt` nodes round with `1/J` at the nodes
     /// and `inv_cell` = `1/(w_j Δθ)` per ring.
     pub(super) fn new(nt: usize, inv_jac: &[f64], inv_cell: &[f64]) -> Self {
-        let n = inv_jac.len();
         let mut areas = Self {
-            node: vec![0.0; n],
-            radial: vec![0.0; n],
-            ring: vec![0.0; n],
+            node: vec![0.0; inv_jac.len()],
         };
         for ((node, inv_jac), cell) in areas
             .node
@@ -83,36 +74,12 @@ impl FaceAreas {
                 *n = v * cell;
             }
         }
-        areas.update_faces(nt);
         areas
     }
 
-    /// Each node's `1/(J w_j Δθ)`, to be set before [`Self::update_faces`].
+    /// Each node's `1/(J w_j Δθ)`, for a moving grid to set.
     pub(super) fn node_mut(&mut self) -> &mut [f64] {
         &mut self.node
-    }
-
-    /// The faces' areas from the nodes', rings in parallel.
-    pub(super) fn update_faces(&mut self, nt: usize) {
-        let node = &self.node;
-        let n = node.len();
-        self.radial
-            .par_chunks_mut(nt)
-            .zip(self.ring.par_chunks_mut(nt))
-            .enumerate()
-            .for_each(|(j, (radial, ring))| {
-                let at = j * nt;
-                for k in 0..nt {
-                    let i = at + k;
-                    radial[k] = if i + nt < n {
-                        node[i].max(node[i + nt])
-                    } else {
-                        node[i]
-                    };
-                    let next = if k + 1 == nt { at } else { i + 1 };
-                    ring[k] = node[i].max(node[next]);
-                }
-            });
     }
 }
 
@@ -413,7 +380,12 @@ impl RateRows<'_> {
             self.ring(self.w, j),
             self.ring(self.w, j + 1),
         );
-        let area = &self.areas.radial[j * nt..(j + 1) * nt];
+        // A face's area: the larger of its two cells'.
+        let (cell, cell_above) = (
+            self.ring(&self.areas.node, j),
+            self.ring(&self.areas.node, j + 1),
+        );
+        let area = |k: usize| cell[k].max(cell_above[k]);
         if j + 2 == self.nr {
             // The last face: first order where the flow comes in.
             for k in 0..nt {
@@ -423,7 +395,7 @@ impl RateRows<'_> {
                 } else {
                     (above[k], above[k])
                 };
-                faces.set(k, q, v1, v3, self.dt * q.abs() * area[k]);
+                faces.set(k, q, v1, v3, self.dt * q.abs() * area(k));
             }
             return;
         }
@@ -439,7 +411,7 @@ impl RateRows<'_> {
                 q,
                 near,
                 upwind_face(behind, near, far),
-                self.dt * q.abs() * area[k],
+                self.dt * q.abs() * area(k),
             );
         }
     }
@@ -457,7 +429,13 @@ impl RateRows<'_> {
         faces: &mut Faces<'_>,
     ) {
         let nt = self.nt;
-        let area = &self.areas.ring[j * nt..(j + 1) * nt];
+        // A face's area, the larger of its two cells', in the weights'
+        // place until each face's weight is set.
+        let cell = self.ring(&self.areas.node, j);
+        for (a, (here, next)) in faces.weight.iter_mut().zip(cell.iter().zip(&cell[1..])) {
+            *a = here.max(*next);
+        }
+        faces.weight[nt - 1] = cell[nt - 1].max(cell[0]);
         for ((q, l), u) in faces.speed.iter_mut().zip(lower).zip(upper) {
             *q = l - u;
         }
@@ -470,12 +448,13 @@ impl RateRows<'_> {
             let behind = if forward { km } else { kpp };
             let near = if forward { k0 } else { kp };
             let far = if forward { kp } else { k0 };
+            let area = faces.weight[k];
             faces.set(
                 k,
                 q,
                 near,
                 upwind_face(behind, near, far),
-                self.dt * q.abs() * area[k],
+                self.dt * q.abs() * area,
             );
         }
     }

@@ -410,7 +410,6 @@ impl<M: Motion> Flow<M> {
         d.wall_series(&state);
         d.wall_conditions(g);
         self.area = state.map().area();
-        self.face_areas.update_faces(nt);
         // The rigid field's streamfunction moves with the nodes.
         self.frame_time = None;
     }
