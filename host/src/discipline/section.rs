@@ -271,7 +271,7 @@ impl SectionCase {
     /// summarizes its periods after the first [`TRANSIENT_CYCLES`].
     ///
     /// Cost: the LDVM a fraction of a second; the Navier–Stokes model at
-    /// the default resolution about 43 s (rigid) to 77 s (deforming as
+    /// the default resolution about 43 s (rigid) to 62 s (deforming as
     /// the built-in design's first system analysis found) for 4 cycles on
     /// two cores, in proportion to the cycles for more
     /// ([`crate::aero2d::viscous::ViscousSection::run`]).

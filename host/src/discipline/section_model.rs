@@ -15,10 +15,11 @@
 //!   what was modelled ([`ModelledSection`]). Cost: the default
 //!   section's 4 cycles at the default resolution on the 2-core
 //!   development machine, about 43 s rigid (384 × 320 cells, Courant
-//!   number 3, [`ViscousSection::run`]), about 77 s deforming as the
+//!   number 3, [`ViscousSection::run`]), about 62 s deforming as the
 //!   built-in design's first system analysis found, in a normal hour (on
 //!   384 × 240 31.9 s and 57.3 s were measured; 320 rings cost 1.34
-//!   times as much in one hour; this slow hour, 118 s and 190 s); some
+//!   times as much in one hour; in a slow hour of 2026-12-04, 80.7 s
+//!   and 116.4 s); some
 //!   900 to 1,700 times the LDVM's.
 
 use serde::{Deserialize, Serialize};
