@@ -59,13 +59,7 @@ impl CylinderWake {
     /// # Errors
     /// The solver's.
     pub fn run(&self, resolution: Resolution) -> Result<WakeStatistics, NsError> {
-        let map = SectionMap::circle(0.5)?;
-        let motion = SteadyStream {
-            speed: 1.0,
-            kick_rate: 0.5,
-            kick_period: 2.0,
-        };
-        let mut flow = Flow::new(&map, resolution.grid, motion, 1.0 / self.reynolds)?;
+        let mut flow = self.flow(resolution)?;
         let mut history = ForceHistory::default();
         while flow.time() < self.duration {
             flow.step(resolution.dt)?;
@@ -73,6 +67,21 @@ impl CylinderWake {
             history.push(flow.time(), loads.force * 2.0);
         }
         Ok(history.wake_statistics(self.duration * (1.0 - self.averaged)))
+    }
+
+    /// The case's flow at rest on `resolution`'s grid, before its first
+    /// step: the cylinder in the stream, with the start-up turn.
+    ///
+    /// # Errors
+    /// The solver's.
+    pub fn flow(&self, resolution: Resolution) -> Result<Flow<SteadyStream>, NsError> {
+        let map = SectionMap::circle(0.5)?;
+        let motion = SteadyStream {
+            speed: 1.0,
+            kick_rate: 0.5,
+            kick_period: 2.0,
+        };
+        Flow::new(&map, resolution.grid, motion, 1.0 / self.reynolds)
     }
 }
 
@@ -123,13 +132,7 @@ impl ImpulsiveCylinder {
     /// # Errors
     /// The solver's.
     pub fn run(&self, resolution: Resolution) -> Result<Vec<(f64, f64)>, NsError> {
-        let map = SectionMap::circle(0.5)?;
-        let motion = SteadyStream {
-            speed: 1.0,
-            kick_rate: 0.0,
-            kick_period: 1.0,
-        };
-        let mut flow = Flow::new(&map, resolution.grid, motion, 1.0 / self.reynolds)?;
+        let mut flow = self.flow(resolution)?;
         let mut drag = Vec::new();
         // t in D/U; U t / R = 2 t.
         while 2.0 * flow.time() < self.until {
@@ -137,6 +140,21 @@ impl ImpulsiveCylinder {
             drag.push((2.0 * flow.time(), 2.0 * flow.loads().force.re));
         }
         Ok(drag)
+    }
+
+    /// The case's flow at rest on `resolution`'s grid, before its first
+    /// step: the cylinder in the stream, started at the first step.
+    ///
+    /// # Errors
+    /// The solver's.
+    pub fn flow(&self, resolution: Resolution) -> Result<Flow<SteadyStream>, NsError> {
+        let map = SectionMap::circle(0.5)?;
+        let motion = SteadyStream {
+            speed: 1.0,
+            kick_rate: 0.0,
+            kick_period: 1.0,
+        };
+        Flow::new(&map, resolution.grid, motion, 1.0 / self.reynolds)
     }
 }
 

@@ -2,6 +2,7 @@
 //! the wall relative to the far fluid's) against an exact flow and
 //! against a second, independent route to it.
 
+use fwav_ns2d::cases::{CylinderWake, ImpulsiveCylinder, Resolution};
 use fwav_ns2d::{Complex64, Flow, FrameState, GridSpec, Motion, SectionMap, SteadyStream};
 
 /// A circle set turning at a steady rate `Ω` at `t = 0` in fluid at rest.
@@ -178,25 +179,26 @@ fn one_line(flow: &Flow<SteadyStream>, k: usize, nu: f64) -> (f64, f64) {
 ///   100 D out, where the wake's potential is not yet zero).
 #[test]
 fn the_impulsively_started_cylinders_wall_pressure_has_its_level() {
-    let nu = 1.0 / 3000.0;
-    let map = SectionMap::circle(0.5).unwrap();
-    let motion = SteadyStream {
-        speed: 1.0,
-        kick_rate: 0.0,
-        kick_period: 1.0,
+    let case = ImpulsiveCylinder {
+        reynolds: 3000.0,
+        until: 3.0,
     };
-    let spec = GridSpec {
-        around: 256,
-        radial: 192,
-        outer_radius: 100.0,
-        first_cell: 0.001,
+    let nu = 1.0 / case.reynolds;
+    let dt = 0.002;
+    let resolution = Resolution {
+        grid: GridSpec {
+            around: 256,
+            radial: 192,
+            outer_radius: 100.0,
+            first_cell: 0.001,
+        },
+        dt,
     };
-    let mut flow = Flow::new(&map, spec, motion, nu).unwrap();
+    let mut flow = case.flow(resolution).unwrap();
     let g = flow.grid().clone();
     let front = (0..g.nt)
         .min_by(|&a, &b| (g.z[a] + 0.5).norm().total_cmp(&(g.z[b] + 0.5).norm()))
         .unwrap();
-    let dt = 0.002;
     // t in D/U; U t/R = 2t.
     while 2.0 * flow.time() < 0.05 - 1e-9 {
         flow.step(dt).unwrap();
@@ -206,7 +208,7 @@ fn the_impulsively_started_cylinders_wall_pressure_has_its_level() {
     assert!((early + 1.0).abs() < 0.01, "mean Cp {early}");
     let mut previous = one_line(&flow, front, nu);
     let mut worst: (f64, f64) = (0.0, 0.0);
-    while 2.0 * flow.time() < 3.0 - 1e-9 {
+    while 2.0 * flow.time() < case.until - 1e-9 {
         flow.step(dt).unwrap();
         let now = one_line(&flow, front, nu);
         let line = 2.0 * ((now.0 - previous.0) / dt + now.1);
@@ -241,14 +243,15 @@ fn the_impulsively_started_cylinders_wall_pressure_has_its_level() {
 #[test]
 #[ignore = "heavy (about 60 s): the cylinder's wake at Re 100 for 150 D/U; run with --ignored"]
 fn the_shedding_cylinders_pressure_level_stays_as_its_wake_leaves() {
-    let map = SectionMap::circle(0.5).unwrap();
-    let motion = SteadyStream {
-        speed: 1.0,
-        kick_rate: 0.5,
-        kick_period: 2.0,
+    // The wake case as `fwav validate` runs it (its statistics' window
+    // is not this test's).
+    let case = CylinderWake {
+        reynolds: 100.0,
+        duration: 150.0,
+        averaged: 0.4,
     };
-    let resolution = fwav_ns2d::cases::CylinderWake::validated();
-    let mut flow = Flow::new(&map, resolution.grid, motion, 1.0 / 100.0).unwrap();
+    let resolution = CylinderWake::validated();
+    let mut flow = case.flow(resolution).unwrap();
     let g = flow.grid().clone();
     let nearest = |p: f64| {
         (0..g.nt)
@@ -260,7 +263,7 @@ fn the_shedding_cylinders_pressure_level_stays_as_its_wake_leaves() {
     // the wake arrives and as it leaves.
     let mut before = [0.0; 4];
     let mut leaving = [0.0; 4];
-    while flow.time() < 150.0 {
+    while flow.time() < case.duration {
         flow.step(resolution.dt).unwrap();
         let window = match flow.time() {
             t if (35.0..50.0).contains(&t) => &mut before,
