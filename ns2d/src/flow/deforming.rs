@@ -107,11 +107,9 @@ pub(super) fn drifted(before: &[f64], now: &[f64]) -> bool {
 pub(super) struct DeformingGrid {
     deformation: Deformation,
     fft: Arc<dyn Fft<f64>>,
-    /// Each ring's [`ring_powers`] (ring `j` at `j · stride`, `stride`
-    /// the terms or 1 without any), and the wall series' (all 1: they are
+    /// Each ring's [`ring_powers`], and the wall series' (all 1: they are
     /// taken on `|ζ| = 1`).
-    powers: Vec<f64>,
-    stride: usize,
+    powers: Vec<Vec<f64>>,
     unit_powers: Vec<f64>,
     /// `∂z/∂t` at the nodes (body axes), and `conj(z_ξ) w` there (from
     /// which the faces' swept fluxes are taken: [`SweptFluxes`]), also as
@@ -192,17 +190,15 @@ impl DeformingGrid {
         let (nt, n) = (grid.nt, grid.len());
         let zero = Complex64::new(0.0, 0.0);
         let terms = deformation.terms();
-        let stride = terms.max(1);
         let powers = grid
             .xi
             .iter()
-            .flat_map(|xi| ring_powers(xi.exp(), stride))
+            .map(|xi| ring_powers(xi.exp(), terms))
             .collect();
         Self {
             deformation,
             fft: FftPlanner::new().plan_fft_inverse(nt),
             powers,
-            stride,
             unit_powers: vec![1.0; terms],
             velocity: vec![zero; n],
             swept_node: vec![zero; n],
@@ -383,7 +379,7 @@ impl<M: Motion> Flow<M> {
             .zip(g.inv_jac.par_chunks_mut(nt))
             .zip(self.face_areas.node_mut().par_chunks_mut(nt))
             .zip(g.xi.par_iter().zip(self.inv_cell.par_iter()))
-            .zip(d.powers.par_chunks(d.stride))
+            .zip(d.powers.par_iter())
             .for_each_init(
                 || vec![zero; scratch_len],
                 |scratch, ((((((((z, dz), v), swept), jac), inv_jac), area), (xi, cell)), powers)| {
