@@ -23,6 +23,24 @@ pub struct Resolution {
     pub dt: f64,
 }
 
+/// A cylinder of diameter 1 at rest in a unit stream at Reynolds number
+/// `reynolds` on `resolution`'s grid, turned at the start with peak rate
+/// `kick_rate` over `kick_period` (0: not turned; [`SteadyStream`]).
+fn cylinder_in_stream(
+    reynolds: f64,
+    resolution: Resolution,
+    kick_rate: f64,
+    kick_period: f64,
+) -> Result<Flow<SteadyStream>, NsError> {
+    let map = SectionMap::circle(0.5)?;
+    let motion = SteadyStream {
+        speed: 1.0,
+        kick_rate,
+        kick_period,
+    };
+    Flow::new(&map, resolution.grid, motion, 1.0 / reynolds)
+}
+
 /// The periodic wake of a circular cylinder (diameter 1) at rest in a unit
 /// stream: mean drag, lift amplitude and Strouhal number of the shedding
 /// (Liu, Zheng & Sung 1998; Park, Kwon & Choi 1998; Braza, Chassaing &
@@ -75,13 +93,7 @@ impl CylinderWake {
     /// # Errors
     /// The solver's.
     pub fn flow(&self, resolution: Resolution) -> Result<Flow<SteadyStream>, NsError> {
-        let map = SectionMap::circle(0.5)?;
-        let motion = SteadyStream {
-            speed: 1.0,
-            kick_rate: 0.5,
-            kick_period: 2.0,
-        };
-        Flow::new(&map, resolution.grid, motion, 1.0 / self.reynolds)
+        cylinder_in_stream(self.reynolds, resolution, 0.5, 2.0)
     }
 }
 
@@ -148,13 +160,7 @@ impl ImpulsiveCylinder {
     /// # Errors
     /// The solver's.
     pub fn flow(&self, resolution: Resolution) -> Result<Flow<SteadyStream>, NsError> {
-        let map = SectionMap::circle(0.5)?;
-        let motion = SteadyStream {
-            speed: 1.0,
-            kick_rate: 0.0,
-            kick_period: 1.0,
-        };
-        Flow::new(&map, resolution.grid, motion, 1.0 / self.reynolds)
+        cylinder_in_stream(self.reynolds, resolution, 0.0, 1.0)
     }
 }
 
