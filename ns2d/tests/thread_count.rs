@@ -5,11 +5,13 @@
 //! cores cuts them differently. Every line and mode is computed the same
 //! whatever its block, so the flow, and the loads a design is scored by,
 //! are the same to the last bit on one thread, two, or three (a split
-//! into uneven blocks). Until 2026-12-04 they were not: the radial sweep's
-//! wall correction stopped a whole block of lines where its largest
-//! carried change fell to rounding, and the rounding-level differences
-//! grew, in the deforming default section's wandering flow, to 3.7 % of a
-//! two-stroke window's thrust between a run on one thread and one on two.
+//! into uneven blocks), and when stepped from outside any pool, where the
+//! global pool's other workers spin beside each step (`awake_pool.rs`).
+//! Until 2026-12-04 they were not: the radial sweep's wall correction
+//! stopped a whole block of lines where its largest carried change fell
+//! to rounding, and the rounding-level differences grew, in the
+//! deforming default section's wandering flow, to 3.7 % of a two-stroke
+//! window's thrust between a run on one thread and one on two.
 //!
 //! Case: an ellipse of thickness ratio 0.2 (chord 1) at Re 200, plunging
 //! and pitching about its centre (rigid), or breathing (its thickness
@@ -37,13 +39,15 @@ fn ellipse(thickness: f64) -> SectionMap {
 }
 
 /// The vorticity after [`STEPS`] steps and the force and power at each,
-/// computed on a pool of `threads` worker threads.
-fn run<M: Motion + Send>(threads: usize, flow: impl FnOnce() -> Flow<M> + Send) -> Vec<f64> {
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads)
-        .build()
-        .unwrap();
-    pool.install(|| {
+/// computed on a pool of `threads` worker threads; with `None`, stepped
+/// from this test's own thread, outside any pool: each step then runs on
+/// rayon's global pool with its other workers kept awake beside it
+/// (`awake_pool.rs`).
+fn run<M: Motion + Send>(
+    threads: Option<usize>,
+    flow: impl FnOnce() -> Flow<M> + Send,
+) -> Vec<f64> {
+    let steps = || {
         let mut flow = flow();
         let mut out = Vec::new();
         for _ in 0..STEPS {
@@ -53,16 +57,25 @@ fn run<M: Motion + Send>(threads: usize, flow: impl FnOnce() -> Flow<M> + Send) 
         }
         out.extend_from_slice(flow.vorticity());
         out
-    })
+    };
+    match threads {
+        Some(threads) => rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(steps),
+        None => steps(),
+    }
 }
 
-/// The runs on 1, 2 and 3 threads agree bit for bit.
+/// The runs on 1, 2 and 3 threads, and the one stepped from outside any
+/// pool (the global pool's workers kept awake), agree bit for bit.
 fn assert_same_on_any_thread_count<M: Motion + Send>(
     name: &str,
     flow: impl Fn() -> Flow<M> + Send + Sync,
 ) {
-    let one = run(1, &flow);
-    for threads in [2, 3] {
+    let one = run(Some(1), &flow);
+    for threads in [Some(2), Some(3), None] {
         let other = run(threads, &flow);
         let differing = one
             .iter()
@@ -72,8 +85,11 @@ fn assert_same_on_any_thread_count<M: Motion + Send>(
         assert_eq!(
             differing,
             0,
-            "{name}: {differing} of {} values differ between 1 and {threads} threads",
-            one.len()
+            "{name}: {differing} of {} values differ between 1 thread and {}",
+            one.len(),
+            threads.map_or("a call from outside any pool".to_string(), |n| format!(
+                "{n} threads"
+            ))
         );
     }
 }

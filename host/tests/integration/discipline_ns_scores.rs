@@ -207,9 +207,13 @@ fn ns_discipline_benchmark() {
 /// passes trimmed (2026-12-04, the same flow to the bit): 80.7 s and
 /// 116.4 s in a slow hour (79.0 s and 120.0 s before the last two of
 /// them, the same hour), deforming 1.44 times rigid against 1.61: about
-/// 62 s in a normal hour.
+/// 62 s in a normal hour. With the pool's workers kept awake through each
+/// step (2026-12-05, `fwav-ns2d`'s `awake_pool.rs`, the same flow to the
+/// bit), run in turn with the binary of before in a slow hour: 68.8 s and
+/// 105.0 s against 75.9 s and 110.2 s (111.7 s deforming at the hour's
+/// start).
 #[test]
-#[ignore = "benchmark (2 to 5 min); fails the issue's 60 s (deforming: about 62 s in a normal hour, 116 s in a slow one): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_deforming_evaluation_benchmark`"]
+#[ignore = "benchmark (2 to 5 min); fails the issue's 60 s (deforming: 105 s in a slow hour; about 60 s in a normal one by estimate, never measured under it): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_deforming_evaluation_benchmark`"]
 fn ns_deforming_evaluation_benchmark() {
     let rigid = ns_case(ViscousPlate::new(0.04));
     let deforming = deforming_case(ViscousPlate::new(0.04));
