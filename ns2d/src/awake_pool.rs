@@ -7,9 +7,9 @@
 //! worker that finds no work yields 32 times and then sleeps on a futex;
 //! the next region must wake it, and a region's caller, waiting for the
 //! other half, sleeps in turn and must be woken. On this project's 2-core
-//! machine that was about 50 futex calls a step (700,000 over three
-//! strokes of the deforming default section, counted with `perf stat`),
-//! and the wake-ups' latency was on the step's critical path.
+//! machine three strokes of the deforming default section made 700,000
+//! futex calls (counted with `perf stat`), 255,000 with the workers kept
+//! awake, and the wake-ups' latency was on the step's critical path.
 //!
 //! [`on_awake_pool`] runs an operation on a worker while each other
 //! worker of the pool loops on [`rayon::yield_now`]: it takes a region's
