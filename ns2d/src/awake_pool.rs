@@ -21,8 +21,10 @@
 //! the same flow to the bit: the regions split the work as before, only
 //! who waits, and how, changed): 85.1 s and 83.3 s against 88.2 s and
 //! 91.8 s; with a busy spin instead of the yield, 79.2 s to 84.8 s
-//! against 84.7 s to 91.8 s in four pairs, no better. So about 6 %
-//! sooner. A patched rayon that yields 20,000 rounds before sleeping (a
+//! against 84.7 s to 91.8 s in four pairs, no better. The evaluation
+//! benchmark (four strokes and the spin-up) took 68.8 s rigid and 105.0 s
+//! deforming against 75.9 s and 110.2 s. So about 5–9 % sooner. A
+//! patched rayon that yields 20,000 rounds before sleeping (a
 //! measurement only, not used) gave about 10 %: the rest is the caller's
 //! own waits at the end of a region, which rayon's join keeps; finer
 //! blocks for the sweeps (four per thread) did not recover it.
@@ -40,7 +42,11 @@
 //! for jobs the operation pushed later and another worker stole, and
 //! thieves take a deque's oldest job first, so by then every spinner has
 //! been taken by another worker. A spinner left unstolen is popped by the
-//! scope's end, after the operation, and returns at once.
+//! scope's end, after the operation, and returns at once. This rests on
+//! rayon's deques being last in, first out for their own worker and first
+//! in, first out for thieves, its default; a pool built with the
+//! deprecated `breadth_first` would pop a spinner first, and nothing in
+//! fwav builds one (the global pool is rayon's default).
 
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -48,8 +54,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 /// workers spinning beside it, ready for its parallel regions (module
 /// docs); called from a worker, runs `op` in place. The spinners keep a
 /// core each busy while `op` runs (yielding it to any other thread that
-/// wants it). A panic in `op` still releases them
-/// and is then propagated.
+/// wants it). A panic in `op` still releases them and is then
+/// propagated.
 pub(crate) fn on_awake_pool<R: Send>(op: impl FnOnce() -> R + Send) -> R {
     if rayon::current_thread_index().is_some() {
         return op();

@@ -34,9 +34,9 @@
 //! Measured cost on this project's 2-core machine: the stream solve and
 //! the sweeps run on both cores, each step on a worker of rayon's pool
 //! ([`Flow::step`]), the pool's other workers kept awake through a step
-//! called from outside it (`awake_pool.rs`). (The impulsively started cylinder at Re 550 to
-//! U t/R = 3 on 256 × 192, dt 0.004: 2.1 s in release, on a machine
-//! shared with other builds.) Where a step of the default FWAV section
+//! called from outside it (`awake_pool.rs`). (The impulsively started
+//! cylinder at Re 550 to U t/R = 3 on 256 × 192, dt 0.004: 2.1 s in
+//! release, on a machine shared with other builds.) Where a step of the default FWAV section
 //! deforming on 384 × 320 spends its time (timers round the phases of
 //! [`Flow::step`], two threads, 2026-12-04): moving the grid 24 %, the
 //! advection's rates 20 %, the ring sweep 15 %, the radial sweep 11 %,

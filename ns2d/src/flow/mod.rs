@@ -497,7 +497,7 @@ impl<M: Motion> Flow<M> {
     /// the pool while the caller slept until a worker woke it: the default
     /// FWAV section's four strokes took 40.1 s instead of 34.4 s. Called
     /// from outside, the pool's other workers are also kept awake through
-    /// the step (`awake_pool.rs`: about 7.5 % sooner on two cores).
+    /// the step (`awake_pool.rs`: about 5–9 % sooner on two cores).
     ///
     /// # Errors
     /// [`NsError::Diverged`] when the flow is no longer finite.
