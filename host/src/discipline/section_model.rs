@@ -14,10 +14,10 @@
 //!   moves with it ([`ViscousSection::run_deforming`]); the reports say
 //!   what was modelled ([`ModelledSection`]). Cost: the default
 //!   section's 4 cycles at the default resolution on the 2-core
-//!   development machine, about 43 s rigid (384 × 320 cells, Courant
-//!   number 3, [`ViscousSection::run`]), and deforming as the built-in
-//!   design's first system analysis found about 59 s in a normal hour,
-//!   an estimate from the measured 68.8 s and 105.0 s of a slow hour
+//!   development machine, about 39 s rigid (384 × 320 cells, Courant
+//!   number 3, [`ViscousSection::run`]) and 59 s deforming as the
+//!   built-in design's first system analysis found, in a normal hour:
+//!   estimates from the measured 68.8 s and 105.0 s of a slow hour
 //!   (2026-12-05; 43 s and 77 s were measured in a normal hour of
 //!   2026-12-03, before the step's later speed-ups; on 384 × 240 31.9 s
 //!   and 57.3 s; 320 rings cost 1.34 times as much in one hour); some
