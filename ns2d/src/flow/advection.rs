@@ -49,40 +49,6 @@ fn upwind_face(behind: f64, near: f64, far: f64) -> f64 {
     (-behind + 5.0 * near + 2.0 * far) / 6.0
 }
 
-/// The grid's inverse cell areas as the faces use them (constant for a
-/// rigid grid): a face's Courant number takes the larger of its two
-/// cells' `1/(J w_j Δθ)`, taken where the face is ([`RateRows`]).
-pub(super) struct FaceAreas {
-    /// Each node's `1/(J w_j Δθ)`.
-    node: Vec<f64>,
-}
-
-impl FaceAreas {
-    /// The areas of a grid of `nt` nodes round with `1/J` at the nodes
-    /// and `inv_cell` = `1/(w_j Δθ)` per ring.
-    pub(super) fn new(nt: usize, inv_jac: &[f64], inv_cell: &[f64]) -> Self {
-        let mut areas = Self {
-            node: vec![0.0; inv_jac.len()],
-        };
-        for ((node, inv_jac), cell) in areas
-            .node
-            .chunks_mut(nt)
-            .zip(inv_jac.chunks(nt))
-            .zip(inv_cell)
-        {
-            for (n, v) in node.iter_mut().zip(inv_jac) {
-                *n = v * cell;
-            }
-        }
-        areas
-    }
-
-    /// Each node's `1/(J w_j Δθ)`, for a moving grid to set.
-    pub(super) fn node_mut(&mut self) -> &mut [f64] {
-        &mut self.node
-    }
-}
-
 /// One face set's values at each `k` of a ring: the face's speed `q`
 /// (the flux per unit vorticity), its first-order flux `q ω_upwind`, its
 /// correction `q (ω₃ - ω_upwind)` and its implicit weight.
@@ -281,8 +247,10 @@ pub(super) struct RateRows<'a> {
     pub(super) half: f64,
     /// `1/J` at all nodes.
     pub(super) inv_jac: &'a [f64],
-    /// The inverse cell areas ([`FaceAreas`]).
-    pub(super) areas: &'a FaceAreas,
+    /// `1/(w_j Δθ)` per ring: a node's inverse cell area is
+    /// `inv_jac · inv_cell`, and a face's Courant number takes the larger
+    /// of its two cells'.
+    pub(super) inv_cell: &'a [f64],
     /// A deforming grid's swept fluxes of the radial faces (above each
     /// node) and ring faces (`k + ½`), taken off the fluid's at the
     /// step's middle as the relative streamfunction is; `None` for a
@@ -380,12 +348,10 @@ impl RateRows<'_> {
             self.ring(self.w, j),
             self.ring(self.w, j + 1),
         );
-        // A face's area: the larger of its two cells'.
-        let (cell, cell_above) = (
-            self.ring(&self.areas.node, j),
-            self.ring(&self.areas.node, j + 1),
-        );
-        let area = |k: usize| cell[k].max(cell_above[k]);
+        // A face's inverse area: the larger of its two cells'.
+        let (inv_jac, inv_jac_above) = (self.ring(self.inv_jac, j), self.ring(self.inv_jac, j + 1));
+        let (cell, cell_above) = (self.inv_cell[j], self.inv_cell[j + 1]);
+        let area = |k: usize| (inv_jac[k] * cell).max(inv_jac_above[k] * cell_above);
         if j + 2 == self.nr {
             // The last face: first order where the flow comes in.
             for k in 0..nt {
@@ -429,13 +395,17 @@ impl RateRows<'_> {
         faces: &mut Faces<'_>,
     ) {
         let nt = self.nt;
-        // A face's area, the larger of its two cells', in the weights'
-        // place until each face's weight is set.
-        let cell = self.ring(&self.areas.node, j);
-        for (a, (here, next)) in faces.weight.iter_mut().zip(cell.iter().zip(&cell[1..])) {
-            *a = here.max(*next);
+        // A face's inverse area, the larger of its two cells', in the
+        // weights' place until each face's weight is set.
+        let (inv_jac, cell) = (self.ring(self.inv_jac, j), self.inv_cell[j]);
+        for (a, (here, next)) in faces
+            .weight
+            .iter_mut()
+            .zip(inv_jac.iter().zip(&inv_jac[1..]))
+        {
+            *a = (here * cell).max(next * cell);
         }
-        faces.weight[nt - 1] = cell[nt - 1].max(cell[0]);
+        faces.weight[nt - 1] = (inv_jac[nt - 1] * cell).max(inv_jac[0] * cell);
         for ((q, l), u) in faces.speed.iter_mut().zip(lower).zip(upper) {
             *q = l - u;
         }
@@ -501,7 +471,7 @@ impl RateRows<'_> {
         explicit_before[0] = explicit_before[nt];
         let (w_below, w_above) = (self.ring(self.w, j - 1), self.ring(self.w, j + 1));
         let inv_jac = self.ring(self.inv_jac, j);
-        let area = self.ring(&self.areas.node, j);
+        let cell = self.inv_cell[j];
         let inv_dt2 = 1.0 / (self.d_theta * self.d_theta);
         // ∂ηη - β ∂η by central differences.
         let h2 = 1.0 / (self.d_eta * self.d_eta);
@@ -509,7 +479,8 @@ impl RateRows<'_> {
         let radial_factor = self.viscosity / (self.slope[j] * self.slope[j]);
         let theta_d = self.diffusion_weight;
         for k in 0..nt {
-            let s = area[k];
+            // The cell's inverse area.
+            let s = inv_jac[k] * cell;
             let correction = above.correction[k] - below.correction[k] + correction_before[k + 1]
                 - correction_before[k];
             out.correction[k] = -s * correction;
@@ -535,7 +506,7 @@ impl RateRows<'_> {
             for k in 0..nt {
                 let km = if k == 0 { nt - 1 } else { k - 1 };
                 let net = above.speed[k] - below.speed[k] + round.speed[k] - round.speed[km];
-                out.explicit[k] += area[k] * w0[k] * net;
+                out.explicit[k] += inv_jac[k] * cell * w0[k] * net;
             }
         }
     }
@@ -578,7 +549,7 @@ impl<M: Motion> Flow<M> {
             previous_relative: &self.previous_relative,
             half,
             inv_jac: &g.inv_jac,
-            areas: &self.face_areas,
+            inv_cell: &self.inv_cell,
             swept: self.deforming.as_ref().map(|d| d.swept(g)),
         };
         let mut radial = std::mem::take(&mut self.radial_faces);

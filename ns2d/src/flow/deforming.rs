@@ -43,7 +43,7 @@
 //!
 //! Cost, measured on the default FWAV section (256 × 160, two cores): the
 //! grid's motion adds about half a rigid step (three inverse FFTs a ring,
-//! and the metrics, areas and swept fluxes fused into the same pass):
+//! and the metrics and swept fluxes fused into the same pass):
 //! the 4 periods deforming as the built-in design's first system
 //! analysis found took 48.5 s, rigid 25.9 s (the deforming run's larger
 //! motion also took a third more steps). With `fwav`'s step that follows
@@ -358,7 +358,7 @@ impl<M: Motion> Flow<M> {
     }
 
     /// Move a deforming section's grid to the map of time `t`: nodes,
-    /// metrics, cell areas, the grid's velocity, the faces' swept fluxes
+    /// metrics, the grid's velocity, the faces' swept fluxes
     /// and the wall's conditions (module docs). Cost: three inverse FFTs a
     /// ring and `O(N)` passes.
     pub(super) fn move_grid(&mut self, t: f64) {
@@ -377,12 +377,11 @@ impl<M: Motion> Flow<M> {
             .zip(d.swept_node.par_chunks_mut(nt))
             .zip(g.jac.par_chunks_mut(nt))
             .zip(g.inv_jac.par_chunks_mut(nt))
-            .zip(self.face_areas.node_mut().par_chunks_mut(nt))
-            .zip(g.xi.par_iter().zip(self.inv_cell.par_iter()))
+            .zip(g.xi.par_iter())
             .zip(d.powers.par_iter())
             .for_each_init(
                 || vec![zero; scratch_len],
-                |scratch, ((((((((z, dz), v), swept), jac), inv_jac), area), (xi, cell)), powers)| {
+                |scratch, (((((((z, dz), v), swept), jac), inv_jac), xi), powers)| {
                     let rho = xi.exp();
                     for (series, coefficients, out) in [
                         (Series::Value, &state.coefficients, &mut *z),
@@ -392,13 +391,12 @@ impl<M: Motion> Flow<M> {
                         fill(out, coefficients, rho, powers, series);
                         fft.process_with_scratch(out, scratch);
                     }
-                    let nodes = jac.iter_mut().zip(inv_jac.iter_mut()).zip(area.iter_mut());
-                    for (((((j, ij), a), d), w), s) in
+                    let nodes = jac.iter_mut().zip(inv_jac.iter_mut());
+                    for ((((j, ij), d), w), s) in
                         nodes.zip(dz.iter()).zip(v.iter()).zip(swept.iter_mut())
                     {
                         *j = d.norm_sqr();
                         *ij = 1.0 / *j;
-                        *a = *ij * cell;
                         *s = d.conj() * w;
                     }
                 },

@@ -179,8 +179,6 @@ pub struct Flow<M: Motion> {
     inv_cell: Vec<f64>,
     /// A deforming section's grid (`flow/deforming.rs`); `None`: rigid.
     deforming: Option<deforming::DeformingGrid>,
-    /// The inverse cell areas of the advection's faces.
-    face_areas: advection::FaceAreas,
     frame: FrameState,
     /// The time of `frame` and `frame_psi`.
     frame_time: Option<f64>,
@@ -247,9 +245,7 @@ impl<M: Motion> Flow<M> {
                 0.5 * (above - below)
             })
             .collect();
-        let widths_inv: Vec<f64> = widths.iter().map(|w| 1.0 / (w * grid.d_theta)).collect();
-        let face_areas = advection::FaceAreas::new(nt, &grid.inv_jac, &widths_inv);
-        let inv_cell = widths_inv;
+        let inv_cell: Vec<f64> = widths.iter().map(|w| 1.0 / (w * grid.d_theta)).collect();
         let mut flow = Self {
             grid,
             motion,
@@ -278,7 +274,6 @@ impl<M: Motion> Flow<M> {
             outflow_explicit: 0.0,
             radial_faces: advection::RadialFaces::new(nt, nr),
             wall_residual: 0.0,
-            face_areas,
             widths,
             inv_cell,
             deforming: None,
