@@ -271,10 +271,10 @@ impl SectionCase {
     /// summarizes its periods after the first [`TRANSIENT_CYCLES`].
     ///
     /// Cost: the LDVM a fraction of a second; the Navier–Stokes model at
-    /// the default resolution 68.8 s (rigid) to 105.0 s (deforming as
-    /// the built-in design's first system analysis found) for 4 cycles on
-    /// two cores in a slow hour of 2026-12-05 (about 39 s to 59 s in a
-    /// normal one, by estimate), in proportion to the cycles for more
+    /// the default resolution 67.5 s (rigid) to 99.3 s (deforming as the
+    /// built-in design's first system analysis found) for 4 cycles on
+    /// the two-core development machine (2026-12-05), in proportion to
+    /// the cycles for more
     /// ([`crate::aero2d::viscous::ViscousSection::run`]).
     ///
     /// # Errors

@@ -14,14 +14,13 @@
 //!   moves with it ([`ViscousSection::run_deforming`]); the reports say
 //!   what was modelled ([`ModelledSection`]). Cost: the default
 //!   section's 4 cycles at the default resolution on the 2-core
-//!   development machine, about 39 s rigid (384 × 320 cells, Courant
-//!   number 3, [`ViscousSection::run`]) and 59 s deforming as the
-//!   built-in design's first system analysis found, in a normal hour:
-//!   estimates from the measured 68.8 s and 105.0 s of a slow hour
-//!   (2026-12-05; 43 s and 77 s were measured in a normal hour of
-//!   2026-12-03, before the step's later speed-ups; on 384 × 240 31.9 s
-//!   and 57.3 s; 320 rings cost 1.34 times as much in one hour); some
-//!   900 to 1,700 times the LDVM's.
+//!   development machine, 67.5 s rigid (384 × 320 cells, Courant
+//!   number 3, [`ViscousSection::run`]) and 99.3 s deforming as the
+//!   built-in design's first system analysis found (2026-12-05; the
+//!   README's "Speed" gives each step of the way, and why the former
+//!   estimate of about 59 s "in a normal hour" was withdrawn): some
+//!   120 to 180 times the LDVM's 0.56 s for the same 4 cycles (timed
+//!   the same day).
 
 use serde::{Deserialize, Serialize};
 

@@ -218,9 +218,15 @@ fn ns_discipline_benchmark() {
 /// step (2026-12-05, `fwav-ns2d`'s `awake_pool.rs`, the same flow to the
 /// bit), run in turn with the binary of before in a slow hour: 68.8 s and
 /// 105.0 s against 75.9 s and 110.2 s (111.7 s deforming at the hour's
-/// start).
+/// start). With `FaceAreas` removed (the same flow to the bit), on the
+/// machine otherwise idle (2026-12-05): 67.5 s and 99.3 s. The "normal
+/// hour" figures above were estimates scaled from 384 x 240 by the
+/// rigid ratio 1.34; deforming, 320 rings cost 1.47 times 240 (99.0 s
+/// against 67.2 s the same hour), and 384 x 240 itself took 67.2 s that
+/// day against 57.3 s with slower code on 2026-12-03: withdrawn (README,
+/// "Speed").
 #[test]
-#[ignore = "benchmark (2 to 5 min); fails the issue's 60 s (deforming: 105 s in a slow hour; about 60 s in a normal one by estimate, never measured under it): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_deforming_evaluation_benchmark`"]
+#[ignore = "benchmark (2 to 5 min); fails the issue's 60 s (deforming: 99.3 s on 2026-12-05, 105 s an hour before; never measured under 99 s on this grid): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_deforming_evaluation_benchmark`"]
 fn ns_deforming_evaluation_benchmark() {
     let rigid = ns_case(ViscousPlate::new(0.04));
     let deforming = deforming_case(ViscousPlate::new(0.04));
