@@ -59,21 +59,19 @@ const DEFAULT_MEMORY: f64 = 680e6;
 
 /// Wall time of one aerodynamic discipline run with the Navier–Stokes
 /// section model at the default resolution (384 × 320, Courant number 3),
-/// s, on the 2-core development machine in a normal hour: cycle 3 of the
-/// default design with `section_model = "ns"` took 2,261 s alone
-/// (2026-12-04, docs/ns-design; the first stroke of the default section
-/// took 24.2 s on two threads that hour, as in a normal one). Its 21
-/// evaluations (the initial design, the 18 rows, two confirmations) run
-/// two at a time, each on one core (README, "Speed"). Measured rather
-/// than counted from one evaluation: 21 times the initial design's (77 s
-/// on two threads, `discipline_ns_scores::ns_deforming_evaluation_benchmark`),
-/// 27 minutes, fell short of the measured 38. The discipline computed 20
-/// (the analysed design is an array row, found in the cache): ten rounds
-/// of two single-threaded runs, 226 s each, where the initial
-/// design's evaluation takes about 115 s on one thread (77 s times 1.49,
-/// the first stroke's 36.0 s over 24.2 s): the array's rows, with their
-/// faster strokes, cost about twice as much on average.
-pub const NS_DISCIPLINE_SECONDS: f64 = 2261.0;
+/// s, on the 2-core development machine: the first cycle's discipline of
+/// the default design with `section_model = "ns"` took 1,950 s
+/// (2026-12-05, `discipline_ns_scores::ns_discipline_benchmark`, the step
+/// as it is now); cycle 3's took 2,261 s on 2026-12-04, before the
+/// step's later speed-ups (docs/ns-design). Its 20 evaluations (the 18
+/// rows and two confirmations; the analysed design is a row, found in the
+/// cache) run two at a time, each on one core (README, "Speed"), about
+/// 195 s each, where the initial design's evaluation takes 99.3 s on two
+/// threads (`discipline_ns_scores::ns_deforming_evaluation_benchmark`,
+/// the same day): the array's rows, with their faster strokes, cost more
+/// than the initial design on average, so the discipline is measured
+/// rather than counted from one evaluation.
+pub const NS_DISCIPLINE_SECONDS: f64 = 1950.0;
 
 /// The cycles each evaluation ran in [`NS_DISCIPLINE_SECONDS`]'s run
 /// (`[design] section_cycles` of the default design).
@@ -217,13 +215,13 @@ mod tests {
     }
 
     /// The Navier–Stokes section model's disciplines are in the built-in
-    /// design's estimate, which says what they cost. At 2,261 s each (the
-    /// default 384 × 320 grid), three of them, they make it about 16 times
+    /// design's estimate, which says what they cost. At 1,950 s each (the
+    /// default 384 × 320 grid), three of them, they make it about 14 times
     /// the LDVM run, beyond the [`FAR_TIME_RATIO`] at which `fwav design`
     /// asks before it starts. (The default NS design run on 384 × 320 took
     /// 9,845 s of stage time, 2 h 44 min, two of its three disciplines
-    /// partly shared in a slow hour; the estimate is 2 h. On 384 × 240 the
-    /// run took 78.6 minutes in a slow hour, docs/ns-design.)
+    /// partly shared, before the step's later speed-ups; the estimate is
+    /// 1 h 45 min. On 384 × 240 the run took 78.6 minutes, docs/ns-design.)
     #[test]
     fn the_ns_section_model_is_in_the_estimate() {
         let mut ns = SystemConfig::default();
