@@ -226,7 +226,7 @@ fn ns_discipline_benchmark() {
 /// day against 57.3 s with slower code on 2026-12-03: withdrawn (README,
 /// "Speed").
 #[test]
-#[ignore = "benchmark (2 to 5 min); fails the issue's 60 s (deforming: 99.3 s on 2026-12-05, 105 s an hour before; never measured under 99 s on this grid): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_deforming_evaluation_benchmark`"]
+#[ignore = "benchmark (2 to 5 min); fails the issue's 60 s (deforming: 99.3 s on 2026-12-05, 105 s earlier that day; never measured under 99 s on this grid): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_deforming_evaluation_benchmark`"]
 fn ns_deforming_evaluation_benchmark() {
     let rigid = ns_case(ViscousPlate::new(0.04));
     let deforming = deforming_case(ViscousPlate::new(0.04));
