@@ -36,19 +36,20 @@
 //! ([`Flow::step`]), the pool's other workers kept awake through a step
 //! called from outside it (`awake_pool.rs`). (The impulsively started
 //! cylinder at Re 550 to U t/R = 3 on 256 × 192, dt 0.004: 2.1 s in
-//! release, on a machine shared with other builds.) Where a step of the default FWAV section
-//! deforming on 384 × 320 spends its time (timers round the phases of
-//! [`Flow::step`], two threads, 2026-12-04): moving the grid 24 %, the
-//! advection's rates 20 %, the ring sweep 15 %, the radial sweep 11 %,
-//! the wall rings' streamfunction (with the frame's at every node) 11 %,
-//! the full streamfunction 9 %, the wall's correction 3 % and its LU
-//! solve 2 %. The relative streamfunction extrapolated to the step's
-//! middle is formed with the advection's corners (a pass fewer), the
-//! second solve transforms only the rings the wall's correction reached,
-//! and the circulation's rings are summed in parallel: the same flow to
-//! the bit, 5 % sooner (107.7 and 111.9 s against 117.7 s for three
-//! strokes, run alternately); the ring sweep's interleaved systems set
-//! up with the lanes inner, 1.5 % more.
+//! release, on a machine shared with other builds.) Where a step of the
+//! default FWAV section deforming on 384 × 320 spends its time (timers
+//! round the phases of [`Flow::step`], two threads, 2026-12-04): moving
+//! the grid 24 %, the advection's rates 20 %, the ring sweep 15 %, the
+//! radial sweep 11 %, the wall rings' streamfunction (with the frame's
+//! at every node) 11 %, the full streamfunction 9 %, the wall's
+//! correction 3 % and its LU solve 2 %. The relative streamfunction
+//! extrapolated to the step's middle is formed with the advection's
+//! corners (a pass fewer), the second solve transforms only the rings
+//! the wall's correction reached, and the circulation's rings are
+//! summed in parallel: the same flow to the bit, 5 % sooner (107.7 and
+//! 111.9 s against 117.7 s for three strokes, run alternately); the
+//! ring sweep's interleaved systems set up with the lanes inner, 1.5 %
+//! more.
 //!
 //! The validation cases (cylinders at Re 100, 200, impulsively started
 //! cylinders, the hovering ellipse of Wang, Birch & Dickinson 2004) are in
