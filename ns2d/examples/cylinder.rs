@@ -25,6 +25,7 @@ fn main() {
         radial,
         outer_radius: 2.0 * outer_d,
         first_cell: first,
+        far: None,
     };
     let motion = SteadyStream {
         speed: 1.0,

@@ -31,6 +31,7 @@ fn main() {
         radial,
         outer_radius: 120.0,
         first_cell: 0.3 / re.sqrt(),
+        far: None,
     };
     let mut flow = Flow::new(&map, grid, motion, 1.0 / re).unwrap();
     let period = std::f64::consts::TAU / omega;

@@ -16,6 +16,7 @@ fn main() {
         radial: args[1] as usize,
         outer_radius: args[2],
         first_cell: args[3],
+        far: None,
     };
     let dt = args[4];
     let periods = args[5];

@@ -28,6 +28,7 @@ fn main() {
         radial: radial as usize,
         outer_radius: 100.0,
         first_cell: first,
+        far: None,
     };
     let motion = SteadyStream {
         speed: 1.0,

@@ -67,6 +67,7 @@ impl CylinderWake {
                 radial: 192,
                 outer_radius: 100.0,
                 first_cell: 0.01,
+                far: None,
             },
             dt: 0.005,
         }
@@ -118,6 +119,7 @@ impl ImpulsiveCylinder {
                 radial: 192,
                 outer_radius: 100.0,
                 first_cell: 0.002,
+                far: None,
             },
             dt: 0.004,
         }
@@ -134,6 +136,7 @@ impl ImpulsiveCylinder {
                 radial: 320,
                 outer_radius: 100.0,
                 first_cell: 0.0007,
+                far: None,
             },
             dt: 0.0007,
         }
@@ -234,6 +237,7 @@ impl HoveringEllipse {
                 radial: 128,
                 outer_radius: 100.0,
                 first_cell: 0.01,
+                far: None,
             },
             dt: 0.00025,
         }

@@ -136,6 +136,19 @@ pub enum NsError {
         /// The uniform spacing.
         uniform: f64,
     },
+    /// A tailed stretching whose rings cannot reach the outer boundary.
+    #[error(
+        "{radial} rings that keep the {near_radial}-ring grid's cells near the wall cannot reach the \
+         outer boundary growing {growth} a cell past them: give more rings or a larger far growth"
+    )]
+    NoTail {
+        /// The grid's rings.
+        radial: usize,
+        /// The near grid's rings.
+        near_radial: usize,
+        /// The far growth a cell.
+        growth: f64,
+    },
     /// The Reynolds number is not a positive number.
     #[error("the Reynolds number is {0}: give a positive, finite number")]
     BadReynolds(f64),

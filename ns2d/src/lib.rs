@@ -31,6 +31,14 @@
 //!   whose weight rises with the face's Courant number, and stays
 //!   second-order Crank–Nicolson elsewhere ([`Flow`]'s docs).
 //!
+//! - **Rings where the flow needs them**: the radial stretching places
+//!   the rings ([`RingSpacing`]): exponential from the wall
+//!   ([`RadialStretch`]), or the same rings near the wall and a faster
+//!   growth past them ([`FarStretch`], [`TailedStretch`]), which keeps
+//!   the near field's resolution on fewer rings (the default FWAV
+//!   section's long-run thrust within 0.2 % of 320 exponential rings' on
+//!   256, a fifth less cost). The solver takes `g''/g'` ring by ring.
+//!
 //! Measured cost on this project's 2-core machine: the stream solve and
 //! the sweeps run on both cores, each step on a worker of rayon's pool
 //! ([`Flow::step`]), the pool's other workers kept awake through a step
@@ -90,12 +98,13 @@ mod reference_curve;
 mod section_map;
 mod spline;
 mod stream;
+mod stretch;
 
 pub use contour::Contour;
 pub use deformation::{Deformation, MapState};
 pub use error::NsError;
 pub use flow::{Flow, WallLoads};
-pub use grid::{GridSpec, OGrid, RadialStretch};
+pub use grid::{GridSpec, OGrid};
 pub use history::{ForceHistory, WakeStatistics};
 pub use motion::{FrameState, Motion, PlungePitch, RigidField, SteadyStream};
 /// The complex numbers of the solver's interface (positions, velocities
@@ -104,3 +113,4 @@ pub use realfft::num_complex::Complex64;
 pub use reference_curve::{interpolate, ReferenceCurve};
 pub use section_map::SectionMap;
 pub use stream::StreamSolver;
+pub use stretch::{FarStretch, RadialStretch, RingSpacing, TailedStretch};

@@ -94,12 +94,17 @@ pub struct StreamSolver {
     mode_lower: Vec<f64>,
     mode_inv_pivot: Vec<f64>,
     mode_upper: Vec<f64>,
-    /// The radial coefficients of `ψ_{j-1}` and `ψ_{j+1}` in every row
-    /// (the same in all rows: the stretching is exponential).
+    /// The radial coefficients of `ψ_0` and `ψ_2` in row 1 (the wall's
+    /// given value moves to the right-hand side by the first; mode 0's
+    /// wall row eliminates `ψ_2` by the second).
     lower_coefficient: f64,
     /// The wall-slope weights of `ψ0, ψ1, ψ2` (mode 0's wall row).
     wall_weights: [f64; 3],
     upper_coefficient: f64,
+    /// The radial coefficient of the outer ring's `ψ` in row `nr - 2`
+    /// (the outer ring's given value moves to the right-hand side by
+    /// it).
+    outer_coefficient: f64,
     /// `g'²` per radial node.
     slope2: Vec<f64>,
     /// Each ring's transformed right-hand side `-g'_j² ŝ_j` of the last
@@ -135,8 +140,11 @@ impl StreamSolver {
         let forward = planner.plan_fft_forward(nt);
         let inverse = planner.plan_fft_inverse(nt);
         let h2 = 1.0 / (grid.d_eta * grid.d_eta);
-        let half = grid.curvature / (2.0 * grid.d_eta);
-        let (a, c) = (h2 + half, h2 - half);
+        // Row j's coefficients of ψ_{j-1} and ψ_{j+1}: ∂ηη - (g''/g') ∂η.
+        let half = |j: usize| grid.curvature[j] / (2.0 * grid.d_eta);
+        let a_at = |j: usize| h2 + half(j);
+        let c_at = |j: usize| h2 - half(j);
+        let (a, c) = (a_at(1), c_at(1));
         let slope2: Vec<f64> = grid.slope.iter().map(|s| s * s).collect();
         let mut factors = Vec::with_capacity(modes);
         for m in 0..modes {
@@ -147,9 +155,9 @@ impl StreamSolver {
                 // (a quadratic through ψ0, ψ1, ψ2) equal to the wall's,
                 // with ψ2 eliminated by row 1 to stay tridiagonal.
                 let n = nr - 1;
-                let mut lower = vec![a; n];
+                let mut lower: Vec<f64> = (0..n).map(a_at).collect();
                 let mut diag = vec![-2.0 * h2; n];
-                let mut upper = vec![c; n];
+                let mut upper: Vec<f64> = (0..n).map(c_at).collect();
                 let w = wall_slope_weights(grid.xi[1], grid.xi[2]);
                 lower[0] = 0.0;
                 diag[0] = w[0] - w[2] * a / c;
@@ -159,9 +167,9 @@ impl StreamSolver {
             } else {
                 // Unknowns j = 1..nr-2.
                 let n = nr - 2;
-                let mut lower = vec![a; n];
+                let mut lower: Vec<f64> = (1..=n).map(a_at).collect();
                 let diag: Vec<f64> = (1..=n).map(|j| -2.0 * h2 - k2 * slope2[j]).collect();
-                let mut upper = vec![c; n];
+                let mut upper: Vec<f64> = (1..=n).map(c_at).collect();
                 lower[0] = 0.0;
                 upper[n - 1] = 0.0;
                 factors.push(ModeFactors::new(lower, &diag, &upper));
@@ -199,6 +207,7 @@ impl StreamSolver {
             lower_coefficient: a,
             wall_weights: wall_slope_weights(grid.xi[1], grid.xi[2]),
             upper_coefficient: c,
+            outer_coefficient: c_at(nr - 2),
             slope2,
             source_spectrum: vec![Complex64::new(0.0, 0.0); modes * nr],
             spectrum: vec![Complex64::new(0.0, 0.0); modes * nr],
@@ -322,9 +331,10 @@ impl StreamSolver {
         let (nt, nr, modes) = (self.nt, self.nr, self.modes);
         let wall = self.modes_of(wall_shape);
         let outer_modes = self.modes_of(outer);
-        let (lower_c, upper_c, w2) = (
+        let (lower_c, upper_c, outer_c, w2) = (
             self.lower_coefficient,
             self.upper_coefficient,
+            self.outer_coefficient,
             self.wall_weights[2],
         );
         // Mode 0: the wall row (see `new`) less row 1's right-hand side
@@ -336,7 +346,7 @@ impl StreamSolver {
         }
         let n = nr - 1;
         column[0] = Complex64::new(wall_slope_mean * nt as f64, 0.0) - column[1] * (w2 / upper_c);
-        column[n - 1] -= outer_modes[0] * upper_c;
+        column[n - 1] -= outer_modes[0] * outer_c;
         self.mean_factors.solve(&mut column[..n]);
         column[nr - 1] = outer_modes[0];
         for (j, c) in column.iter().enumerate() {
@@ -369,7 +379,7 @@ impl StreamSolver {
                             v -= wall[i] * lower_c;
                         }
                         if j == nr - 2 {
-                            v -= outer[i] * upper_c;
+                            v -= outer[i] * outer_c;
                         }
                         row[i] = (v - prev[i] * lo[i]) * inv[i];
                     }
@@ -488,6 +498,7 @@ mod tests {
                     radial,
                     outer_radius: r_out / a,
                     first_cell: 0.01,
+                    far: None,
                 };
                 let grid = OGrid::new(&map, spec).unwrap();
                 let mut solver = StreamSolver::new(&grid);
@@ -521,6 +532,7 @@ mod tests {
             radial: 96,
             outer_radius: 40.0,
             first_cell: 0.01,
+            far: None,
         };
         let grid = OGrid::new(&map, spec).unwrap();
         let mut solver = StreamSolver::new(&grid);

@@ -40,6 +40,7 @@ fn grid(scale: usize) -> GridSpec {
         radial: 96 * scale,
         outer_radius: 40.0,
         first_cell: 0.01,
+        far: None,
     }
 }
 

@@ -57,6 +57,7 @@ fn run<M: Motion + Send>(motion: M) -> Vec<Sample> {
         radial: 48,
         outer_radius: 100.0,
         first_cell: 0.02,
+        far: None,
     };
     let mut flow = Flow::new(&map, grid, motion, stroke.peak_speed() / 75.0).unwrap();
     let mut out = Vec::new();

@@ -209,6 +209,7 @@ fn a_lifting_ellipse_keeps_the_fluids_circulation_at_zero() {
         radial: 96,
         outer_radius: 100.0,
         first_cell: 0.01,
+        far: None,
     };
     let mut flow = Flow::new(&map, grid, stroke, stroke.peak_speed() / 75.0).unwrap();
     while flow.time() < 0.6 {

@@ -221,6 +221,7 @@ fn the_grid_of_a_fitted_map() {
             radial: 64,
             outer_radius: 20.0,
             first_cell: 2e-3,
+            far: None,
         };
         let grid = OGrid::new(&map, spec).unwrap();
         assert!(grid.jac.iter().all(|&j| j > 0.0 && j.is_finite()));

@@ -31,6 +31,7 @@ fn grid() -> GridSpec {
         radial: 96,
         outer_radius: 40.0,
         first_cell: 0.01,
+        far: None,
     }
 }
 

@@ -105,6 +105,7 @@ fn a_spun_up_circle_has_the_wall_pressure_of_its_circular_layer() {
         outer_radius: 20.0,
         radial: 256,
         first_cell: 0.001,
+        far: None,
     };
     let mut flow = Flow::new(&map, spec, SpunUp(rate), nu).unwrap();
     let dt = 0.002;
@@ -191,6 +192,7 @@ fn the_impulsively_started_cylinders_wall_pressure_has_its_level() {
             radial: 192,
             outer_radius: 100.0,
             first_cell: 0.001,
+            far: None,
         },
         dt,
     };

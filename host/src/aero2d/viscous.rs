@@ -19,6 +19,14 @@
 //! NACA section or a point file, a sharp trailing edge made blunt), both
 //! by the solver's numerical conformal map, or an ellipse (exact map).
 //!
+//! The grid ([`ViscousSection::new`]): 384 nodes round, 256 rings out to
+//! 30 chords, the first ring a tenth of the boundary layer's thickness
+//! from the wall; the rings are those of the exponential grid of 320 out
+//! to about 0.8 chords, where the separated shear layers and the young
+//! wake lie, and grow 4.5 % a ring past it ([`FarStretch`]), which keeps
+//! the default FWAV section's long-run thrust within 0.2 % of the
+//! exponential grid's at a fifth less cost.
+//!
 //! The time step is the one of a chosen largest Courant number
 //! ([`ViscousSection::courant`], [`fwav_ns2d::Flow::stable_dt`]): the
 //! solver's advection is implicit where the Courant number exceeds ½, so
@@ -50,7 +58,7 @@
 //! discipline does not spin up
 //! ([`crate::discipline::section_model::ViscousPlate::spin_up`]).
 
-use fwav_ns2d::{Complex64, Contour, Deformation, Flow, GridSpec, NsError, SectionMap};
+use fwav_ns2d::{Complex64, Contour, Deformation, FarStretch, Flow, GridSpec, NsError, SectionMap};
 
 mod march;
 mod path;
@@ -69,8 +77,10 @@ const PICTURE_CELLS: usize = 20_000;
 const PICTURE_RADIUS: f64 = 6.0;
 
 /// How much coarser the spin-up's grid is each way
-/// ([`ViscousSection::spin_up_grid`]): 384 × 320 becomes 256 × 214 (384 ×
-/// 240, the default when the spin-up was measured, 256 × 160).
+/// ([`ViscousSection::spin_up_grid`]): 384 × 256 becomes 256 × 170, its
+/// near rings those of 212 rather than 320 and its far cells growing
+/// 6.9 % rather than 4.5 % (384 × 240, the exponential default when the
+/// spin-up was measured, 256 × 160).
 pub const SPIN_UP_COARSENING: f64 = 1.5;
 
 /// Steps a run may take before it is refused as beyond this machine.
@@ -159,6 +169,11 @@ pub struct ViscousSection {
     pub around: usize,
     /// Nodes from the wall to the outer boundary.
     pub radial: usize,
+    /// The far field coarsened: the rings of a finer exponential grid
+    /// near the wall, faster growth past them ([`FarStretch`]); `None`
+    /// for the exponential stretching throughout. Change `radial` with
+    /// [`Self::with_radial`], which scales this with it.
+    pub far: Option<FarStretch>,
     /// Outer boundary, chords from the pivot.
     pub outer_chords: f64,
     /// First cell at the wall where the grid is coarsest along it
@@ -214,11 +229,51 @@ impl ViscousSection {
     /// (`viscous_default_section::default_section_four_cycles_benchmark` with
     /// `FWAV_NS_CYCLES=1 FWAV_NS_COURANT=...`.)
     pub const DEFAULT_COURANT: f64 = 3.0;
-    /// The default resolution round `shape`: 384 nodes round, 320 out to
-    /// 30 chords, first cell a tenth of the boundary layer's thickness.
-    /// Chosen on the default FWAV section (Courant number 3, the step
-    /// centred in time: [`Self::DEFAULT_COURANT`]). The first stroke's CT
-    /// and CP:
+    /// The default rings: 256 from the wall to 30 chords, the first 200
+    /// or so those of the exponential grid of 320 ([`Self::DEFAULT_FAR`]).
+    pub const DEFAULT_RADIAL: usize = 256;
+    /// The default far stretch: near the wall the rings of the
+    /// exponential grid of 320 (each cell 1.06 % larger than the one
+    /// inside it on the default FWAV section), turning to 4.5 % a cell
+    /// past about 0.8 chords, where the wake has spread.
+    ///
+    /// Chosen on the default FWAV section, rigid, twelve strokes at
+    /// Courant 3, the mean over strokes 3 to 12 against the exponential
+    /// 384 x 320 (CT 0.07148, CP 1.7105, 204 s; 2026-12-05, the same hour,
+    /// a scratch build of this stretching whose first cell was 0.5 %
+    /// higher):
+    ///
+    /// | rings | far growth | CT | CP | strokes 3 and 4 | time |
+    /// | --- | --- | --- | --- | --- | --- |
+    /// | 272 | 3.5 % | −0.07 % | +0.01 % | 0.0713 | 175 s |
+    /// | **256** | **4.5 %** | **−0.2 %** | **+0.01 %** | **−0.2 %** | **161 s** |
+    /// | 240 | 7.5 % | −0.9 % | −0.4 % | −1.5 % | 154 s |
+    ///
+    /// A grid with the same rings coarser where the shear layers lie
+    /// (0.06 to 0.36 c: cells growing 2 % a ring to square ones, then
+    /// held, on 272 rings) shed aperiodically, its long mean −4.7 %, as the
+    /// exponential 240 rings (−5.1 %): the near field's radial resolution
+    /// decides the flow, the far field's hardly.
+    ///
+    /// Converged as the exponential 384 x 320 was (issue 23's 3 %;
+    /// `viscous_default_section::the_long_mean_converges_with_the_resolution`,
+    /// 2026-12-05): the long mean on 384 x 256 is CT 0.0713 (standard
+    /// error 0.1 %: periodic), efficiency 0.0417; the step halved moves
+    /// them −0.6 % and +0.0 %, the grid refined to 320 rings (the near
+    /// grid's 400, 3.6 % a far cell: [`Self::with_radial`]) −0.1 % and
+    /// +0.3 %, 512 round −0.5 % and +1.2 %.
+    pub const DEFAULT_FAR: FarStretch = FarStretch {
+        near_radial: 320,
+        growth: 1.045,
+    };
+
+    /// The default resolution round `shape`: 384 nodes round,
+    /// [`Self::DEFAULT_RADIAL`] rings out to 30 chords with the far field
+    /// coarsened ([`Self::DEFAULT_FAR`]), first cell a tenth of the
+    /// boundary layer's thickness. The exponential grid it keeps near the
+    /// wall was chosen on the default FWAV section (Courant number 3, the
+    /// step centred in time: [`Self::DEFAULT_COURANT`]). The first
+    /// stroke's CT and CP on exponential grids:
     ///
     /// | grid | 160 rings | 240 rings | 320 rings | 400 rings |
     /// | --- | --- | --- | --- | --- |
@@ -250,11 +305,24 @@ impl ViscousSection {
         Self {
             shape,
             around: 384,
-            radial: 320,
+            radial: Self::DEFAULT_RADIAL,
+            far: Some(Self::DEFAULT_FAR),
             outer_chords: 30.0,
             first_cell_layers: 0.1,
             courant: Self::DEFAULT_COURANT,
             spin_up_periods: 0.0,
+        }
+    }
+
+    /// This section with `radial` rings, the grid refined or coarsened
+    /// as a whole: its far stretch, if any, scaled with the rings
+    /// ([`FarStretch::scaled`]).
+    #[must_use]
+    pub fn with_radial(&self, radial: usize) -> Self {
+        Self {
+            radial,
+            far: self.far.map(|f| f.scaled(self.radial, radial)),
+            ..self.clone()
         }
     }
 
@@ -367,12 +435,15 @@ impl ViscousSection {
         // At a low Reynolds number the layer is thick: the first cell is
         // kept at most half a uniform grid's, so that the rings still
         // crowd to the wall (a cylinder at Re 100 on 320 rings).
-        let uniform = outer_radius.ln() / (self.radial.max(2) - 1) as f64;
+        // (With a far stretch, the near grid's rings crowd to the wall.)
+        let rings = self.far.map_or(self.radial, |f| f.near_radial);
+        let uniform = outer_radius.ln() / (rings.max(2) - 1) as f64;
         GridSpec {
             around: self.around,
             radial: self.radial,
             outer_radius,
             first_cell: first.min(0.05).min(0.5 * uniform),
+            far: self.far,
         }
     }
 }
@@ -576,10 +647,9 @@ impl ViscousSection {
         let fewer = |n: usize| ((n as f64 / SPIN_UP_COARSENING / 2.0).round() as usize * 2).max(16);
         Self {
             around: fewer(self.around),
-            radial: fewer(self.radial),
             first_cell_layers: SPIN_UP_COARSENING * self.first_cell_layers,
             spin_up_periods: 0.0,
-            ..self.clone()
+            ..self.with_radial(fewer(self.radial))
         }
     }
 

@@ -33,7 +33,10 @@ pub struct Aero2dArgs {
     #[arg(long)]
     pub ns_around: Option<usize>,
     /// Grid nodes from the wall to the outer boundary in the Navier–Stokes
-    /// model (8 to 8192; default 320).
+    /// model (default 256, the far field coarsened: the grid is refined or
+    /// coarsened as a whole, its near rings and far growth scaled with
+    /// these; 8 to 8192, and at most 1.5 growth a far cell: about 24 or
+    /// more).
     #[arg(long)]
     pub ns_radial: Option<usize>,
     /// Largest Courant number of a time step in the Navier–Stokes model
@@ -216,9 +219,12 @@ fn case(a: &Aero2dArgs) -> Result<Case> {
             let shape = SectionModel::named_viscous(&a.section, a.ns_thickness)
                 .with_context(|| format!("--section {}", a.section))?;
             let plate = ViscousSection::new(shape);
+            let plate = match a.ns_radial {
+                Some(radial) => plate.with_radial(radial),
+                None => plate,
+            };
             SectionModel::Viscous(ViscousSection {
                 around: a.ns_around.unwrap_or(plate.around),
-                radial: a.ns_radial.unwrap_or(plate.radial),
                 courant: a.ns_courant.unwrap_or(plate.courant),
                 ..plate
             })

@@ -58,20 +58,22 @@ const DEFAULT_STEPS: f64 = 240.0;
 const DEFAULT_MEMORY: f64 = 680e6;
 
 /// Wall time of one aerodynamic discipline run with the Navier–Stokes
-/// section model at the default resolution (384 × 320, Courant number 3),
-/// s, on the 2-core development machine: the first cycle's discipline of
-/// the default design with `section_model = "ns"` took 1,950 s
-/// (2026-12-05, `discipline_ns_scores::ns_discipline_benchmark`, the step
-/// as it is now); cycle 3's took 2,261 s on 2026-12-04, before the
-/// step's later speed-ups (docs/ns-design). Its 20 evaluations (the 18
-/// rows and two confirmations; the analysed design is a row, found in the
-/// cache) run two at a time, each on one core (README, "Speed"), about
-/// 195 s each, where the initial design's evaluation takes 99.3 s on two
-/// threads (`discipline_ns_scores::ns_deforming_evaluation_benchmark`,
-/// the same day): the array's rows, with their faster strokes, cost more
-/// than the initial design on average, so the discipline is measured
-/// rather than counted from one evaluation.
-pub const NS_DISCIPLINE_SECONDS: f64 = 1950.0;
+/// section model at the default resolution (384 × 256 with the far field
+/// coarsened, Courant number 3), s, on the 2-core development machine:
+/// the first cycle's discipline of the default design with
+/// `section_model = "ns"` took 1,507 s (2026-12-05,
+/// `discipline_ns_scores::ns_discipline_benchmark`, the machine otherwise
+/// idle); 1,950 s on the exponential 384 × 320, the default until that
+/// day, and cycle 3's 2,261 s on 2026-12-04, before the step's later
+/// speed-ups (docs/ns-design). Its 20 evaluations (the 18 rows and two
+/// confirmations; the analysed design is a row, found in the cache) run
+/// two at a time, each on one core (README, "Speed"), about 150 s each,
+/// where the initial design's evaluation takes 81.0 s on two threads
+/// (`discipline_ns_scores::ns_deforming_evaluation_benchmark`, the same
+/// day): the array's rows, with their faster strokes, cost more than the
+/// initial design on average, so the discipline is measured rather than
+/// counted from one evaluation.
+pub const NS_DISCIPLINE_SECONDS: f64 = 1507.0;
 
 /// The cycles each evaluation ran in [`NS_DISCIPLINE_SECONDS`]'s run
 /// (`[design] section_cycles` of the default design).
@@ -215,13 +217,14 @@ mod tests {
     }
 
     /// The Navier–Stokes section model's disciplines are in the built-in
-    /// design's estimate, which says what they cost. At 1,950 s each (the
-    /// default 384 × 320 grid), three of them, they make it about 14 times
+    /// design's estimate, which says what they cost. At 1,507 s each (the
+    /// default 384 × 256 grid), three of them, they make it about 11 times
     /// the LDVM run, beyond the [`FAR_TIME_RATIO`] at which `fwav design`
-    /// asks before it starts. (The default NS design run on 384 × 320 took
-    /// 9,845 s of stage time, 2 h 44 min, two of its three disciplines
-    /// partly shared, before the step's later speed-ups; the estimate is
-    /// 1 h 45 min. On 384 × 240 the run took 78.6 minutes, docs/ns-design.)
+    /// asks before it starts. (The default NS design run on the
+    /// exponential 384 × 320 took 9,845 s of stage time, 2 h 44 min, two of
+    /// its three disciplines partly shared, before the step's later
+    /// speed-ups and the far field's coarsening; the estimate is 1 h 23
+    /// min. On 384 × 240 the run took 78.6 minutes, docs/ns-design.)
     #[test]
     fn the_ns_section_model_is_in_the_estimate() {
         let mut ns = SystemConfig::default();

@@ -156,10 +156,10 @@ pub const DESIGN: Table<DesignConfig> = Table {
                   \"ns\": laminar Navier-Stokes of a thin plate (ns_thickness) with its \
                   friction and separation, the plate's mid-line deforming as the system \
                   analysis found (on a moving grid); lesp_critical does not apply. Cost: \
-                  about 68 s for one 4-cycle evaluation of the default section on two \
-                  cores when rigid, 99 s deforming as the default design's first system \
-                  analysis found (384 x 320 nodes), about 33 minutes for a discipline run \
-                  (measured alone on the default design)",
+                  about 56 s for one 4-cycle evaluation of the default section on two \
+                  cores when rigid, 81 s deforming as the default design's first system \
+                  analysis found (384 x 256 nodes, the far field coarsened), about 25 \
+                  minutes for a discipline run (measured alone on the default design)",
             value: |d| Value::Choice(d.section_model.word()),
         },
         Setting {
@@ -182,7 +182,7 @@ pub const DESIGN: Table<DesignConfig> = Table {
                   then: over cycles 3 and 4 (4, the default) its scores scatter by 3.95 % (CT) \
                   and 3.5 % (efficiency) with any change of what led up to them, which the \
                   discipline's adoption margin carries; over cycles 3 to 12 (12) by 2.4 % and \
-                  1.9 %, at three times the time (about 1.6 hours a discipline run)",
+                  1.9 %, at three times the time (about 1.3 hours a discipline run)",
             value: |d| Value::unsigned(d.section_cycles),
         },
     ],

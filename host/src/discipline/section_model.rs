@@ -14,14 +14,16 @@
 //!   moves with it ([`ViscousSection::run_deforming`]); the reports say
 //!   what was modelled ([`ModelledSection`]). Cost: the default
 //!   section's 4 cycles at the default resolution on the 2-core
-//!   development machine, 67.5 s rigid (384 × 320 cells, Courant
-//!   number 3, [`ViscousSection::run`]) and 99.3 s deforming as the
-//!   built-in design's first system analysis found (2026-12-05; the
-//!   README's "Speed" gives each step of the way, and why the former
-//!   estimate of about 59 s "in a normal hour" was withdrawn): some
-//!   120 to 180 times the LDVM's 0.56 s for the same 4 cycles (timed
-//!   the same day).
+//!   development machine, 55.7 s rigid (384 × 256 cells, the far field
+//!   coarsened, Courant number 3, [`ViscousSection::run`]) and 81.0 s
+//!   deforming as the built-in design's first system analysis found
+//!   (2026-12-05; 67.5 s and 99.3 s on the exponential 384 × 320 the
+//!   same day; the README's "Speed" gives each step of the way, and why
+//!   the former estimate of about 59 s "in a normal hour" was
+//!   withdrawn): some 100 to 145 times the LDVM's 0.56 s for the same 4
+//!   cycles (timed the same day).
 
+use fwav_ns2d::FarStretch;
 use serde::{Deserialize, Serialize};
 
 use crate::aero2d::viscous::{ViscousSection, ViscousShape};
@@ -133,7 +135,12 @@ impl SectionFlowModel {
 /// as far from Courant 3's (Courant 3's CT −9.9 %, −4.3 %, −9.8 %,
 /// −0.6 % from Courant 1.5's for rows 4, 14, 18 and the initial design,
 /// row 2): the window's scores do not converge with the step; they
-/// scatter.
+/// scatter. A change of the grid moves them as a change of the step
+/// does: the far field coarsened (384 × 256, 2026-12-05) moved the rows'
+/// CT by 7.16 % RMS and their efficiency by 5.84 % (mean +1.3 % and
+/// +0.7 %), which would make one evaluation's scatter 5.1 % and 4.1 %;
+/// the declared figures are the step's, the controlled measurement (the
+/// grid's coarsening may also move the rows' flows a little).
 ///
 /// From window to window of one 12-stroke run (strokes 3 to 12 as five
 /// windows of two; `discipline_ns_scores::ns_deforming_window_scatter_benchmark`,
@@ -205,6 +212,11 @@ pub struct ViscousPlate {
     pub around: usize,
     /// Grid nodes from the wall to the outer boundary.
     pub radial: usize,
+    /// The far field coarsened ([`ViscousSection::far`]); files without
+    /// the key were written by evaluations on the exponential grid
+    /// (none).
+    #[serde(default)]
+    pub far: Option<FarStretch>,
     /// Outer boundary, chords from mid-chord.
     pub outer_chords: f64,
     /// First cell at mid-chord, in boundary-layer thicknesses
@@ -233,13 +245,15 @@ fn default_courant() -> f64 {
 
 impl ViscousPlate {
     /// A plate `thickness` chords thick at [`ViscousSection::plate`]'s
-    /// default resolution (384 × 320 nodes out to 30 chords).
+    /// default resolution (384 × 256 nodes out to 30 chords, the far
+    /// field coarsened).
     pub fn new(thickness: f64) -> Self {
         let s = ViscousSection::plate(thickness);
         Self {
             thickness,
             around: s.around,
             radial: s.radial,
+            far: s.far,
             outer_chords: s.outer_chords,
             first_cell_layers: s.first_cell_layers,
             courant: s.courant,
@@ -267,6 +281,7 @@ impl ViscousPlate {
             shape: ViscousShape::Plate(self.thickness),
             around: self.around,
             radial: self.radial,
+            far: self.far,
             outer_chords: self.outer_chords,
             first_cell_layers: self.first_cell_layers,
             courant: self.courant,

@@ -314,8 +314,8 @@ pub fn case1_run(section: &ViscousSection) -> Result<ViscousRun, ValidationError
 /// The chord Reynolds number of the LDVM paper's case 1.
 pub const CASE1_REYNOLDS: f64 = 30_000.0;
 
-/// [`case1_run`] at the viscous model's default resolution (384 x 320,
-/// Courant 3), run once per process (the case-1 cases share it).
+/// [`case1_run`] at the viscous model's default resolution (384 x 256,
+/// the far field coarsened, Courant 3), run once per process (the case-1 cases share it).
 fn case1_default() -> Result<Arc<ViscousRun>, ValidationError> {
     static RUN: Memo<Arc<ViscousRun>> = Memo::new();
     shared(&RUN, || {
@@ -363,7 +363,7 @@ fn case1_mean_lift() -> Validation {
         spec: case1_spec(
             "ns2d/ldvm-case1-mean-lift",
             "mean CL over U t / c = 2..4, SD7003 pitch ramp 0-25 deg about the leading edge, \
-             Re 30,000, 384 x 320, Courant 3",
+             Re 30,000, 384 x 256 (far field coarsened), Courant 3",
         ),
         reference: || {
             let (t, cl) = case1_cfd_lift();
@@ -386,7 +386,7 @@ fn case1_peak_lift() -> Validation {
         spec: case1_spec(
             "ns2d/ldvm-case1-peak-lift",
             "peak CL to U t / c = 4.1, SD7003 pitch ramp 0-25 deg about the leading edge, \
-             Re 30,000, 384 x 320, Courant 3",
+             Re 30,000, 384 x 256 (far field coarsened), Courant 3",
         ),
         reference: || largest(&case1_cfd_lift().1),
         compute: || Ok(largest(&case1_default()?.history.cl).into()),

@@ -15,14 +15,15 @@ use fwav::discipline::section_model::{
     SectionFlowModel, SectionModelName, ViscousPlate, NS_LONG_MEAN_SCATTER, NS_WINDOW_SCATTER,
 };
 
-/// A 12 % plate on 64 × 64 nodes out to 15 chords, first cell a fifth of
-/// the boundary layer: coarse, for a test of seconds (the default is
-/// 384 × 160 out to 30 chords).
+/// A 12 % plate on 48 × 48 nodes out to 15 chords (exponential
+/// stretching), first cell a fifth of the boundary layer: coarse, for a
+/// test of seconds (the default is 384 × 256 out to 30 chords).
 fn coarse_plate() -> ViscousPlate {
     ViscousPlate {
         thickness: 0.12,
         around: 48,
         radial: 48,
+        far: None,
         outer_chords: 15.0,
         first_cell_layers: 0.2,
         courant: fwav::aero2d::viscous::ViscousSection::DEFAULT_COURANT,
@@ -61,7 +62,11 @@ fn section_model_setting_chooses_the_model() {
     };
     assert_eq!(
         (plate.thickness, plate.around, plate.radial, plate.spin_up),
-        (0.1, 384, 320, false)
+        (0.1, 384, 256, false)
+    );
+    assert_eq!(
+        plate.far,
+        Some(fwav::aero2d::viscous::ViscousSection::DEFAULT_FAR)
     );
     assert_eq!(plate.section().spin_up_periods, 0.0);
     let spun = ViscousPlate {
@@ -184,6 +189,19 @@ fn evaluation_cache_keeps_the_models_apart() {
     let read: SectionCase = serde_json::from_value(serde_json::to_value(&ns).unwrap()).unwrap();
     assert_eq!(read, ns);
     assert_ne!(key(&ldvm, &design), key(&ns, &design));
+
+    // The grid's stretching is part of the key: the exponential grid of
+    // the same rings (the default until 2026-12-05 on 320) is another
+    // grid; a plate written without the key was on the exponential one.
+    let exponential = ViscousPlate {
+        far: None,
+        ..ViscousPlate::new(0.04)
+    };
+    assert_eq!(cache.get(&ns_case(exponential), &design), None);
+    let mut written = serde_json::to_value(exponential).unwrap();
+    written.as_object_mut().unwrap().remove("far");
+    let read: ViscousPlate = serde_json::from_value(written).unwrap();
+    assert_eq!(read, exponential);
 }
 
 /// One Navier–Stokes evaluation of the FWAV's mid-span section flapping

@@ -230,9 +230,9 @@ pub(super) struct RateRows<'a> {
     pub(super) dt: f64,
     /// The diffusion's implicit weight ([`super::Flow::step`]).
     pub(super) diffusion_weight: f64,
-    /// The radial stretching's `g'` at each ring and `g''/g'`.
+    /// The radial stretching's `g'` and `g''/g'` at each ring.
     pub(super) slope: &'a [f64],
-    pub(super) curvature: f64,
+    pub(super) curvature: &'a [f64],
     /// The vorticity at the step's start, at all nodes.
     pub(super) w: &'a [f64],
     /// The streamfunction and the rigid motion's at the step's start
@@ -475,7 +475,7 @@ impl RateRows<'_> {
         let inv_dt2 = 1.0 / (self.d_theta * self.d_theta);
         // ∂ηη - β ∂η by central differences.
         let h2 = 1.0 / (self.d_eta * self.d_eta);
-        let half = self.curvature / (2.0 * self.d_eta);
+        let half = self.curvature[j] / (2.0 * self.d_eta);
         let radial_factor = self.viscosity / (self.slope[j] * self.slope[j]);
         let theta_d = self.diffusion_weight;
         for k in 0..nt {
@@ -542,7 +542,7 @@ impl<M: Motion> Flow<M> {
             dt,
             diffusion_weight: self.diffusion_weight,
             slope: &g.slope,
-            curvature: g.curvature,
+            curvature: &g.curvature,
             w: &self.omega,
             psi: &self.psi,
             frame_psi: &self.frame_psi,

@@ -675,6 +675,7 @@ fn ellipse_flow(
         radial,
         outer_radius: 20.0,
         first_cell: 0.01,
+        far: None,
     };
     let stream = crate::motion::SteadyStream {
         speed: 1.0,

@@ -156,6 +156,7 @@ mod tests {
             radial: 192,
             outer_radius: 10.0,
             first_cell: 0.01,
+            far: None,
         };
         let mut flow = Flow::new(&map, spec, Turning(rate), 1e-3).unwrap();
         let circulation = rate * radius * radius;

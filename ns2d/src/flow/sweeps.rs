@@ -97,8 +97,6 @@ impl<M: Motion> Flow<M> {
         let g = &self.grid;
         let (nt, nr) = (g.nt, g.nr);
         let h2 = 1.0 / (g.d_eta * g.d_eta);
-        let half = g.curvature / (2.0 * g.d_eta);
-        let (a, c) = (h2 + half, h2 - half);
         let (speed, radial_old, widths) = (&self.radial_speed, &self.radial_old, &self.widths);
         let weight = self.diffusion_weight * dt * self.viscosity;
         let lines = line_blocks(
@@ -115,6 +113,8 @@ impl<M: Motion> Flow<M> {
                 let zeros = vec![0.0; width];
                 let new_wall = &new_wall[k0..k0 + width];
                 for j in 1..nr - 1 {
+                    let half = g.curvature[j] / (2.0 * g.d_eta);
+                    let (a, c) = (h2 + half, h2 - half);
                     let factor = weight / (g.slope[j] * g.slope[j]);
                     let inv_width = dt / (widths[j] * g.d_theta);
                     // The ring's slices of the block (no index arithmetic
