@@ -179,8 +179,8 @@ pub const DESIGN: Table<DesignConfig> = Table {
                   efficiency) are the means over all cycles after the first two, the start's \
                   transient. The LDVM's flow repeats from the third, so more cycles only cost \
                   time. The Navier-Stokes flow round the deforming plate has not settled by \
-                  then: over cycles 3 and 4 (4, the default) its scores scatter by 3.95 % (CT) \
-                  and 3.5 % (efficiency) with any change of what led up to them, which the \
+                  then: over cycles 3 and 4 (4, the default) its scores scatter by 5.3 % (CT) \
+                  and 4.5 % (efficiency) with any change of what led up to them, which the \
                   discipline's adoption margin carries; over cycles 3 to 12 (12) by 2.4 % and \
                   1.9 %, at three times the time (about 1.3 hours a discipline run)",
             value: |d| Value::unsigned(d.section_cycles),

@@ -133,8 +133,12 @@ fn default_section_four_cycles_benchmark() {
 /// The first stroke's thrust of the default FWAV section converges with
 /// the wall's first cell (issue 23's 3 %): halved from the default 0.1
 /// boundary-layer thicknesses (`c / sqrt(Re)`, at mid-chord) to 0.05, at
-/// the default resolution (384 x 320, Courant 3): CT 0.0779 -> 0.0770
-/// (-1.1 %), CP 1.7070 -> 1.7021 (-0.3 %), 95 s in a slow hour. On 384 x 240
+/// the default resolution (384 x 256 with the far field coarsened,
+/// Courant 3; 2026-12-05): CT 0.0779 -> 0.0771 (-1.1 %), CP 1.7855 ->
+/// 1.7801 (-0.3 %), 34 s. On the exponential 384 x 320, the default
+/// before: CT 0.0779 -> 0.0770 (-1.1 %), CP 1.7070 -> 1.7021 (-0.3 %;
+/// the input power counted the flight's work then), 95 s in a slow
+/// hour. On 384 x 240
 /// (the default before), with the step's velocity centred: CT 0.0758 ->
 /// 0.0750 (-1.1 %), CP 1.7118 -> 1.7057 (-0.4 %), 18 s. Before (the step start's velocity,
 /// Courant 1.5), with the wall pressure's vorticity flux compact (the
@@ -152,7 +156,7 @@ fn default_section_four_cycles_benchmark() {
 /// layer's curvature from rings 1 and 2, where the layer is not yet
 /// parabolic (README, "The wall's first cell").
 #[test]
-#[ignore = "heavy (about 20 s in release): `cargo test --release -p fwav --test integration -- \
+#[ignore = "heavy (about 35 s in release: 34 s on 2026-12-05): `cargo test --release -p fwav --test integration -- \
             --ignored --nocapture wall_cell`"]
 fn default_section_thrust_converges_with_the_wall_cell() {
     let first_stroke = |first_cell_layers| {
@@ -218,14 +222,17 @@ fn relative_deviation(values: &[f64]) -> f64 {
 /// the rigid section's flow repeats from the fourth stroke, so both must
 /// lie well below the declared scatter, which is how far the deforming
 /// section's L18 rows move with the step (`discipline_ns_scores::ns_discipline_benchmark`):
-/// below half of it. Measured on 384 x 320 (2026-12-03, the
+/// below half of it. Measured on the default 384 x 256 with the far field
+/// coarsened (2026-12-05): windows CT 0.0710, 0.0712, 0.0714, 0.0714,
+/// 0.0714, relative deviation CT 0.24 %, efficiency 0.12 %, 172 s.
+/// Measured on the exponential 384 x 320 (2026-12-03, the
 /// `default_section_four_cycles_benchmark` run with `FWAV_NS_CYCLES=12`,
 /// from its stroke means): CT 0.20 %, efficiency 0.32 %, 293 s in a slow
 /// hour. On 384 x 240, the default before, whose flow never settled:
 /// CT 3.92 %, efficiency 0.79 % (211 s in a slow hour), and the declared
 /// thrust scatter was this section's.
 #[test]
-#[ignore = "benchmark (about 2 min; 5 min in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture viscous_default_section::ns_evaluation_window_scatter_benchmark`"]
+#[ignore = "benchmark (about 3 min: 172 s on 2026-12-05; 5 min in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture viscous_default_section::ns_evaluation_window_scatter_benchmark`"]
 fn ns_evaluation_window_scatter_benchmark() {
     use fwav::discipline::section_model::NS_WINDOW_SCATTER;
     let section = ViscousSection::plate(0.04);
