@@ -116,7 +116,7 @@ impl FarStretch {
     pub fn scaled(&self, from: usize, radial: usize) -> Self {
         let r = (radial.max(2) - 1) as f64 / (from.max(2) - 1) as f64;
         Self {
-            near_radial: ((self.near_radial - 1) as f64 * r).round() as usize + 1,
+            near_radial: (self.near_radial.saturating_sub(1) as f64 * r).round() as usize + 1,
             growth: self.growth.powf(1.0 / r),
         }
     }
@@ -290,13 +290,22 @@ impl RingSpacing {
     /// cell `first_cell`: exponential, or tailed as `far` says.
     ///
     /// # Errors
-    /// Those of [`RadialStretch::new`] and [`TailedStretch::new`].
+    /// [`NsError::BadGrid`] for fewer than 3 rings; those of
+    /// [`RadialStretch::new`] and [`TailedStretch::new`].
     pub fn new(
         xi_max: f64,
         first_cell: f64,
         radial: usize,
         far: Option<FarStretch>,
     ) -> Result<Self, NsError> {
+        if radial < 3 {
+            return Err(NsError::BadGrid {
+                what: "radial",
+                value: radial as f64,
+                min: 3.0,
+                max: 8192.0,
+            });
+        }
         let cells = radial - 1;
         let d_eta = 1.0 / cells as f64;
         let eta = |j: usize| j as f64 * d_eta;
@@ -381,6 +390,31 @@ mod tests {
             let d = (tailed.slope[j + 1].ln() - tailed.slope[j - 1].ln()) * 255.0 / 2.0;
             assert!((d - tailed.curvature[j]).abs() < 0.05 * tailed.curvature[j].abs().max(1.0));
         }
+    }
+
+    /// Refined from 256 rings to 320 the default far stretch keeps the
+    /// rings of 400 near the wall and grows `1.045^(255/319)` a far ring;
+    /// coarsened back it is the same; a corrupt one (no rings) scales
+    /// without a panic and is refused where the grid is built.
+    #[test]
+    fn a_far_stretch_scales_with_the_rings() {
+        let far = FarStretch {
+            near_radial: 320,
+            growth: 1.045,
+        };
+        let fine = far.scaled(256, 320);
+        assert_eq!(fine.near_radial, 400);
+        assert!((fine.growth - 1.045f64.powf(255.0 / 319.0)).abs() < 1e-12);
+        let back = fine.scaled(320, 256);
+        assert_eq!(back.near_radial, 320);
+        assert!((back.growth - 1.045).abs() < 1e-12);
+        let corrupt = FarStretch {
+            near_radial: 0,
+            growth: 1.0,
+        }
+        .scaled(256, 128);
+        assert!(RingSpacing::new(4.1, 1.6e-3, 128, Some(corrupt)).is_err());
+        assert!(RingSpacing::new(4.1, 1.6e-3, 2, None).is_err());
     }
 
     #[test]

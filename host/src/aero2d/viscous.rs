@@ -435,7 +435,8 @@ impl ViscousSection {
         // At a low Reynolds number the layer is thick: the first cell is
         // kept at most half a uniform grid's, so that the rings still
         // crowd to the wall (a cylinder at Re 100 on 320 rings).
-        // (With a far stretch, the near grid's rings crowd to the wall.)
+        // With a far stretch the wall's rings are the near grid's, so its
+        // uniform cell is the one to stay below.
         let rings = self.far.map_or(self.radial, |f| f.near_radial);
         let uniform = outer_radius.ln() / (rings.max(2) - 1) as f64;
         GridSpec {
