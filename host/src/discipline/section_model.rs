@@ -136,7 +136,8 @@ impl SectionFlowModel {
 /// change moved them by 5.59 % and 4.95 % (3.95 % and 3.50 % an
 /// evaluation, the declared figures until 2026-12-05); the estimate of an
 /// RMS over 18 rows is itself uncertain by about a sixth, and most of it
-/// comes from the few rows whose flows wander. The rows that moved most, at a step half the default's
+/// comes from the few rows whose flows wander. The rows that moved (on
+/// 384 × 320) most, at a step half the default's
 /// (Courant 1.5, `discipline_ns_scores::ns_window_time_step_benchmark`), were
 /// as far from Courant 3's (Courant 3's CT −9.9 %, −4.3 %, −9.8 %,
 /// −0.6 % from Courant 1.5's for rows 4, 14, 18 and the initial design,
