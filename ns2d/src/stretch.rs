@@ -135,8 +135,9 @@ const SIMPSON_INTERVALS: usize = 32;
 /// grid's exponential growth `s₁` (each cell `exp(s₁ Δη)` the one
 /// inside), turning smoothly at `η₂` to `s₁ + s₃` (each cell
 /// [`FarStretch::growth`] the one inside). `g'_0 Δη` is the near grid's
-/// first cell (so ring `j` is the near grid's ring `j`), and `η₂` is found by bisection so that
-/// `g(1) = ξ_max`. `g''/g' = s₁ + s₃ σ(k (η - η₂))`.
+/// first cell (so ring `j` is the near grid's ring `j` but for the
+/// turn's onset), and `η₂` is found by bisection so that `g(1) = ξ_max`.
+/// `g''/g' = s₁ + s₃ σ(k (η - η₂))`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TailedStretch {
     ln_first_slope: f64,
