@@ -123,6 +123,17 @@ impl OGrid {
         })
     }
 
+    /// Ring `j`'s radial operator `∂ηη - (g''/g') ∂η` by central
+    /// differences: the coefficients of the values at rings `j - 1` and
+    /// `j + 1` (that of ring `j` is `-2/Δη²`). The one place the advection
+    /// rates, the radial sweep and the streamfunction solve take them from.
+    #[must_use]
+    pub fn radial_neighbours(&self, j: usize) -> (f64, f64) {
+        let h2 = 1.0 / (self.d_eta * self.d_eta);
+        let half = self.curvature[j] / (2.0 * self.d_eta);
+        (h2 + half, h2 - half)
+    }
+
     /// Index of node `(j, k)`: radial `j`, around `k`.
     #[must_use]
     pub fn at(&self, j: usize, k: usize) -> usize {

@@ -140,11 +140,10 @@ impl StreamSolver {
         let forward = planner.plan_fft_forward(nt);
         let inverse = planner.plan_fft_inverse(nt);
         let h2 = 1.0 / (grid.d_eta * grid.d_eta);
-        // Row j's coefficients of ψ_{j-1} and ψ_{j+1}: ∂ηη - (g''/g') ∂η.
-        let half = |j: usize| grid.curvature[j] / (2.0 * grid.d_eta);
-        let a_at = |j: usize| h2 + half(j);
-        let c_at = |j: usize| h2 - half(j);
-        let (a, c) = (a_at(1), c_at(1));
+        // Row j's coefficients of ψ_{j-1} and ψ_{j+1}.
+        let a_at = |j: usize| grid.radial_neighbours(j).0;
+        let c_at = |j: usize| grid.radial_neighbours(j).1;
+        let (a, c) = grid.radial_neighbours(1);
         let slope2: Vec<f64> = grid.slope.iter().map(|s| s * s).collect();
         let mut factors = Vec::with_capacity(modes);
         for m in 0..modes {

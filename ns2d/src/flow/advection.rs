@@ -19,6 +19,7 @@
 //! outer face.
 
 use super::Flow;
+use crate::grid::OGrid;
 use crate::motion::Motion;
 use rayon::prelude::*;
 
@@ -230,9 +231,8 @@ pub(super) struct RateRows<'a> {
     pub(super) dt: f64,
     /// The diffusion's implicit weight ([`super::Flow::step`]).
     pub(super) diffusion_weight: f64,
-    /// The radial stretching's `g'` and `g''/g'` at each ring.
-    pub(super) slope: &'a [f64],
-    pub(super) curvature: &'a [f64],
+    /// The grid (its stretching's `g'` and radial operator at each ring).
+    pub(super) grid: &'a OGrid,
     /// The vorticity at the step's start, at all nodes.
     pub(super) w: &'a [f64],
     /// The streamfunction and the rigid motion's at the step's start
@@ -475,8 +475,8 @@ impl RateRows<'_> {
         let inv_dt2 = 1.0 / (self.d_theta * self.d_theta);
         // ∂ηη - β ∂η by central differences.
         let h2 = 1.0 / (self.d_eta * self.d_eta);
-        let half = self.curvature[j] / (2.0 * self.d_eta);
-        let radial_factor = self.viscosity / (self.slope[j] * self.slope[j]);
+        let (lower, upper) = self.grid.radial_neighbours(j);
+        let radial_factor = self.viscosity / (self.grid.slope[j] * self.grid.slope[j]);
         let theta_d = self.diffusion_weight;
         for k in 0..nt {
             // The cell's inverse area.
@@ -490,7 +490,7 @@ impl RateRows<'_> {
                 * inv_dt2;
             let radial_diffusion = radial_factor
                 * inv_jac[k]
-                * ((h2 + half) * w_below[k] - 2.0 * h2 * w0[k] + (h2 - half) * w_above[k]);
+                * (lower * w_below[k] - 2.0 * h2 * w0[k] + upper * w_above[k]);
             let radial_all = above.first[k] - below.first[k];
             let radial_implicit =
                 above.weight[k] * above.first[k] - below.weight[k] * below.first[k];
@@ -541,8 +541,7 @@ impl<M: Motion> Flow<M> {
             viscosity: self.viscosity,
             dt,
             diffusion_weight: self.diffusion_weight,
-            slope: &g.slope,
-            curvature: &g.curvature,
+            grid: g,
             w: &self.omega,
             psi: &self.psi,
             frame_psi: &self.frame_psi,

@@ -113,8 +113,7 @@ impl<M: Motion> Flow<M> {
                 let zeros = vec![0.0; width];
                 let new_wall = &new_wall[k0..k0 + width];
                 for j in 1..nr - 1 {
-                    let half = g.curvature[j] / (2.0 * g.d_eta);
-                    let (a, c) = (h2 + half, h2 - half);
+                    let (a, c) = g.radial_neighbours(j);
                     let factor = weight / (g.slope[j] * g.slope[j]);
                     let inv_width = dt / (widths[j] * g.d_theta);
                     // The ring's slices of the block (no index arithmetic
