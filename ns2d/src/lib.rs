@@ -113,4 +113,4 @@ pub use realfft::num_complex::Complex64;
 pub use reference_curve::{interpolate, ReferenceCurve};
 pub use section_map::SectionMap;
 pub use stream::StreamSolver;
-pub use stretch::{FarStretch, RadialStretch, RingSpacing, TailedStretch};
+pub use stretch::{FarStretch, RadialStretch, RingSpacing, TailedStretch, MAX_FAR_GROWTH};

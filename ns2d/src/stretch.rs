@@ -103,9 +103,14 @@ pub struct FarStretch {
     /// whose rings are kept near the wall: more than the grid's own.
     pub near_radial: usize,
     /// Each far cell over the one inside it (more than the near grid's
-    /// growth; at most 1.5).
+    /// growth; at most [`MAX_FAR_GROWTH`]).
     pub growth: f64,
 }
+
+/// The most a far cell may grow on the one inside it
+/// ([`FarStretch::growth`]): past it the far rings are too coarse to
+/// carry the wake out.
+pub const MAX_FAR_GROWTH: f64 = 1.5;
 
 impl FarStretch {
     /// The same stretching on `radial` rings where this one has `from`
@@ -119,6 +124,17 @@ impl FarStretch {
             near_radial: (self.near_radial.saturating_sub(1) as f64 * r).round() as usize + 1,
             growth: self.growth.powf(1.0 / r),
         }
+    }
+
+    /// The fewest rings to which a grid of `radial` rings with this
+    /// stretching can be coarsened as a whole ([`Self::scaled`]) with its
+    /// far cells growing by at most [`MAX_FAR_GROWTH`]:
+    /// `growth^((radial - 1)/(m - 1)) ≤ MAX_FAR_GROWTH` (29 for the
+    /// host's default of 256 rings growing by 1.045).
+    pub fn fewest_rings(&self, radial: usize) -> usize {
+        let cells = (radial.max(2) - 1) as f64 * self.growth.ln() / MAX_FAR_GROWTH.ln();
+        // ceil, less a rounding's worth, so that an exact fit is kept.
+        (cells - 1e-9).ceil().max(1.0) as usize + 1
     }
 }
 
@@ -155,7 +171,7 @@ impl TailedStretch {
     /// [`NsError::NoStretching`] when the first cell is not finer than
     /// the near grid's uniform one; [`NsError::BadGrid`] when the near
     /// grid has no more rings than this one, or the far growth is not
-    /// above the near one (or above 1.5); [`NsError::NoTail`] when these
+    /// above the near one (or above [`MAX_FAR_GROWTH`]); [`NsError::NoTail`] when these
     /// rings cannot reach the outer boundary at that growth.
     pub fn new(
         xi_max: f64,
@@ -174,12 +190,12 @@ impl TailedStretch {
         }
         let near = RadialStretch::new(xi_max, first_cell, near_cells)?;
         let near_growth = near.growth(near_cells);
-        if !(far.growth > near_growth && far.growth <= 1.5) {
+        if !(far.growth > near_growth && far.growth <= MAX_FAR_GROWTH) {
             return Err(NsError::BadGrid {
                 what: "far stretch's growth",
                 value: far.growth,
                 min: near_growth,
-                max: 1.5,
+                max: MAX_FAR_GROWTH,
             });
         }
         let n = cells as f64;
@@ -416,6 +432,29 @@ mod tests {
         .scaled(256, 128);
         assert!(RingSpacing::new(4.1, 1.6e-3, 128, Some(corrupt)).is_err());
         assert!(RingSpacing::new(4.1, 1.6e-3, 2, None).is_err());
+    }
+
+    /// The host's default (256 rings, the near grid's 320, growing by
+    /// 1.045) coarsens as a whole to 29 rings and no fewer:
+    /// `1.045^(255/28) = 1.493`, `1.045^(255/27) = 1.516`.
+    #[test]
+    fn the_fewest_rings_keep_the_far_growth() {
+        let far = FarStretch {
+            near_radial: 320,
+            growth: 1.045,
+        };
+        let fewest = far.fewest_rings(256);
+        assert_eq!(fewest, 29);
+        assert!(far.scaled(256, fewest).growth <= MAX_FAR_GROWTH);
+        assert!(far.scaled(256, fewest - 1).growth > MAX_FAR_GROWTH);
+        assert!(RingSpacing::new(4.1, 1.6e-3, fewest, Some(far.scaled(256, fewest))).is_ok());
+        assert!(matches!(
+            RingSpacing::new(4.1, 1.6e-3, fewest - 1, Some(far.scaled(256, fewest - 1))),
+            Err(NsError::BadGrid { .. })
+        ));
+        // The count does not depend on the grid it is scaled from.
+        let fine = far.scaled(256, 320);
+        assert_eq!(fine.fewest_rings(320), 29);
     }
 
     #[test]

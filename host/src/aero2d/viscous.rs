@@ -58,7 +58,10 @@
 //! discipline does not spin up
 //! ([`crate::discipline::section_model::ViscousPlate::spin_up`]).
 
-use fwav_ns2d::{Complex64, Contour, Deformation, FarStretch, Flow, GridSpec, NsError, SectionMap};
+use fwav_ns2d::{
+    Complex64, Contour, Deformation, FarStretch, Flow, GridSpec, NsError, SectionMap,
+    MAX_FAR_GROWTH,
+};
 
 mod march;
 mod path;
@@ -492,6 +495,22 @@ pub enum ViscousError {
         /// The run's length in periods (0 without a period).
         run: f64,
     },
+    /// A grid coarsened as a whole ([`ViscousSection::with_radial`]) so
+    /// far that its far cells grow by more than [`MAX_FAR_GROWTH`].
+    #[error(
+        "{radial} grid nodes from the wall out make the far field's cells grow by {growth:.3} a \
+         ring, more than {max}: give at least {fewest} (--ns-radial)"
+    )]
+    FarTooCoarse {
+        /// The grid's rings.
+        radial: usize,
+        /// Its far cells' growth.
+        growth: f64,
+        /// The most allowed ([`MAX_FAR_GROWTH`]).
+        max: f64,
+        /// The fewest rings that keep it ([`FarStretch::fewest_rings`]).
+        fewest: usize,
+    },
     /// The stable time step keeps falling: the run would take too long.
     #[error(
         "the stable time step fell to {dt:.2e} chords travelled at t = {time:.3} \
@@ -577,13 +596,14 @@ impl ViscousSection {
     /// without a period); the first [`Self::spin_up_periods`] on a grid
     /// [`SPIN_UP_COARSENING`] times coarser each way ([`Self::spin_up_grid`]).
     ///
-    /// Cost: measured 15 to 23 ns per cell per step (wall time, both
-    /// cores of this 2-core machine, whose speed varies) on the default
-    /// FWAV section, 384 × 240 cells (the default until it moved to 320
-    /// rings); the number of steps is set by the
-    /// Courant number in the small cells at a thin section's ends as the
-    /// stroke goes: 20,905 for that section's 4 cycles at Courant number
-    /// 3, 31.9 s (see [`ViscousError::TooManySteps`]).
+    /// Cost: 25.8 ns per cell per step (wall time, both cores of this
+    /// 2-core machine, whose speed varies by up to half from hour to
+    /// hour; 2026-12-05) on the default FWAV section at the default
+    /// 384 × 256 nodes; the number of steps is set by the Courant number
+    /// in the small cells at a thin section's ends as the stroke goes:
+    /// 22,960 for that section's 4 cycles at Courant number 3, 58.2 s
+    /// (`viscous_default_section::default_section_four_cycles_benchmark`;
+    /// see [`ViscousError::TooManySteps`]).
     ///
     /// # Errors
     /// [`ViscousError`]: a bad thickness, the solver's, a time step that
@@ -610,10 +630,10 @@ impl ViscousSection {
     /// the thickness at each end (so that a flat sample is the rigid
     /// plate); for a contour or an ellipse, whole contours. The grid moves
     /// to each step's map ([`Flow::deforming`]). Cost: the rigid run's
-    /// and the grid's motion, three inverse FFTs a ring a step: 48.5 s
-    /// for the default section deforming as the built-in design's first
-    /// system analysis found, 25.9 s rigid
-    /// (`discipline_ns_scores::ns_deforming_evaluation_benchmark`).
+    /// and the grid's motion, three inverse FFTs a ring a step: 81.0 s
+    /// for the default section's 4 cycles deforming as the built-in
+    /// design's first system analysis found, 55.7 s rigid (384 × 256,
+    /// 2026-12-05; `discipline_ns_scores::ns_deforming_evaluation_benchmark`).
     ///
     /// # Errors
     /// As [`Self::run`]; [`ViscousError::DeformingWithoutPeriod`] for a
@@ -664,11 +684,14 @@ impl ViscousSection {
         reynolds: f64,
         duration: f64,
     ) -> Result<ViscousRun, ViscousError> {
+        self.far_growth_kept()?;
         let mut march = March::new(path, duration, self.courant);
         let spin_up = self.spin_up_time(&path, duration)?;
         let mut flow = match spin_up {
             Some(until) => {
-                let mut coarse = build(&self.spin_up_grid())?;
+                let coarse_section = self.spin_up_grid();
+                coarse_section.far_growth_kept()?;
+                let mut coarse = build(&coarse_section)?;
                 march.to(&mut coarse, until)?;
                 march.spin_up_steps = march.steps;
                 let mut fine = build(self)?;
@@ -690,6 +713,24 @@ impl ViscousSection {
             body,
             surface,
         })
+    }
+
+    /// Checks that the far cells grow by at most [`MAX_FAR_GROWTH`].
+    ///
+    /// # Errors
+    /// [`ViscousError::FarTooCoarse`] when the far cells grow by more
+    /// than [`MAX_FAR_GROWTH`] (the grid coarsened too far as a whole),
+    /// naming the fewest rings that would do.
+    fn far_growth_kept(&self) -> Result<(), ViscousError> {
+        match self.far {
+            Some(far) if far.growth > MAX_FAR_GROWTH => Err(ViscousError::FarTooCoarse {
+                radial: self.radial,
+                growth: far.growth,
+                max: MAX_FAR_GROWTH,
+                fewest: far.fewest_rings(self.radial),
+            }),
+            _ => Ok(()),
+        }
     }
 
     /// When the spin-up ends (chords travelled), if the section has one.

@@ -35,7 +35,7 @@ pub struct Aero2dArgs {
     /// Grid nodes from the wall to the outer boundary in the Navier–Stokes
     /// model (default 256, the far field coarsened: the grid is refined or
     /// coarsened as a whole, its near rings and far growth scaled with
-    /// these; 8 to 8192, and at most 1.5 growth a far cell: about 24 or
+    /// these; 8 to 8192, and at most 1.5 growth a far cell: 29 or
     /// more).
     #[arg(long)]
     pub ns_radial: Option<usize>,

@@ -477,6 +477,8 @@ fn aero2d_runs_the_viscous_model() {
         ),
         (&["--lesp-critical", "0.2"][..], "--lesp-critical"),
         (&["--ns-thickness", "0.001"][..], "0.005 to 0.3"),
+        // The far cells would grow by 1.045^(255/27) = 1.516 a ring.
+        (&["--ns-radial", "28"][..], "give at least 29 (--ns-radial)"),
     ] {
         let mut argv = vec!["aero2d", "--model", "ns", "--ns-around", "64"];
         argv.extend_from_slice(bad);
