@@ -496,7 +496,8 @@ pub enum ViscousError {
         run: f64,
     },
     /// A grid coarsened as a whole ([`ViscousSection::with_radial`]) so
-    /// far that its far cells grow by more than [`MAX_FAR_GROWTH`].
+    /// far that its far cells, or its spin-up grid's, grow by more than
+    /// [`MAX_FAR_GROWTH`].
     #[error(
         "{radial} grid nodes from the wall out make the far field's cells grow by {growth:.3} a \
          ring, more than {max}: give at least {fewest} (--ns-radial)"
@@ -504,11 +505,12 @@ pub enum ViscousError {
     FarTooCoarse {
         /// The grid's rings.
         radial: usize,
-        /// Its far cells' growth.
+        /// Its far cells' growth (its spin-up grid's, when coarser).
         growth: f64,
         /// The most allowed ([`MAX_FAR_GROWTH`]).
         max: f64,
-        /// The fewest rings that keep it ([`FarStretch::fewest_rings`]).
+        /// The fewest rings of the grid that keep it, on the spin-up's
+        /// grid too ([`FarStretch::fewest_rings`] without a spin-up).
         fewest: usize,
     },
     /// The stable time step keeps falling: the run would take too long.
@@ -689,9 +691,7 @@ impl ViscousSection {
         let spin_up = self.spin_up_time(&path, duration)?;
         let mut flow = match spin_up {
             Some(until) => {
-                let coarse_section = self.spin_up_grid();
-                coarse_section.far_growth_kept()?;
-                let mut coarse = build(&coarse_section)?;
+                let mut coarse = build(&self.spin_up_grid())?;
                 march.to(&mut coarse, until)?;
                 march.spin_up_steps = march.steps;
                 let mut fine = build(self)?;
@@ -715,22 +715,38 @@ impl ViscousSection {
         })
     }
 
-    /// Checks that the far cells grow by at most [`MAX_FAR_GROWTH`].
+    /// Checks that the far cells grow by at most [`MAX_FAR_GROWTH`], on
+    /// this grid and on its spin-up's ([`Self::spin_up_grid`]) when it
+    /// has one.
     ///
     /// # Errors
-    /// [`ViscousError::FarTooCoarse`] when the far cells grow by more
-    /// than [`MAX_FAR_GROWTH`] (the grid coarsened too far as a whole),
-    /// naming the fewest rings that would do.
+    /// [`ViscousError::FarTooCoarse`] when they grow by more (the grid
+    /// coarsened too far as a whole), naming the fewest rings of this
+    /// grid that would do.
     fn far_growth_kept(&self) -> Result<(), ViscousError> {
-        match self.far {
-            Some(far) if far.growth > MAX_FAR_GROWTH => Err(ViscousError::FarTooCoarse {
-                radial: self.radial,
-                growth: far.growth,
-                max: MAX_FAR_GROWTH,
-                fewest: far.fewest_rings(self.radial),
-            }),
-            _ => Ok(()),
-        }
+        let far_growth = |s: &Self| s.far.map_or(1.0, |f| f.growth);
+        let coarsest = |s: &Self| {
+            if s.spin_up_periods > 0.0 {
+                far_growth(s).max(far_growth(&s.spin_up_grid()))
+            } else {
+                far_growth(s)
+            }
+        };
+        let growth = coarsest(self);
+        let Some(far) = self.far.filter(|_| growth > MAX_FAR_GROWTH) else {
+            return Ok(());
+        };
+        // This grid's own bound, and past it the first whose spin-up keeps
+        // the growth too.
+        let fewest = (far.fewest_rings(self.radial).max(self.radial)..=8192)
+            .find(|&n| coarsest(&self.with_radial(n)) <= MAX_FAR_GROWTH)
+            .unwrap_or(8192);
+        Err(ViscousError::FarTooCoarse {
+            radial: self.radial,
+            growth,
+            max: MAX_FAR_GROWTH,
+            fewest,
+        })
     }
 
     /// When the spin-up ends (chords travelled), if the section has one.
@@ -790,4 +806,37 @@ fn picture(flow: &Flow<SectionPath>, path: &SectionPath) -> (Vec<FreeVortex>, Ve
         })
         .collect();
     (cells, body)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The default plate coarsened to 28 rings is refused naming 29
+    /// (`1.045^(255/28) = 1.493`); with a spin-up, whose grid has 1.5
+    /// times fewer rings, it names the fewest whose spin-up grid keeps
+    /// the growth too.
+    #[test]
+    fn a_grid_coarsened_too_far_names_the_fewest_rings() {
+        let plate = ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS);
+        let refused = |s: &ViscousSection| match s.far_growth_kept() {
+            Err(ViscousError::FarTooCoarse { fewest, growth, .. }) => {
+                assert!(growth > MAX_FAR_GROWTH);
+                Some(fewest)
+            }
+            _ => None,
+        };
+        assert_eq!(refused(&plate.with_radial(28)), Some(29));
+        assert_eq!(refused(&plate.with_radial(29)), None);
+        let spun = ViscousSection {
+            spin_up_periods: 2.0,
+            ..plate.clone()
+        };
+        let fewest = refused(&spun.with_radial(29)).unwrap();
+        let growth = |s: &ViscousSection| s.far.unwrap().growth;
+        assert!(growth(&spun.with_radial(fewest).spin_up_grid()) <= MAX_FAR_GROWTH);
+        assert!(growth(&spun.with_radial(fewest - 1).spin_up_grid()) > MAX_FAR_GROWTH);
+        assert_eq!(refused(&spun.with_radial(fewest)), None);
+        assert_eq!(refused(&spun), None);
+    }
 }
