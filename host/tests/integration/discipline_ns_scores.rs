@@ -337,8 +337,10 @@ fn ns_deforming_evaluation_benchmark() {
 /// 754 s, at Courant 3 (above the declared scatter: not checked there),
 /// and 0.1090, 0.1035, 0.1276, 0.1297, 0.0993 (12.3 %), 581 s, at
 /// Courant 4; their means agree within 0.7 % (README, "The L18 rows at
-/// another step"). The rows of `NS_LONG_MEAN_SCATTER` (2026-12-04, one
-/// thread each, Courant 3 and 4; 347 s to 937 s a run): CT scatters by
+/// another step"). The rows of `NS_LONG_MEAN_SCATTER` on the exponential
+/// 384 x 320 (2026-12-04, one thread each, Courant 3 and 4; 347 s to
+/// 937 s a run; on the default grid, 2026-12-05, see the constant's
+/// doc): CT scatters by
 /// 13.1 % and 10.3 % at row 4 (9, 20, 0, 90), 3.1 % and 6.1 % at row 6
 /// (13, 40, −10, 70), 1.4 % and 9.6 % at row 7 (9, 30, −10, 110), 1.7 %
 /// and 4.0 % at row 11 (11, 20, −10, 110), and 7.3 % and 3.5 % at row 18,
