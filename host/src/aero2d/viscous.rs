@@ -63,12 +63,14 @@ use fwav_ns2d::{
     MAX_FAR_GROWTH,
 };
 
+mod error;
 mod march;
 mod path;
 mod surface;
 
 use super::history::History;
 use super::ldvm::FreeVortex;
+pub use error::ViscousError;
 use march::March;
 pub use path::{SectionPath, STILL_KICK_CHORDS, STILL_KICK_RATE};
 pub use surface::SurfaceLoads;
@@ -450,86 +452,6 @@ impl ViscousSection {
             far: self.far,
         }
     }
-}
-
-/// Why a viscous run cannot be done.
-#[derive(Debug, thiserror::Error)]
-pub enum ViscousError {
-    /// The solver refused the case or diverged.
-    #[error(transparent)]
-    Solver(#[from] NsError),
-    /// A plate thickness out of range.
-    #[error(
-        "plate thickness {0} chords: the Navier–Stokes model takes 0.005 to 0.3 chords \
-         (thinner plates crowd the grid at the edges beyond any usable time step)"
-    )]
-    Thickness(f64),
-    /// A deformation history given for a motion without a period.
-    #[error(
-        "a deformation history is periodic, and this motion has no period (a pitch ramp): run \
-         the section rigid, or give a periodic motion"
-    )]
-    DeformingWithoutPeriod,
-    /// A deformation sample the solver cannot map.
-    #[error(
-        "deformation sample {sample} of {samples}: {source}; check the section history (a \
-         mid-line bent tighter than half the plate's thickness, or a contour that crosses itself)"
-    )]
-    DeformedShape {
-        /// The sample (0-based).
-        sample: usize,
-        /// Samples in the history.
-        samples: usize,
-        /// What the solver found.
-        source: NsError,
-    },
-    /// A spin-up on a motion without a period, or not shorter than the
-    /// run.
-    #[error(
-        "a spin-up of {periods} periods for a run of {run:.3} periods: the spin-up is counted in \
-         periods of a periodic motion and must end before the run does; shorten it or set it to 0"
-    )]
-    SpinUp {
-        /// The spin-up asked for.
-        periods: f64,
-        /// The run's length in periods (0 without a period).
-        run: f64,
-    },
-    /// A grid coarsened as a whole ([`ViscousSection::with_radial`]) so
-    /// far that its far cells, or its spin-up grid's, grow by more than
-    /// [`MAX_FAR_GROWTH`].
-    #[error(
-        "{radial} grid nodes from the wall out make the far field's cells grow by {growth:.3} a \
-         ring, more than {max}: give at least {fewest} (--ns-radial)"
-    )]
-    FarTooCoarse {
-        /// The grid's rings.
-        radial: usize,
-        /// Its far cells' growth (its spin-up grid's, when coarser).
-        growth: f64,
-        /// The most allowed ([`MAX_FAR_GROWTH`]).
-        max: f64,
-        /// The fewest rings of the grid that keep it, on the spin-up's
-        /// grid too ([`FarStretch::fewest_rings`] without a spin-up).
-        fewest: usize,
-    },
-    /// The stable time step keeps falling: the run would take too long.
-    #[error(
-        "the stable time step fell to {dt:.2e} chords travelled at t = {time:.3} \
-         ({steps} steps for the run at that step, more than {max}): the motion is too fast for \
-         this grid's cells at the section's edges; choose a thicker or blunter section \
-         (--ns-thickness), fewer nodes round it, or a gentler motion"
-    )]
-    TooManySteps {
-        /// The time step reached.
-        dt: f64,
-        /// When.
-        time: f64,
-        /// The steps the run would take at that step.
-        steps: usize,
-        /// The most allowed ([`MAX_VISCOUS_STEPS`]).
-        max: usize,
-    },
 }
 
 /// What a viscous run leaves.
