@@ -70,7 +70,7 @@ pub struct FrontSorter {
     dominated: Vec<Vec<u32>>,
     /// n_p: how many members dominate each member.
     count: Vec<u32>,
-    /// Members in front order; front f is order[starts[f]..starts[f + 1]].
+    /// Members in front order; front `f` is `order[starts[f]..starts[f + 1]]`.
     order: Vec<usize>,
     starts: Vec<usize>,
     /// Scratch: a front sorted by one objective.
