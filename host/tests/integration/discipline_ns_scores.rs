@@ -15,6 +15,7 @@ use fwav::discipline::section_model::{
 };
 
 use crate::discipline_ns::ns_case;
+use crate::viscous_default_section::mean;
 
 /// The NS model of `plate` on the default FWAV section, deforming as the
 /// built-in design's first system analysis found
@@ -510,4 +511,149 @@ fn ns_window_time_step_benchmark() {
         );
     }
     println!("{:.0} s", clock.elapsed().as_secs_f64());
+}
+
+/// The first cycle's 18 L18 rows (Hz and degrees), as
+/// `docs/ns-design/l18-384x256.txt` lists them.
+const L18_ROWS: [[f64; 4]; 18] = [
+    [9.0, 20.0, -10.0, 70.0],
+    [11.0, 30.0, 0.0, 90.0],
+    [13.0, 40.0, 10.0, 110.0],
+    [9.0, 20.0, 0.0, 90.0],
+    [11.0, 30.0, 10.0, 110.0],
+    [13.0, 40.0, -10.0, 70.0],
+    [9.0, 30.0, -10.0, 110.0],
+    [11.0, 40.0, 0.0, 70.0],
+    [13.0, 20.0, 10.0, 90.0],
+    [9.0, 40.0, 10.0, 90.0],
+    [11.0, 20.0, -10.0, 110.0],
+    [13.0, 30.0, 0.0, 70.0],
+    [9.0, 30.0, 10.0, 70.0],
+    [11.0, 40.0, -10.0, 90.0],
+    [13.0, 20.0, 0.0, 110.0],
+    [9.0, 40.0, 0.0, 110.0],
+    [11.0, 20.0, 10.0, 70.0],
+    [13.0, 30.0, -10.0, 90.0],
+];
+
+/// A shorter evaluation: three strokes, the last two scored (strokes 2–3),
+/// would take about a quarter off the discipline's time (the NS design's
+/// 54 minutes would come to about 41, under the issue's 45). It is
+/// acceptable only if it moves the rows' scores
+/// less than the scatter the adoption margin already carries for one
+/// evaluation ([`NS_WINDOW_SCATTER`]): measured on the deforming default
+/// section's 18 L18 rows (the first cycle's, as
+/// `docs/ns-design/l18-384x256.txt` lists them), strokes 2–3 against
+/// strokes 3–4 of the same run (a three-stroke run is the four-stroke
+/// run's first three strokes: the flow is deterministic and causal).
+///
+/// Fails (2026-12-05, the default 384 x 256 at Courant 3, two rows at a
+/// time, 1,351 s; `docs/ns-design/strokes-384x256.txt`): CT 5.99 % RMS
+/// (mean +0.31 %), efficiency 5.09 % RMS (mean +0.20 %), against the
+/// declared 5.30 % and 4.50 %; row 14 (11 Hz, ±40°, −10°, 90°) +18.2 %
+/// and +14.8 %. Strokes 3–4 equal the discipline's scores of that table
+/// to every digit shown. Against the converged score, the mean over
+/// strokes 5–12 of the twelve-stroke runs of seven of these rows (the
+/// runs behind [`NS_LONG_MEAN_SCATTER`]), strokes 2–3 are farther than
+/// strokes 3–4 in each of four comparisons: the same Courant 3 run's
+/// mean, CT 11.3 % against 8.4 % RMS, efficiency 8.6 % against 6.6 %;
+/// the independent Courant 4 run's mean over strokes 3–12, 9.9 % against
+/// 8.8 % and 7.5 % against 7.0 % (row 14 +24 % against +5 %). Every
+/// row's first stroke thrusts 2 % to 43 % above its strokes 3–4 (the
+/// start); the second lies from −19 % to +24 % of them, without a common
+/// sign, but further from the converged score than the fourth. So the
+/// evaluation keeps four strokes.
+/// `FWAV_NS_DESIGNS` and `FWAV_NS_COURANT` run other rows or another step
+/// (measured, not checked).
+#[test]
+#[ignore = "fails (strokes 2-3 against 3-4 over the 18 rows: CT 5.99 % RMS, efficiency 5.09 %, \
+            beyond the declared 5.30 % and 4.50 %; row 14 +18 %), and heavy (1,351 s): \
+            `cargo test --release -p fwav --test integration -- --ignored --nocapture \
+            discipline_ns_scores::a_three_stroke_evaluation_keeps_the_rows_scores`"]
+fn a_three_stroke_evaluation_keeps_the_rows_scores() {
+    use rayon::prelude::*;
+    let plate = env_plate();
+    let cycles = 4;
+    let case = SectionCase {
+        cycles,
+        ..deforming_case(plate)
+    };
+    let listed = std::env::var("FWAV_NS_DESIGNS").ok();
+    let designs: Vec<FlappingKinematics> = listed.as_deref().map_or_else(
+        || {
+            L18_ROWS
+                .iter()
+                .map(|&d| FlappingKinematics::from_degrees(d))
+                .collect()
+        },
+        |v| v.split(';').map(parse_design).collect(),
+    );
+    let clock = std::time::Instant::now();
+    let strokes: Vec<Vec<(f64, f64)>> =
+        designs.par_iter().map(|d| stroke_means(&case, d)).collect();
+    let (mut d_ct, mut d_eta) = (Vec::new(), Vec::new());
+    for (design, s) in designs.iter().zip(&strokes) {
+        let (four, three) = (window_of(&s[2..4]), window_of(&s[1..3]));
+        d_ct.push(three.0 / four.0 - 1.0);
+        d_eta.push(three.1 / four.1 - 1.0);
+        println!(
+            "{:?}: strokes (CT, CP) {s:.4?}; strokes 3-4 CT {:.4} efficiency {:.4}; \
+             strokes 2-3 CT {:.4} ({:+.1} %) efficiency {:.4} ({:+.1} %)",
+            design.degrees(),
+            four.0,
+            four.1,
+            three.0,
+            100.0 * d_ct.last().unwrap(),
+            three.1,
+            100.0 * d_eta.last().unwrap()
+        );
+    }
+    let (ct, eta) = (root_mean_square(&d_ct), root_mean_square(&d_eta));
+    println!(
+        "strokes 2-3 against 3-4 over {} rows: CT {:.2} % RMS (mean {:+.2} %), efficiency {:.2} % \
+         RMS (mean {:+.2} %); Courant {}; {:.0} s",
+        designs.len(),
+        100.0 * ct,
+        100.0 * mean(&d_ct),
+        100.0 * eta,
+        100.0 * mean(&d_eta),
+        plate.courant,
+        clock.elapsed().as_secs_f64()
+    );
+    // The declared scatter is the default resolution's rows'.
+    if plate != ViscousPlate::new(0.04) || listed.is_some() {
+        return;
+    }
+    for (measured, declared) in [(ct, NS_WINDOW_SCATTER.0), (eta, NS_WINDOW_SCATTER.1)] {
+        assert!(
+            measured < declared,
+            "strokes 2-3 moved the rows by {measured:.4} RMS, beyond the declared {declared:.4}"
+        );
+    }
+}
+
+/// Each stroke's mean CT and CP of `case` (its loads are sampled
+/// uniformly, the same number of samples a stroke) at `design`.
+fn stroke_means(case: &SectionCase, design: &FlappingKinematics) -> Vec<(f64, f64)> {
+    let (history, _) = case.history(design).unwrap();
+    let per = history.ct.len() / case.cycles;
+    history
+        .ct
+        .chunks_exact(per)
+        .zip(history.cp.chunks_exact(per))
+        .map(|(ct, cp)| (mean(ct), mean(cp)))
+        .collect()
+}
+
+/// A window's CT and efficiency (mean CT over mean CP) from its strokes'
+/// means.
+fn window_of(strokes: &[(f64, f64)]) -> (f64, f64) {
+    let ct = mean(&strokes.iter().map(|x| x.0).collect::<Vec<_>>());
+    let cp = mean(&strokes.iter().map(|x| x.1).collect::<Vec<_>>());
+    (ct, ct / cp)
+}
+
+/// The root mean square of `values`.
+fn root_mean_square(values: &[f64]) -> f64 {
+    (mean(&values.iter().map(|x| x * x).collect::<Vec<_>>())).sqrt()
 }

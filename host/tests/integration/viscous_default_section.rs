@@ -201,7 +201,7 @@ pub(crate) fn window_scatter(ct: &[f64], cp: &[f64]) -> (Vec<(f64, f64)>, f64, f
 }
 
 /// The mean of `values`.
-fn mean(values: &[f64]) -> f64 {
+pub(crate) fn mean(values: &[f64]) -> f64 {
     values.iter().sum::<f64>() / values.len() as f64
 }
 
