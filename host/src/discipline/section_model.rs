@@ -148,6 +148,18 @@ impl SectionFlowModel {
 /// efficiency by 5.84 % (means +1.3 % and +0.7 %), 5.1 % and 4.1 % an
 /// evaluation.
 ///
+/// Two runs that differ only in their step share the start, so their
+/// difference leaves out an error the start puts into both. Against the
+/// converged score (each of the 18 rows' mean over strokes 3–12 of an
+/// independent twelve-stroke run at Courant 4; 2026-12-05,
+/// `docs/ns-design/long-means-384x256.txt`,
+/// `discipline_ns_scores::the_declared_scatter_agrees_with_the_rows_error_against_their_long_means`),
+/// with the deviations' mean (+2.6 % and +1.7 %, common to every design)
+/// and [`NS_LONG_MEAN_SCATTER`] taken out, one evaluation's error is
+/// 5.84 % and 4.62 %: within the 17 % by which a standard deviation
+/// of 18 values is itself uncertain, so the start adds little and these
+/// figures stand.
+///
 /// From window to window of one 12-stroke run (strokes 3 to 12 as five
 /// windows of two; `discipline_ns_scores::ns_deforming_window_scatter_benchmark`,
 /// `viscous_default_section::ns_evaluation_window_scatter_benchmark`)
@@ -158,17 +170,6 @@ impl SectionFlowModel {
 /// | rigid, 11 Hz, ±30° | 0.20 % (periodic from the fourth stroke); 0.24 % on 384 × 256 with the far field coarsened | 0.32 %; 0.12 % |
 /// | deforming, 11 Hz, ±30° | 1.65 % (0.0850, 0.0885, 0.0885, 0.0869, 0.0877) | 1.38 % (0.0341, 0.0352, 0.0352, 0.0346, 0.0349) |
 /// | deforming, 13 Hz, ±20°, plane 110° | 1.99 % (0.0814, 0.0831, 0.0826, 0.0851, 0.0853) | 0.52 % |
-///
-/// Two runs that differ only in their step share the start, so their
-/// difference leaves out an error the start puts into both. Against the
-/// converged score (each of the 18 rows' mean over strokes 3–12 of an
-/// independent twelve-stroke run at Courant 4; 2026-12-05,
-/// `docs/ns-design/long-means-384x256.txt`,
-/// `discipline_ns_scores::the_declared_scatter_agrees_with_the_rows_error_against_their_long_means`),
-/// with the deviations' mean (+2.6 % and +1.7 %, common to every design)
-/// and [`NS_LONG_MEAN_SCATTER`] taken out, one evaluation's error is
-/// 5.84 % and 4.62 %: within the 17 % by which that estimate is
-/// uncertain, so the start adds little and these figures stand.
 ///
 /// Until 2026-12-04 these window-to-window figures were the declared
 /// scatter (2.0 % and 1.4 %), but the L18 rows' own last two strokes

@@ -513,35 +513,56 @@ fn ns_window_time_step_benchmark() {
     println!("{:.0} s", clock.elapsed().as_secs_f64());
 }
 
-/// The first cycle's 18 L18 rows (Hz and degrees), as
-/// `docs/ns-design/l18-384x256.txt` lists them.
-const L18_ROWS: [[f64; 4]; 18] = [
-    [9.0, 20.0, -10.0, 70.0],
-    [11.0, 30.0, 0.0, 90.0],
-    [13.0, 40.0, 10.0, 110.0],
-    [9.0, 20.0, 0.0, 90.0],
-    [11.0, 30.0, 10.0, 110.0],
-    [13.0, 40.0, -10.0, 70.0],
-    [9.0, 30.0, -10.0, 110.0],
-    [11.0, 40.0, 0.0, 70.0],
-    [13.0, 20.0, 10.0, 90.0],
-    [9.0, 40.0, 10.0, 90.0],
-    [11.0, 20.0, -10.0, 110.0],
-    [13.0, 30.0, 0.0, 70.0],
-    [9.0, 30.0, 10.0, 70.0],
-    [11.0, 40.0, -10.0, 90.0],
-    [13.0, 20.0, 0.0, 110.0],
-    [9.0, 40.0, 0.0, 110.0],
-    [11.0, 20.0, 10.0, 70.0],
-    [13.0, 30.0, -10.0, 90.0],
-];
+/// The 18 rows of the aerodynamic discipline's L18 array over the built-in
+/// design space (as `discipline::kinematic` lays it out; the first
+/// cycle's are listed in `docs/ns-design/l18-384x256.txt`).
+fn l18_rows() -> Vec<FlappingKinematics> {
+    use fwav::discipline::kinematic::DesignSpace;
+    use fwav::optimize::doe::{l18_quadratic_columns, OrthogonalArray};
+    let space = DesignSpace::fwav();
+    let levels = [
+        space.frequency_hz,
+        space.amplitude_deg,
+        space.mean_angle_deg,
+        space.stroke_plane_deg,
+    ]
+    .map(|l| l.to_vec());
+    OrthogonalArray::l18()
+        .design(&l18_quadratic_columns(4).unwrap(), &levels)
+        .unwrap()
+        .iter()
+        .map(|x| FlappingKinematics::from_degrees([x[0], x[1], x[2], x[3]]))
+        .collect()
+}
+
+/// The rows the benchmarks below run are those of the record they are
+/// compared with: `docs/ns-design/l18-384x256.txt`, row by row.
+#[test]
+fn the_l18_rows_are_the_records() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/ns-design/l18-384x256.txt");
+    let text = std::fs::read_to_string(path).unwrap();
+    let recorded: Vec<[f64; 4]> = text
+        .lines()
+        .filter_map(|line| {
+            let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+            let row: Vec<f64> = cells
+                .get(2..6)?
+                .iter()
+                .map(|c| c.parse().ok())
+                .collect::<Option<_>>()?;
+            Some([row[0], row[1], row[2], row[3]])
+        })
+        .collect();
+    let planned: Vec<[f64; 4]> = l18_rows().iter().map(FlappingKinematics::degrees).collect();
+    assert_eq!(planned, recorded);
+}
 
 /// A shorter evaluation: three strokes, the last two scored (strokes 2–3),
 /// would take about a quarter off the discipline's time (the NS design's
 /// 54 minutes would come to about 41, under the 45). It is
-/// acceptable only if it moves the rows' scores
-/// less than the scatter the adoption margin already carries for one
-/// evaluation ([`NS_WINDOW_SCATTER`]): measured on the deforming default
+/// acceptable only if it moves the rows' scores less than the scatter
+/// the adoption margin already carries for one evaluation ([`NS_WINDOW_SCATTER`]): measured on the deforming default
 /// section's 18 L18 rows (the first cycle's, as
 /// `docs/ns-design/l18-384x256.txt` lists them), strokes 2–3 against
 /// strokes 3–4 of the same run (a three-stroke run is the four-stroke
@@ -561,11 +582,10 @@ const L18_ROWS: [[f64; 4]; 18] = [
 /// +2.8 % and +2.6 %, +1.9 % and +1.7 %). On the seven rows with
 /// twelve-stroke runs at Courant 3 too, against those runs' strokes 5–12,
 /// 11.3 % against 8.4 % RMS in CT, 8.6 % against 6.6 % in efficiency
-/// (row 14 +24 % against +5 %). Every
-/// row's first stroke thrusts 2 % to 43 % above its strokes 3–4 (the
-/// start); the second lies from −19 % to +24 % of them, without a common
-/// sign, but further from the converged score than the fourth. So the
-/// evaluation keeps four strokes.
+/// (row 14 +24 % against +5 %). Every row's first stroke thrusts 2 % to
+/// 43 % above its strokes 3–4 (the start); the second lies from −19 % to
+/// +24 % of them, without a common sign. So the evaluation keeps four
+/// strokes.
 /// `FWAV_NS_DESIGNS` and `FWAV_NS_COURANT` run other rows or another step
 /// (measured, not checked).
 #[test]
@@ -582,15 +602,9 @@ fn a_three_stroke_evaluation_keeps_the_rows_scores() {
         ..deforming_case(plate)
     };
     let listed = std::env::var("FWAV_NS_DESIGNS").ok();
-    let designs: Vec<FlappingKinematics> = listed.as_deref().map_or_else(
-        || {
-            L18_ROWS
-                .iter()
-                .map(|&d| FlappingKinematics::from_degrees(d))
-                .collect()
-        },
-        |v| v.split(';').map(parse_design).collect(),
-    );
+    let designs: Vec<FlappingKinematics> = listed
+        .as_deref()
+        .map_or_else(l18_rows, |v| v.split(';').map(parse_design).collect());
     let clock = std::time::Instant::now();
     let strokes: Vec<Vec<(f64, f64)>> =
         designs.par_iter().map(|d| stroke_means(&case, d)).collect();
@@ -679,17 +693,20 @@ fn the_declared_scatter_agrees_with_the_rows_error_against_their_long_means() {
         })
     };
     let clock = std::time::Instant::now();
-    let deviations: Vec<(f64, f64)> = L18_ROWS
+    let deviations: Vec<(f64, f64)> = l18_rows()
         .par_iter()
-        .map(|&d| {
-            let design = FlappingKinematics::from_degrees(d);
+        .map(|design| {
             let (window, converged) = rayon::join(
-                || window_of(&stroke_means(&scored, &design)[2..4]),
-                || window_of(&stroke_means(&long, &design)[2..]),
+                || window_of(&stroke_means(&scored, design)[2..4]),
+                || window_of(&stroke_means(&long, design)[2..]),
             );
             println!(
-                "{d:?}: strokes 3-4 CT {:.4} efficiency {:.4}; long mean CT {:.4} efficiency {:.4}",
-                window.0, window.1, converged.0, converged.1
+                "{:?}: strokes 3-4 CT {:.4} efficiency {:.4}; long mean CT {:.4} efficiency {:.4}",
+                design.degrees(),
+                window.0,
+                window.1,
+                converged.0,
+                converged.1
             );
             (window.0 / converged.0 - 1.0, window.1 / converged.1 - 1.0)
         })
