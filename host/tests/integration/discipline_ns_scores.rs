@@ -562,11 +562,12 @@ fn the_l18_rows_are_the_records() {
 /// would take about a quarter off the discipline's time (the NS design's
 /// 54 minutes would come to about 41, under the issue's 45). It is
 /// acceptable only if it moves the rows' scores less than the scatter
-/// the adoption margin already carries for one evaluation ([`NS_WINDOW_SCATTER`]): measured on the deforming default
-/// section's 18 L18 rows (the first cycle's, as
-/// `docs/ns-design/l18-384x256.txt` lists them), strokes 2–3 against
-/// strokes 3–4 of the same run (a three-stroke run is the four-stroke
-/// run's first three strokes: the flow is deterministic and causal).
+/// the adoption margin already carries for one evaluation
+/// ([`NS_WINDOW_SCATTER`]): measured on the deforming default section's
+/// 18 L18 rows (the first cycle's, as `docs/ns-design/l18-384x256.txt`
+/// lists them), strokes 2–3 against strokes 3–4 of the same run (a
+/// three-stroke run is the four-stroke run's first three strokes: the
+/// flow is deterministic and causal).
 ///
 /// Fails (2026-12-05, the default 384 x 256 at Courant 3, two rows at a
 /// time, 1,351 s; `docs/ns-design/strokes-384x256.txt`): CT 5.99 % RMS
@@ -585,9 +586,8 @@ fn the_l18_rows_are_the_records() {
 /// (row 14 +24 % against +5 %). Every row's first stroke thrusts 2 % to
 /// 43 % above its strokes 3–4 (the start); the second lies from −19 % to
 /// +24 % of them, without a common sign. So the evaluation keeps four
-/// strokes.
-/// `FWAV_NS_DESIGNS` and `FWAV_NS_COURANT` run other rows or another step
-/// (measured, not checked).
+/// strokes. `FWAV_NS_DESIGNS` and `FWAV_NS_COURANT` run other rows or
+/// another step (measured, not checked).
 #[test]
 #[ignore = "fails (strokes 2-3 against 3-4 over the 18 rows: CT 5.99 % RMS, efficiency 5.09 %, \
             beyond the declared 5.30 % and 4.50 %; row 14 +18 %), and heavy (1,351 s): \
