@@ -15,7 +15,7 @@ use fwav::discipline::section_model::{
 };
 
 use crate::discipline_ns::ns_case;
-use crate::viscous_default_section::mean;
+use crate::viscous_default_section::{mean, standard_deviation};
 
 /// The NS model of `plate` on the default FWAV section, deforming as the
 /// built-in design's first system analysis found
@@ -712,10 +712,11 @@ fn the_declared_scatter_agrees_with_the_rows_error_against_their_long_means() {
         })
         .collect();
     let own = |values: Vec<f64>, long_mean: f64| {
-        let m = mean(&values);
-        let variance =
-            values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / (values.len() - 1) as f64;
-        (m, (variance - long_mean * long_mean).max(0.0).sqrt())
+        let deviation = standard_deviation(&values);
+        let own = (deviation * deviation - long_mean * long_mean)
+            .max(0.0)
+            .sqrt();
+        (mean(&values), own)
     };
     let (ct_mean, ct) = own(
         deviations.iter().map(|d| d.0).collect(),
@@ -757,7 +758,6 @@ fn stroke_means(case: &SectionCase, design: &FlappingKinematics) -> Vec<(f64, f6
         .map(|(ct, cp)| (mean(ct), mean(cp)))
         .collect()
 }
-
 /// A window's CT and efficiency (mean CT over mean CP) from its strokes'
 /// means.
 fn window_of(strokes: &[(f64, f64)]) -> (f64, f64) {

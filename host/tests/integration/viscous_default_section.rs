@@ -205,11 +205,16 @@ pub(crate) fn mean(values: &[f64]) -> f64 {
     values.iter().sum::<f64>() / values.len() as f64
 }
 
-/// The sample standard deviation (n - 1) of `values` over their mean.
-fn relative_deviation(values: &[f64]) -> f64 {
+/// The sample standard deviation (n - 1) of `values`.
+pub(crate) fn standard_deviation(values: &[f64]) -> f64 {
     let m = mean(values);
     let variance = values.iter().map(|v| (v - m).powi(2)).sum::<f64>() / (values.len() - 1) as f64;
-    variance.sqrt() / m
+    variance.sqrt()
+}
+
+/// The sample standard deviation (n - 1) of `values` over their mean.
+fn relative_deviation(values: &[f64]) -> f64 {
+    standard_deviation(values) / mean(values)
 }
 
 /// The scatter of the Navier–Stokes evaluation's scored window
