@@ -6,6 +6,7 @@
 //! benchmarks, run by name (the README, "Speed" and "The evaluation's
 //! window", quotes their figures).
 
+use fwav::aero2d::history::cycle_means_until;
 use fwav::aeroelastic::FlappingKinematics;
 use fwav::config::SystemConfig;
 use fwav::discipline::cache::EvaluationCache;
@@ -369,8 +370,7 @@ fn ns_deforming_window_scatter_benchmark() {
     };
     let clock = std::time::Instant::now();
     let (history, _) = case.history(&design).unwrap();
-    let (windows, thrust, efficiency) =
-        crate::viscous_default_section::window_scatter(&history.ct, &history.cp);
+    let (windows, thrust, efficiency) = crate::viscous_default_section::window_scatter(&history);
     println!(
         "{:?}: windows (CT, efficiency): {windows:.4?}; relative deviation: CT {thrust:.4}, \
          efficiency {efficiency:.4}; {:.0} s",
@@ -746,18 +746,20 @@ fn the_declared_scatter_agrees_with_the_rows_error_against_their_long_means() {
     }
 }
 
-/// Each stroke's mean CT and CP of `case` (its loads are sampled
-/// uniformly, the same number of samples a stroke) at `design`.
+/// Each stroke's mean CT and CP of `case` at `design`, each over its
+/// period as the discipline takes its window
+/// (`fwav::aero2d::history::cycle_means_until`).
 fn stroke_means(case: &SectionCase, design: &FlappingKinematics) -> Vec<(f64, f64)> {
     let (history, _) = case.history(design).unwrap();
-    let per = history.ct.len() / case.cycles;
-    history
-        .ct
-        .chunks_exact(per)
-        .zip(history.cp.chunks_exact(per))
-        .map(|(ct, cp)| (mean(ct), mean(cp)))
+    let period = history.time.last().copied().unwrap_or(0.0) / case.cycles as f64;
+    (1..=case.cycles)
+        .map(|stroke| {
+            let (ct, cp, _) = cycle_means_until(&history, period, 1, stroke as f64 * period);
+            (ct, cp)
+        })
         .collect()
 }
+
 /// A window's CT and efficiency (mean CT over mean CP) from its strokes'
 /// means.
 fn window_of(strokes: &[(f64, f64)]) -> (f64, f64) {

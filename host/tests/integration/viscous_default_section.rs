@@ -8,6 +8,7 @@
 
 use std::f64::consts::PI;
 
+use fwav::aero2d::history::{cycle_means_until, History};
 use fwav::aero2d::viscous::{SectionPath, ViscousSection};
 
 /// The default FWAV mid-span section's flow (the aerodynamic
@@ -182,19 +183,20 @@ fn default_section_thrust_converges_with_the_wall_cell() {
     assert!(change.1.abs() < 0.03, "CP {:+.1} %", 100.0 * change.1);
 }
 
-/// Twelve strokes' loads (200 samples a stroke) cut, from the third
-/// stroke on, into five windows of two strokes, each as the aerodynamic
-/// discipline scores its window, `(mean CT, mean CT / mean CP)`; and the
-/// relative standard deviations (sample, n - 1) of the windows' CT and
-/// efficiency.
-pub(crate) fn window_scatter(ct: &[f64], cp: &[f64]) -> (Vec<(f64, f64)>, f64, f64) {
-    let windows: Vec<(f64, f64)> = ct
-        .chunks(400)
-        .zip(cp.chunks(400))
-        .skip(1)
-        .map(|(ct, cp)| (mean(ct), mean(ct) / mean(cp)))
+/// Twelve strokes' loads cut, from the third stroke on, into five windows
+/// of two strokes, each scored as the aerodynamic discipline scores its
+/// window (`fwav::aero2d::history::cycle_means_until`: mean CT, mean CT
+/// over mean CP); and the relative standard deviations (sample, n - 1) of
+/// the windows' CT and efficiency.
+pub(crate) fn window_scatter(history: &History) -> (Vec<(f64, f64)>, f64, f64) {
+    let period = history.time.last().copied().unwrap_or(0.0) / 12.0;
+    let windows: Vec<(f64, f64)> = (1..6)
+        .map(|w| {
+            let (ct, _, efficiency) =
+                cycle_means_until(history, period, 2, (2 * w + 2) as f64 * period);
+            (ct, efficiency)
+        })
         .collect();
-    assert_eq!(windows.len(), 5, "five windows of two strokes");
     let thrust = relative_deviation(&windows.iter().map(|w| w.0).collect::<Vec<_>>());
     let efficiency = relative_deviation(&windows.iter().map(|w| w.1).collect::<Vec<_>>());
     (windows, thrust, efficiency)
@@ -242,7 +244,7 @@ fn ns_evaluation_window_scatter_benchmark() {
     use fwav::discipline::section_model::NS_WINDOW_SCATTER;
     let section = ViscousSection::plate(0.04);
     let run = fwav_mid_span_run(&section, 12.0);
-    let (windows, thrust, efficiency) = window_scatter(&run.history.ct, &run.history.cp);
+    let (windows, thrust, efficiency) = window_scatter(&run.history);
     println!(
         "windows (CT, efficiency): {windows:.4?}; relative deviation: CT {thrust:.4}, efficiency \
          {efficiency:.4}; declared {NS_WINDOW_SCATTER:?}"
