@@ -6,7 +6,6 @@
 //! benchmarks, run by name (the README, "Speed" and "The evaluation's
 //! window", quotes their figures).
 
-use fwav::aero2d::history::cycle_means_until;
 use fwav::aeroelastic::FlappingKinematics;
 use fwav::config::SystemConfig;
 use fwav::discipline::cache::EvaluationCache;
@@ -16,7 +15,7 @@ use fwav::discipline::section_model::{
 };
 
 use crate::discipline_ns::ns_case;
-use crate::viscous_default_section::{mean, standard_deviation};
+use crate::viscous_default_section::{mean, standard_deviation, window_of};
 
 /// The NS model of `plate` on the default FWAV section, deforming as the
 /// built-in design's first system analysis found
@@ -746,26 +745,11 @@ fn the_declared_scatter_agrees_with_the_rows_error_against_their_long_means() {
     }
 }
 
-/// Each stroke's mean CT and CP of `case` at `design`, each over its
-/// period as the discipline takes its window
-/// (`fwav::aero2d::history::cycle_means_until`).
+/// Each stroke's mean CT and CP of `case` at `design`
+/// ([`crate::viscous_default_section::stroke_means`]).
 fn stroke_means(case: &SectionCase, design: &FlappingKinematics) -> Vec<(f64, f64)> {
     let (history, _) = case.history(design).unwrap();
-    let period = history.time.last().copied().unwrap_or(0.0) / case.cycles as f64;
-    (1..=case.cycles)
-        .map(|stroke| {
-            let (ct, cp, _) = cycle_means_until(&history, period, 1, stroke as f64 * period);
-            (ct, cp)
-        })
-        .collect()
-}
-
-/// A window's CT and efficiency (mean CT over mean CP) from its strokes'
-/// means.
-fn window_of(strokes: &[(f64, f64)]) -> (f64, f64) {
-    let ct = mean(&strokes.iter().map(|x| x.0).collect::<Vec<_>>());
-    let cp = mean(&strokes.iter().map(|x| x.1).collect::<Vec<_>>());
-    (ct, ct / cp)
+    crate::viscous_default_section::stroke_means(&history, case.cycles)
 }
 
 /// The root mean square of `values`.

@@ -99,28 +99,26 @@ fn default_section_four_cycles_benchmark() {
     let clock = std::time::Instant::now();
     let run = fwav_mid_span_run(&section, cycles);
     let seconds = clock.elapsed().as_secs_f64();
-    let n = run.history.time.len();
-    let last = n.min(400);
-    let mean = |v: &[f64]| v[n - last..].iter().sum::<f64>() / last as f64;
+    // Each stroke's means: how periodic the flow is; the last two are
+    // the discipline's window.
+    let strokes = stroke_means(&run.history, cycles.round() as usize);
+    let last_two = &strokes[strokes.len().saturating_sub(2)..];
+    let last_two = (
+        mean(&last_two.iter().map(|s| s.0).collect::<Vec<_>>()),
+        mean(&last_two.iter().map(|s| s.1).collect::<Vec<_>>()),
+    );
     println!(
         "Re {reynolds:.0}, k {k:.3}, plate {thickness}, {cycles} cycles: {seconds:.1} s, {} steps \
          (last dt {:.2e}), {:.1} ns per cell per step; last two cycles: CT {:.4}, CP {:.4}",
         run.steps,
         run.dt,
         1e9 * seconds / (cells as f64 * run.steps as f64),
-        mean(&run.history.ct),
-        mean(&run.history.cp)
+        last_two.0,
+        last_two.1
     );
-    // Each stroke's means (200 samples a period): how periodic the flow is.
-    let strokes: Vec<String> = run
-        .history
-        .ct
-        .chunks(200)
-        .zip(run.history.cp.chunks(200))
-        .map(|(ct, cp)| {
-            let m = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
-            format!("CT {:.4} CP {:.4}", m(ct), m(cp))
-        })
+    let strokes: Vec<String> = strokes
+        .iter()
+        .map(|(ct, cp)| format!("CT {ct:.4} CP {cp:.4}"))
         .collect();
     println!(
         "{} x {} nodes, Courant {courant}; each stroke: {}",
@@ -183,19 +181,36 @@ fn default_section_thrust_converges_with_the_wall_cell() {
     assert!(change.1.abs() < 0.03, "CP {:+.1} %", 100.0 * change.1);
 }
 
+/// Each stroke's mean CT and CP of a run of `strokes` strokes (its
+/// history ends with the last), each over its period as the aerodynamic
+/// discipline takes its window (`fwav::aero2d::history::cycle_means_until`).
+pub(crate) fn stroke_means(history: &History, strokes: usize) -> Vec<(f64, f64)> {
+    let period = history.time.last().copied().unwrap_or(0.0) / strokes as f64;
+    (1..=strokes)
+        .map(|stroke| {
+            let (ct, cp, _) = cycle_means_until(history, period, 1, stroke as f64 * period);
+            (ct, cp)
+        })
+        .collect()
+}
+
+/// A window's CT and efficiency (mean CT over mean CP) from its strokes'
+/// means, as the discipline scores it (every stroke has as many
+/// samples).
+pub(crate) fn window_of(strokes: &[(f64, f64)]) -> (f64, f64) {
+    let ct = mean(&strokes.iter().map(|x| x.0).collect::<Vec<_>>());
+    let cp = mean(&strokes.iter().map(|x| x.1).collect::<Vec<_>>());
+    (ct, ct / cp)
+}
+
 /// Twelve strokes' loads cut, from the third stroke on, into five windows
 /// of two strokes, each scored as the aerodynamic discipline scores its
-/// window (`fwav::aero2d::history::cycle_means_until`: mean CT, mean CT
-/// over mean CP); and the relative standard deviations (sample, n - 1) of
-/// the windows' CT and efficiency.
+/// window ([`window_of`]); and the relative standard deviations (sample,
+/// n - 1) of the windows' CT and efficiency.
 pub(crate) fn window_scatter(history: &History) -> (Vec<(f64, f64)>, f64, f64) {
-    let period = history.time.last().copied().unwrap_or(0.0) / 12.0;
-    let windows: Vec<(f64, f64)> = (1..6)
-        .map(|w| {
-            let (ct, _, efficiency) =
-                cycle_means_until(history, period, 2, (2 * w + 2) as f64 * period);
-            (ct, efficiency)
-        })
+    let windows: Vec<(f64, f64)> = stroke_means(history, 12)[2..]
+        .chunks_exact(2)
+        .map(window_of)
         .collect();
     let thrust = relative_deviation(&windows.iter().map(|w| w.0).collect::<Vec<_>>());
     let efficiency = relative_deviation(&windows.iter().map(|w| w.1).collect::<Vec<_>>());
@@ -261,18 +276,14 @@ fn ns_evaluation_window_scatter_benchmark() {
     }
 }
 
-/// Strokes 3 to 12 of a 12-stroke run (200 samples a stroke): the mean
-/// CT, the efficiency `mean CT / mean CP`, and the standard error of the
-/// CT mean from its ten strokes (sample deviation over `sqrt(10)`).
-fn long_mean(ct: &[f64], cp: &[f64]) -> (f64, f64, f64) {
-    let (ct, cp) = (&ct[400..], &cp[400..]);
-    let strokes: Vec<f64> = ct.chunks(200).map(mean).collect();
-    assert_eq!(strokes.len(), 10, "ten strokes after the first two");
-    (
-        mean(ct),
-        mean(ct) / mean(cp),
-        relative_deviation(&strokes) / 10f64.sqrt(),
-    )
+/// Strokes 3 to 12 of a 12-stroke run ([`stroke_means`]): the mean CT,
+/// the efficiency `mean CT / mean CP`, and the standard error of the CT
+/// mean from its ten strokes (sample deviation over `sqrt(10)`).
+fn long_mean(history: &History) -> (f64, f64, f64) {
+    let strokes = &stroke_means(history, 12)[2..];
+    let (ct, efficiency) = window_of(strokes);
+    let thrusts: Vec<f64> = strokes.iter().map(|s| s.0).collect();
+    (ct, efficiency, relative_deviation(&thrusts) / 10f64.sqrt())
 }
 
 /// Issue 23's convergence (CT and efficiency within 3 % when the grid and
@@ -303,7 +314,7 @@ fn the_long_mean_converges_with_the_resolution() {
     let measure = |section: &ViscousSection| {
         let clock = std::time::Instant::now();
         let run = fwav_mid_span_run(section, 12.0);
-        let means = long_mean(&run.history.ct, &run.history.cp);
+        let means = long_mean(&run.history);
         println!(
             "{} x {}, Courant {}: CT {:.4} (standard error {:.1} %), efficiency {:.4}; {:.0} s",
             section.around,
