@@ -73,15 +73,18 @@ pub fn cycle_mean_of(history: &History, values: &[f64], period: f64, cycles: usi
 /// `(end - cycles·period, end]`, both bounds moved half a sampling
 /// interval later.
 ///
-/// A window of whole periods starts where a sample of the same phase as
-/// its last one may lie (a flow sampled `period / 200` apart, or the
-/// LDVM's step midpoints). Compared as computed, that sample fell inside
-/// or outside by rounding, so a two-period window held 400 or 401
-/// samples (the same phase counted twice) and a one-period one 199 or
-/// 200, about half the time each (until 2026-12-05). With the bounds
-/// half a sample later, a rounding error smaller than that picks no
-/// other sample: the window holds `cycles · period / interval` samples.
-/// Cost: two binary searches.
+/// A window of whole periods of a flow sampled `period / 200` apart (the
+/// Navier–Stokes model) starts where a sample of the same phase as its
+/// last one lies. Compared as computed, that sample fell inside or
+/// outside by rounding, so a two-period window held 400 or 401 samples
+/// (the same phase counted twice) and a one-period one 199 or 200, about
+/// half the time each; the LDVM's windows (its steps' midpoints, 0.015
+/// chords apart: 606.06 in two periods at 11 Hz) held their length
+/// rounded up (607), one more than the nearest count whenever its
+/// fraction is under a half (until 2026-12-05). With the bounds half
+/// a sample later, a rounding error smaller than that picks no other
+/// sample, and the window holds the whole number of samples nearest
+/// `cycles · period / interval`. Cost: two binary searches.
 pub fn window(history: &History, period: f64, cycles: usize, end: f64) -> std::ops::Range<usize> {
     let time = &history.time;
     let half = match time.len() {
@@ -166,6 +169,24 @@ mod tests {
                 "k {k}"
             );
             assert_eq!(cycle_mean_of(&history, &[], period, 2), 0.0);
+        }
+    }
+
+    /// The LDVM's samples as the discipline takes them: a step of 0.015
+    /// chords, which no period is a multiple of, over four periods. The
+    /// last two hold the whole number of samples nearest their length
+    /// (606 at 11 Hz, k = 0.691, where the bounds of before took 607).
+    #[test]
+    fn a_window_of_fractional_periods_holds_the_nearest_count() {
+        let dt = 0.015;
+        for k in frequencies() {
+            let period = std::f64::consts::PI / k;
+            let steps = (4.0 * period / dt).floor() as usize;
+            let history = indexed((1..=steps).map(|n| (n as f64 - 0.5) * dt).collect());
+            let last = *history.time.last().unwrap();
+            let range = window(&history, period, 2, last);
+            assert_eq!(range.end, steps, "k {k}");
+            assert_eq!(range.len(), (2.0 * period / dt).round() as usize, "k {k}");
         }
     }
 
