@@ -677,7 +677,7 @@ fn a_three_stroke_evaluation_keeps_the_rows_scores() {
 /// seven rows measured first gave 8.1 % and 6.6 %: most of an RMS over
 /// few rows comes from the one or two whose flows wander. Run as one
 /// (2026-12-05, stopped after six rows to leave the machine to CI: 44
-/// min, a CI run beside it for the last 30), it gave the recorded
+/// min, 24 of them beside a CI run), it gave the recorded
 /// scores and long means of rows 1, 2, 3, 10, 11 and 12, to the last
 /// digit in CT but row 2's long mean (0.0874 against 0.0873; the five
 /// windows' printed CTs average 0.08734, so the two lie either side of
