@@ -11,10 +11,11 @@
 //! never late in the device's time while the host keeps the test's
 //! threads running. On a host with more runnable threads than cores the
 //! heartbeat thread can be held off while the firmware idles, and the
-//! link-loss failsafe then fires, as it should: CI on this 2-core
+//! link-loss failsafe then fires, as it should. CI on this 2-core
 //! machine with a 2-thread benchmark beside it failed
 //! `the_core_flies_on_the_emulated_cortex_m4_through_fwav_and_survives_garbage`
-//! so (2026-12-05); alone it passes.
+//! on that failsafe (2026-12-05), most likely so (not traced); alone it
+//! passes.
 
 use std::collections::BTreeMap;
 use std::fs::File;
