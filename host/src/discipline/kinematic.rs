@@ -104,6 +104,33 @@ impl DesignSpace {
         }
     }
 
+    /// The 18 designs of step 1: the L18 array over this space's levels,
+    /// on the columns that support a full quadratic
+    /// ([`l18_quadratic_columns`]), in the array's row order.
+    ///
+    /// # Errors
+    /// [`KinematicError::Method`] if the array cannot be laid out (not for
+    /// a space of three levels a factor).
+    pub fn l18_designs(&self) -> Result<Vec<FlappingKinematics>, KinematicError> {
+        Ok(self.l18_layout()?.2)
+    }
+
+    /// The L18 array, its four columns and the designs they lay out
+    /// ([`Self::l18_designs`]).
+    fn l18_layout(
+        &self,
+    ) -> Result<(OrthogonalArray, Vec<usize>, Vec<FlappingKinematics>), KinematicError> {
+        let array = OrthogonalArray::l18();
+        let columns = l18_quadratic_columns(4).map_err(|e| method(&e))?;
+        let levels: Vec<Vec<f64>> = self.levels().iter().map(|l| l.to_vec()).collect();
+        let plan = array.design(&columns, &levels).map_err(|e| method(&e))?;
+        let designs = plan
+            .iter()
+            .map(|x| FlappingKinematics::from_degrees([x[0], x[1], x[2], x[3]]))
+            .collect();
+        Ok((array, columns, designs))
+    }
+
     fn levels(&self) -> [[f64; 3]; 4] {
         [
             self.frequency_hz,
@@ -567,13 +594,10 @@ struct ArrayRuns {
 impl ArrayRuns {
     /// Lays out the array over `space` and evaluates its rows in parallel.
     fn evaluate(space: &DesignSpace, evaluations: &Evaluations) -> Result<Self, KinematicError> {
-        let array = OrthogonalArray::l18();
-        let columns = l18_quadratic_columns(4).map_err(|e| method(&e))?;
-        let levels: Vec<Vec<f64>> = space.levels().iter().map(|l| l.to_vec()).collect();
-        let plan = array.design(&columns, &levels).map_err(|e| method(&e))?;
-        let runs: Vec<Evaluated> = plan
-            .par_iter()
-            .map(|x| evaluations.run(FlappingKinematics::from_degrees([x[0], x[1], x[2], x[3]])))
+        let (array, columns, designs) = space.l18_layout()?;
+        let runs: Vec<Evaluated> = designs
+            .into_par_iter()
+            .map(|design| evaluations.run(design))
             .collect();
         Ok(Self {
             array,

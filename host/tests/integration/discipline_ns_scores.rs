@@ -513,25 +513,12 @@ fn ns_window_time_step_benchmark() {
 }
 
 /// The 18 rows of the aerodynamic discipline's L18 array over the built-in
-/// design space (as `discipline::kinematic` lays it out; the first
-/// cycle's are listed in `docs/ns-design/l18-384x256.txt`).
+/// design space (`DesignSpace::l18_designs`, as the discipline lays them
+/// out; the first cycle's are listed in `docs/ns-design/l18-384x256.txt`).
 fn l18_rows() -> Vec<FlappingKinematics> {
-    use fwav::discipline::kinematic::DesignSpace;
-    use fwav::optimize::doe::{l18_quadratic_columns, OrthogonalArray};
-    let space = DesignSpace::fwav();
-    let levels = [
-        space.frequency_hz,
-        space.amplitude_deg,
-        space.mean_angle_deg,
-        space.stroke_plane_deg,
-    ]
-    .map(|l| l.to_vec());
-    OrthogonalArray::l18()
-        .design(&l18_quadratic_columns(4).unwrap(), &levels)
+    fwav::discipline::kinematic::DesignSpace::fwav()
+        .l18_designs()
         .unwrap()
-        .iter()
-        .map(|x| FlappingKinematics::from_degrees([x[0], x[1], x[2], x[3]]))
-        .collect()
 }
 
 /// The rows the benchmarks below run are those of the record they are
