@@ -181,6 +181,75 @@ fn default_section_thrust_converges_with_the_wall_cell() {
     assert!(change.1.abs() < 0.03, "CP {:+.1} %", 100.0 * change.1);
 }
 
+/// The effect of the plate's thickness (issue 23: a membrane modelled
+/// as a thin plate of finite thickness with rounded edges, "show the
+/// effect of the thickness you choose"). The plate stands for the
+/// vehicle's section, 0.1 mm of mylar (0.0017 c on the 60 mm mid-span
+/// chord) with 0.6 mm at the carbon leading edge (0.010 c): its
+/// thickness is a modelling error, which the issue's bound for the
+/// resolution (CT and efficiency within 3 % when refined) should hold
+/// as it thins. Asked of the first stroke of the rigid default section
+/// (11 Hz, ±30°, default grid), which starts from rest and is the same
+/// flow from run to run (the later strokes wander,
+/// `NS_WINDOW_SCATTER`): the default 0.04 c against half of it, with a
+/// quarter of it and twice it printed for the trend.
+///
+/// Fails (2026-12-05, 384 x 256, Courant 3; 115 s on one thread beside
+/// other runs): CT 0.0138, 0.0370, 0.0779, 0.1303 at 0.01, 0.02, 0.04,
+/// 0.08 c (0.0594 at 0.03, 0.1088 at 0.06, from the four-stroke
+/// benchmark's first stroke), CP 1.7545, 1.8021, 1.7855, 1.7809: the
+/// thrust grows about in proportion to the thickness while the power
+/// stays within 3 %. Halved, CT −52.6 % and efficiency −53.0 %; at the
+/// vehicle's leading edge (0.01 c) 18 % of the default's. The
+/// discipline's evaluation (deforming, strokes 3–4, net;
+/// `discipline_ns_scores::ns_deforming_evaluation_benchmark` with
+/// `FWAV_NS_THICKNESS`) moves alike: CT 0.0319, 0.0493, 0.0881 and
+/// efficiency 0.0118, 0.0188, 0.0339 at 0.01, 0.02, 0.04 c. It is
+/// the suction on the rounded nose, whose frontal area is the
+/// thickness; extrapolated linearly from 0.01 and 0.02 c, the plate of
+/// no thickness would drag (CT about −0.009). Not the grid: 512 nodes
+/// round move CT by +1.4 % at 0.02 c and +1.7 % at 0.04 c. The thinner
+/// plate costs more steps (first stroke: 11,169, 7,971, 5,895, 4,178 at
+/// 0.01, 0.02, 0.04, 0.08 c; its edges' cells are smaller). README, "The plate's
+/// thickness".
+#[test]
+#[ignore = "fails: the plate's thickness sets the thrust (first stroke CT -52.6 % at half the \
+            default 0.04 c; README, \"The plate's thickness\"); heavy (about 2 min): \
+            `cargo test --release -p fwav --test integration -- --ignored --nocapture \
+            viscous_default_section::the_scores_hardly_depend_on_the_plates_thickness`"]
+fn the_scores_hardly_depend_on_the_plates_thickness() {
+    let default = ViscousSection::DEFAULT_THICKNESS;
+    let first_stroke = |thickness: f64| {
+        let clock = std::time::Instant::now();
+        let run = fwav_mid_span_run(&ViscousSection::plate(thickness), 1.0);
+        let (ct, cp) = (mean(&run.history.ct), mean(&run.history.cp));
+        println!(
+            "plate {thickness} c: first stroke CT {ct:.4}, CP {cp:.4}, efficiency {:.4}; {} steps, \
+             {:.0} s",
+            ct / cp,
+            run.steps,
+            clock.elapsed().as_secs_f64()
+        );
+        (ct, ct / cp)
+    };
+    let chosen = first_stroke(default);
+    let half = first_stroke(0.5 * default);
+    first_stroke(0.25 * default);
+    first_stroke(2.0 * default);
+    let change = (half.0 / chosen.0 - 1.0, half.1 / chosen.1 - 1.0);
+    println!(
+        "halved from {default} c: CT {:+.1} %, efficiency {:+.1} %",
+        100.0 * change.0,
+        100.0 * change.1
+    );
+    assert!(change.0.abs() < 0.03, "CT {:+.1} %", 100.0 * change.0);
+    assert!(
+        change.1.abs() < 0.03,
+        "efficiency {:+.1} %",
+        100.0 * change.1
+    );
+}
+
 /// Each stroke's mean CT and CP of a run of `strokes` strokes (its
 /// history ends with the last), each over its period as the aerodynamic
 /// discipline takes its window (`fwav::aero2d::history::cycle_means_until`).
