@@ -209,10 +209,9 @@ fn default_section_thrust_converges_with_the_wall_cell() {
 /// thickness; extrapolated linearly from 0.01 and 0.02 c, the plate of
 /// no thickness would drag (CT about −0.009). Not the grid: 512 nodes
 /// round move CT by −1.4 % at 0.01 c, +1.4 % at 0.02 c and +1.7 % at
-/// 0.04 c. The thinner
-/// plate costs more steps (first stroke: 11,169, 7,971, 5,895, 4,178 at
-/// 0.01, 0.02, 0.04, 0.08 c; its edges' cells are smaller). README, "The plate's
-/// thickness".
+/// 0.04 c. The thinner plate costs more steps (first stroke: 11,169,
+/// 7,971, 5,895, 4,178 at 0.01, 0.02, 0.04, 0.08 c; its edges' cells are
+/// smaller). README, "The plate's thickness".
 #[test]
 #[ignore = "fails: the plate's thickness sets the thrust (first stroke CT -52.6 % at half the \
             default 0.04 c; README, \"The plate's thickness\"); heavy (about 2 min): \
