@@ -3,6 +3,8 @@
 //! mid-span section, and (to come) the structural discipline.
 //!
 //! - [`kinematic`]: the discipline: L18, ANOM, RSM + NSGA-II candidates.
+//! - [`design_space`]: its variables' levels, the L18 designs over them
+//!   and the coded values.
 //! - [`cache`]: evaluations keyed by their inputs, reused on a rerun.
 //! - [`section`]: one evaluation of the aerodynamic discipline: given
 //!   flapping kinematics, the mid-span section's flapping motion and its
@@ -16,6 +18,7 @@
 //! the configuration, the design driver or [`crate::output`].
 
 pub mod cache;
+pub mod design_space;
 pub mod kinematic;
 pub mod section;
 pub mod section_model;
