@@ -19,6 +19,14 @@ fn fwav_mid_span_flow() -> (f64, f64) {
     (case.reynolds(), case.reduced_frequency(11.0))
 }
 
+/// The plate's thickness, chords: `FWAV_NS_THICKNESS` where set, else
+/// the default ([`ViscousSection::DEFAULT_THICKNESS`]; README, "The
+/// plate's thickness").
+pub(crate) fn env_thickness() -> f64 {
+    std::env::var("FWAV_NS_THICKNESS")
+        .map_or(ViscousSection::DEFAULT_THICKNESS, |v| v.parse().unwrap())
+}
+
 /// `cycles` periods of the default FWAV mid-span section flapping at 11
 /// Hz, +-30 deg, stroke plane 90 deg, rigid, as `section`.
 fn fwav_mid_span_run(section: &ViscousSection, cycles: f64) -> fwav::aero2d::viscous::ViscousRun {
@@ -72,7 +80,7 @@ fn fwav_mid_span_run(section: &ViscousSection, cycles: f64) -> fwav::aero2d::vis
 #[test]
 #[ignore = "benchmark (about a minute: 58.2 s on 2026-12-05; 2 min in a slow hour): the default section's 4-cycle viscous evaluation against the issue's 60 s"]
 fn default_section_four_cycles_benchmark() {
-    let thickness: f64 = std::env::var("FWAV_NS_THICKNESS").map_or(0.04, |v| v.parse().unwrap());
+    let thickness = env_thickness();
     let courant: f64 = std::env::var("FWAV_NS_COURANT")
         .map_or(ViscousSection::DEFAULT_COURANT, |v| v.parse().unwrap());
     let cycles: f64 = std::env::var("FWAV_NS_CYCLES").map_or(4.0, |v| v.parse().unwrap());
