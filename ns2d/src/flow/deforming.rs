@@ -157,31 +157,51 @@ fn ring_powers(rho: f64, terms: usize) -> Vec<f64> {
 /// The ring's spectrum of the coefficients `c` = `[a, z0, b_1 …]` into
 /// `buf` (length `nt`; frequency `-k` at `nt - k`), the ring `|ζ| = rho`
 /// whose [`ring_powers`] are `powers`.
+///
+/// Each series has its own loop over the Laurent terms (a branch per
+/// series, not per term): the terms are written, not added to a zeroed
+/// buffer, and each is the product `(factor · b) · power` that a complex
+/// factor `1`, `-m` or `-i m` gives, written out, so the spectrum is the
+/// same to the bit. The loops stop where the ring's powers underflow.
 fn fill(buf: &mut [Complex64], c: &[Complex64], rho: f64, powers: &[f64], series: Series) {
     let nt = buf.len();
-    buf.fill(Complex64::new(0.0, 0.0));
     let i = Complex64::new(0.0, 1.0);
-    let (first, tail) = match series {
-        Series::Value => (c[0] * rho, 1.0),
-        Series::Radial => (c[0] * rho, -1.0),
-        Series::Around => (i * c[0] * rho, 1.0),
+    let zero = Complex64::new(0.0, 0.0);
+    let (first, mean) = match series {
+        Series::Value => (c[0] * rho, c[1]),
+        Series::Radial => (c[0] * rho, zero),
+        Series::Around => (i * c[0] * rho, zero),
     };
-    buf[1] += first;
-    if let Series::Value = series {
-        buf[0] += c[1];
-    }
-    for (k, (b, &power)) in c[2..].iter().zip(powers).enumerate() {
-        if power == 0.0 {
-            break;
+    // The terms `b_m ρ^-m` at frequencies `-m`, `nt - 1` down.
+    let used = powers
+        .iter()
+        .zip(&c[2..])
+        .take_while(|(&power, _)| power != 0.0)
+        .count();
+    let (rest, tail) = buf.split_at_mut(nt - used);
+    let terms = tail.iter_mut().rev().zip(&c[2..]).zip(powers);
+    match series {
+        Series::Value => {
+            for ((out, b), &power) in terms {
+                *out = *b * power;
+            }
         }
-        let m = (k + 1) as f64;
-        let factor = match series {
-            Series::Value => Complex64::new(tail, 0.0),
-            Series::Radial => Complex64::new(tail * m, 0.0),
-            Series::Around => -i * m,
-        };
-        buf[nt - k - 1] += factor * b * power;
+        Series::Radial => {
+            for (m, ((out, b), &power)) in terms.enumerate() {
+                let m = -((m + 1) as f64);
+                *out = Complex64::new(m * b.re * power, m * b.im * power);
+            }
+        }
+        Series::Around => {
+            for (m, ((out, b), &power)) in terms.enumerate() {
+                let m = (m + 1) as f64;
+                *out = Complex64::new(m * b.im * power, -m * b.re * power);
+            }
+        }
     }
+    rest.fill(zero);
+    rest[0] = mean;
+    rest[1] += first;
 }
 
 impl DeformingGrid {
