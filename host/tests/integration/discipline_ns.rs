@@ -6,6 +6,7 @@
 //! convergence on the default section) are `discipline_ns_scores`.
 
 use fwav::aero2d::theory::garrick_plunge;
+use fwav::aero2d::viscous::ViscousSection;
 use fwav::aeroelastic::FlappingKinematics;
 use fwav::config::template::commented_toml;
 use fwav::config::SystemConfig;
@@ -53,7 +54,7 @@ fn section_model_setting_chooses_the_model() {
     let ns = SystemConfig::from_toml("[design]\nsection_model = \"ns\"\n").unwrap();
     assert_eq!(
         ns.section_case().model,
-        SectionFlowModel::Ns(ViscousPlate::new(0.04))
+        SectionFlowModel::Ns(ViscousPlate::new(ViscousSection::DEFAULT_THICKNESS))
     );
     let thick =
         SystemConfig::from_toml("[design]\nsection_model = \"ns\"\nns_thickness = 0.1\n").unwrap();
@@ -155,7 +156,7 @@ fn result(ct: f64) -> SectionResult {
 fn evaluation_cache_keeps_the_models_apart() {
     let design = FlappingKinematics::INITIAL;
     let ldvm = SectionCase::fwav_mid_span();
-    let ns = ns_case(ViscousPlate::new(0.04));
+    let ns = ns_case(ViscousPlate::new(ViscousSection::DEFAULT_THICKNESS));
     let cache = EvaluationCache::new();
     cache.insert(&ldvm, &design, result(0.5));
     assert_eq!(cache.get(&ns, &design), None);
@@ -195,7 +196,7 @@ fn evaluation_cache_keeps_the_models_apart() {
     // grid; a plate written without the key was on the exponential one.
     let exponential = ViscousPlate {
         far: None,
-        ..ViscousPlate::new(0.04)
+        ..ViscousPlate::new(ViscousSection::DEFAULT_THICKNESS)
     };
     assert_eq!(cache.get(&ns_case(exponential), &design), None);
     let mut written = serde_json::to_value(exponential).unwrap();
@@ -322,7 +323,7 @@ fn ns_on_a_deforming_section_says_the_deformation_is_modelled() {
     let deformation = breathing_section();
     let ns = SectionCase {
         deformation: deformation.clone(),
-        ..ns_case(ViscousPlate::new(0.04))
+        ..ns_case(ViscousPlate::new(ViscousSection::DEFAULT_THICKNESS))
     };
     let said = ns.modelled_section();
     println!("{}", said.note);
@@ -339,7 +340,7 @@ fn ns_on_a_deforming_section_says_the_deformation_is_modelled() {
     }
     .modelled_section();
     assert!(ldvm.deformation_modelled, "{}", ldvm.note);
-    let rigid_ns = ns_case(ViscousPlate::new(0.04)).modelled_section();
+    let rigid_ns = ns_case(ViscousPlate::new(ViscousSection::DEFAULT_THICKNESS)).modelled_section();
     assert!(!rigid_ns.deformation_given && !rigid_ns.deformation_modelled);
     assert!(
         rigid_ns.note.starts_with("ns: rigid plate"),

@@ -334,7 +334,7 @@ fn relative_deviation(values: &[f64]) -> f64 {
 #[ignore = "benchmark (about 3 min: 172 s on 2026-12-05; 5 min in a slow hour): `cargo test --release -p fwav --test integration -- --ignored --nocapture viscous_default_section::ns_evaluation_window_scatter_benchmark`"]
 fn ns_evaluation_window_scatter_benchmark() {
     use fwav::discipline::section_model::NS_WINDOW_SCATTER;
-    let section = ViscousSection::plate(0.04);
+    let section = ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS);
     let run = fwav_mid_span_run(&section, 12.0);
     let (windows, thrust, efficiency) = window_scatter(&run.history);
     println!(
