@@ -199,8 +199,9 @@ fn fill(buf: &mut [Complex64], c: &[Complex64], rho: f64, powers: &[f64], series
             }
         }
     }
+    // Added to zero, as a sum has them (`-0.0` becomes `0.0`).
     rest.fill(zero);
-    rest[0] = mean;
+    rest[0] += mean;
     rest[1] += first;
 }
 
