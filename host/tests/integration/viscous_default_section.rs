@@ -172,7 +172,7 @@ fn default_section_thrust_converges_with_the_wall_cell() {
             ..ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS)
         };
         let run = fwav_mid_span_run(&section, 1.0);
-        (mean(&run.history.ct), mean(&run.history.cp))
+        stroke_means(&run.history, 1)[0]
     };
     let layers = ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS).first_cell_layers;
     let (ct, cp) = first_stroke(layers);
@@ -230,7 +230,7 @@ fn the_scores_hardly_depend_on_the_plates_thickness() {
     let first_stroke = |thickness: f64| {
         let clock = std::time::Instant::now();
         let run = fwav_mid_span_run(&ViscousSection::plate(thickness), 1.0);
-        let (ct, cp) = (mean(&run.history.ct), mean(&run.history.cp));
+        let (ct, cp) = stroke_means(&run.history, 1)[0];
         println!(
             "plate {thickness} c: first stroke CT {ct:.4}, CP {cp:.4}, efficiency {:.4}; {} steps, \
              {:.0} s",
