@@ -138,7 +138,7 @@ impl SectionFlowModel {
 /// RMS over 18 rows is itself uncertain by about a sixth, and most of it
 /// comes from the few rows whose flows wander. The rows that moved (on
 /// 384 × 320) most, at a step half the default's
-/// (Courant 1.5, `discipline_ns_scores::ns_window_time_step_benchmark`), were
+/// (Courant 1.5, `discipline_ns_scatter::ns_window_time_step_benchmark`), were
 /// as far from Courant 3's (Courant 3's CT −9.9 %, −4.3 %, −9.8 %,
 /// −0.6 % from Courant 1.5's for rows 4, 14, 18 and the initial design,
 /// row 2): the window's scores do not converge with the step; they
@@ -153,7 +153,7 @@ impl SectionFlowModel {
 /// converged score (each of the 18 rows' mean over strokes 3–12 of an
 /// independent twelve-stroke run at Courant 4; 2026-12-05,
 /// `docs/ns-design/long-means-384x256.txt`,
-/// `discipline_ns_scores::the_declared_scatter_agrees_with_the_rows_error_against_their_long_means`),
+/// `discipline_ns_scatter::the_declared_scatter_agrees_with_the_rows_error_against_their_long_means`),
 /// with the deviations' mean (+2.6 % and +1.7 %, common to every design)
 /// and [`NS_LONG_MEAN_SCATTER`] taken out, one evaluation's error is
 /// 5.84 % and 4.62 %: within the 17 % by which a standard deviation
@@ -161,7 +161,7 @@ impl SectionFlowModel {
 /// figures stand.
 ///
 /// From window to window of one 12-stroke run (strokes 3 to 12 as five
-/// windows of two; `discipline_ns_scores::ns_deforming_window_scatter_benchmark`,
+/// windows of two; `discipline_ns_scatter::ns_deforming_window_scatter_benchmark`,
 /// `viscous_default_section::ns_evaluation_window_scatter_benchmark`)
 /// the scatter is smaller, as these designs' flows settle:
 ///
@@ -191,7 +191,7 @@ pub const NS_LONG_MEAN_STROKES: usize = 10;
 /// Measured on the default grid (384 × 256, the far field coarsened;
 /// 2026-12-05, the binary of `780427c`; twelve strokes each at Courant 4
 /// and 3, one thread each, two runs at a time;
-/// `discipline_ns_scores::ns_deforming_window_scatter_benchmark`, whose
+/// `discipline_ns_scatter::ns_deforming_window_scatter_benchmark`, whose
 /// five windows' mean this is) on the same seven of the 18 rows as on
 /// 384 × 320 (below), the default section deforming as the default
 /// design's first system analysis found:

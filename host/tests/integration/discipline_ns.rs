@@ -2,8 +2,9 @@
 //! (`[design] section_model = "ns"`): the setting, the evaluation cache
 //! keeping the models apart, one evaluation end to end on a coarse grid,
 //! and what was modelled said wherever results are reported. The heavy
-//! measurements of the model's scores (their cost, scatter and
-//! convergence on the default section) are `discipline_ns_scores`.
+//! measurements of the model's scores on the default section are
+//! `discipline_ns_scores` (their cost, the rows' records) and
+//! `discipline_ns_scatter` (their scatter and convergence).
 
 use fwav::aero2d::theory::garrick_plunge;
 use fwav::aero2d::viscous::ViscousSection;

@@ -20,6 +20,7 @@ mod design;
 mod design_safety;
 mod discipline;
 mod discipline_ns;
+mod discipline_ns_scatter;
 mod discipline_ns_scores;
 mod input_checks;
 mod optimize;
