@@ -192,15 +192,8 @@ impl Deformation {
         let omega = std::f64::consts::TAU / self.period;
         let phase = omega * t;
         for (h, row) in self.spectrum.iter().enumerate() {
-            // The harmonic's frequency (signed), and the Nyquist's split.
-            let terms: &[(f64, f64)] = if 2 * h == n {
-                &[(0.5, h as f64), (0.5, -(h as f64))]
-            } else if 2 * h < n {
-                &[(1.0, h as f64)]
-            } else {
-                &[(1.0, h as f64 - n as f64)]
-            };
-            for &(weight, f) in terms {
+            let (terms, count) = trigonometric_terms(h, n);
+            for &(weight, f) in &terms[..count] {
                 let e = Complex64::from_polar(weight, f * phase);
                 let d = Complex64::new(0.0, f * omega);
                 let (e1, e2) = (e * d, e * d * d);
@@ -218,6 +211,24 @@ impl Deformation {
     #[must_use]
     pub fn map_at(&self, t: f64) -> SectionMap {
         self.state(t).map()
+    }
+}
+
+/// How harmonic `h` of the discrete Fourier transform of `n` equally
+/// spaced samples enters their trigonometric interpolation: its first
+/// `count` terms `(weight, frequency)`, the frequency in cycles a period
+/// and signed (`h` below `n/2`, `h - n` above), the Nyquist harmonic of
+/// an even `n` split half and half between `±n/2` (taken as its cosine,
+/// so a real history stays real between its samples).
+#[must_use]
+pub fn trigonometric_terms(h: usize, n: usize) -> ([(f64, f64); 2], usize) {
+    let f = h as f64;
+    if 2 * h == n {
+        ([(0.5, f), (0.5, -f)], 2)
+    } else if 2 * h < n {
+        ([(1.0, f), (0.0, 0.0)], 1)
+    } else {
+        ([(1.0, f - n as f64), (0.0, 0.0)], 1)
     }
 }
 

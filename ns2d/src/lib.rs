@@ -101,7 +101,7 @@ mod stream;
 mod stretch;
 
 pub use contour::Contour;
-pub use deformation::{Deformation, MapState};
+pub use deformation::{trigonometric_terms, Deformation, MapState};
 pub use error::NsError;
 pub use flow::{Flow, WallLoads};
 pub use grid::{GridSpec, OGrid};

@@ -310,7 +310,17 @@ impl SectionCase {
                 let run = if self.deformation.is_empty() {
                     section.run(path, self.reynolds(), duration)?
                 } else {
-                    section.run_deforming(path, self.reynolds(), duration, &self.samples())?
+                    let samples = self.samples();
+                    match plate.shape_tolerance {
+                        Some(tolerance) => section.run_deflecting(
+                            path,
+                            self.reynolds(),
+                            duration,
+                            &samples,
+                            tolerance,
+                        )?,
+                        None => section.run_deforming(path, self.reynolds(), duration, &samples)?,
+                    }
                 };
                 run.history
             }

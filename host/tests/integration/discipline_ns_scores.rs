@@ -360,6 +360,101 @@ fn ns_deforming_evaluation_benchmark() {
     assert!(seconds[1] < 60.0, "the issue's 60 s: {:.1} s", seconds[1]);
 }
 
+/// The deforming default section's deformation taken three ways, at the
+/// built-in initial kinematics ([`ViscousPlate::shape_tolerance`],
+/// `ViscousSection::run_deflecting`): all on the moving grid (`None`,
+/// the default), or its rigid part (heave ±0.13 c, pitch ±1.4°) as the
+/// frame's motion and its change of shape (at most 1.05e-3 c) on the
+/// moving grid (`Some(0)`) or left out (`Some(0.01)`); and the rigid
+/// part alone on the moving grid (each sample's straight mid-line
+/// carried by its fit) or as the frame, and twice the change of shape.
+/// Prints the first stroke's means (and strokes 3–4 as the discipline
+/// scores them when there are four), with each run's time.
+/// `FWAV_NS_CYCLES` sets the strokes (at least 3, the fewest an
+/// evaluation takes), `FWAV_NS_ONLY` runs one way (its name as
+/// printed), `env_plate`'s variables set the plate.
+///
+/// Measured (2026-12-06, 384 × 256, three strokes, one thread each,
+/// beside other runs; the first stroke's CT and CP; README, "The
+/// deformation's rigid part"):
+///
+/// | way | Courant 3 | Courant 1.5 | Courant 0.75 |
+/// | --- | --- | --- | --- |
+/// | all on the moving grid | 0.10376, 2.7553 (122.6 s) | 0.10423, 2.7349 | 0.10343, 2.7354 |
+/// | shape on the moving grid | 0.09973, 2.7248 | 0.10091, 2.7171 | 0.10131, 2.7155 |
+/// | shape left out | 0.09785, 2.7306 (76.8 s) | 0.09788, 2.7267 | |
+/// | rigid part alone, on the moving grid | 0.10200, 2.7531 | 0.09969, 2.7393 | |
+/// | rigid part alone as the frame | 0.09788, 2.7303 | | |
+/// | twice the shape's change | 0.10165, 2.7215 | | |
+///
+/// The rigid part as the frame is converged in the step (+0.03 % at
+/// Courant 1.5); on the moving grid it is 4.2 % above that at Courant 3
+/// and 1.9 % at 1.5 (first order in the grid's own motion within a step,
+/// `fwav-ns2d`'s `flow/deforming.rs`). The change of shape moves CT by
+/// 3.7 % at the step's limit (about 0.1015): it may not be left out.
+#[test]
+#[ignore = "benchmark (about 8 min for the six ways): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_deflected_evaluation_benchmark`"]
+fn ns_deflected_evaluation_benchmark() {
+    let cycles = std::env::var("FWAV_NS_CYCLES").map_or(3, |v| v.parse().unwrap());
+    let plate = env_plate();
+    let design = FlappingKinematics::INITIAL;
+    let real = deforming_case(plate).deformation;
+    let fitted: Vec<Vec<[f64; 2]>> = real.iter().map(|s| rigid_fit(s)).collect();
+    let doubled: Vec<Vec<[f64; 2]>> = real
+        .iter()
+        .zip(&fitted)
+        .map(|(r, f)| {
+            r.iter()
+                .zip(f)
+                .map(|(a, b)| [2.0 * a[0] - b[0], 2.0 * a[1] - b[1]])
+                .collect()
+        })
+        .collect();
+    let ways = [
+        ("shape left out", Some(0.01), &real),
+        ("shape on the moving grid", Some(0.0), &real),
+        ("all on the moving grid", None, &real),
+        ("rigid part alone, on the moving grid", None, &fitted),
+        (
+            "rigid part alone as the frame, on the moving grid",
+            Some(0.0),
+            &fitted,
+        ),
+        (
+            "twice the shape's change, on the moving grid",
+            Some(0.0),
+            &doubled,
+        ),
+    ];
+    let only = std::env::var("FWAV_NS_ONLY").ok();
+    for (name, shape_tolerance, deformation) in ways {
+        if only.as_deref().is_some_and(|o| o != name) {
+            continue;
+        }
+        let case = SectionCase {
+            cycles,
+            deformation: deformation.clone(),
+            ..deforming_case(ViscousPlate {
+                shape_tolerance,
+                ..plate
+            })
+        };
+        let clock = std::time::Instant::now();
+        let (history, _) = case.history(&design).unwrap();
+        let seconds = clock.elapsed().as_secs_f64();
+        let strokes = crate::viscous_default_section::stroke_means(&history, cycles);
+        print!(
+            "{name}: {seconds:.1} s; first stroke CT {:.5}, CP {:.5}",
+            strokes[0].0, strokes[0].1
+        );
+        if cycles >= 4 {
+            let (ct, efficiency) = crate::viscous_default_section::window_of(&strokes[2..4]);
+            print!("; strokes 3-4 CT {ct:.5}, efficiency {efficiency:.5}");
+        }
+        println!();
+    }
+}
+
 /// The 18 rows of the aerodynamic discipline's L18 array over the built-in
 /// design space (`DesignSpace::l18_designs`, as the discipline lays them
 /// out; the first cycle's are listed in `docs/ns-design/l18-384x256.txt`).
@@ -390,4 +485,25 @@ fn the_l18_rows_are_the_records() {
         .collect();
     let planned: Vec<[f64; 4]> = l18_rows().iter().map(FlappingKinematics::degrees).collect();
     assert_eq!(planned, recorded);
+}
+
+/// `sample`'s straight mid-line carried and turned by its rigid fit.
+pub(crate) fn rigid_fit(sample: &[[f64; 2]]) -> Vec<[f64; 2]> {
+    use fwav::aero2d::viscous::RigidDeflection;
+    use fwav_ns2d::Complex64;
+    let points: Vec<(f64, f64)> = sample.iter().map(|p| (p[0], p[1])).collect();
+    let d = RigidDeflection::fit(std::slice::from_ref(&points), 0.5, 1.0)
+        .unwrap()
+        .state(0.0);
+    let turn = Complex64::from_polar(1.0, d.angle);
+    let mut s = 0.0;
+    let mut out = Vec::new();
+    for (i, p) in points.iter().enumerate() {
+        if i > 0 {
+            s += (p.0 - points[i - 1].0).hypot(p.1 - points[i - 1].1);
+        }
+        let z = Complex64::new(0.5, 0.0) + d.translation + turn * (s - 0.5);
+        out.push([z.re, z.im]);
+    }
+    out
 }

@@ -66,9 +66,12 @@ fn a_spin_up_on_a_coarser_grid_hands_over_to_the_full_grid() {
         ..full.clone()
     };
     let clock = std::time::Instant::now();
-    let reference = full.run(path, re, 3.0 * period).unwrap();
-    let run = spun.run(path, re, 3.0 * period).unwrap();
-    let coarse = full.spin_up_grid().run(path, re, 3.0 * period).unwrap();
+    let reference = full.run(path.clone(), re, 3.0 * period).unwrap();
+    let run = spun.run(path.clone(), re, 3.0 * period).unwrap();
+    let coarse = full
+        .spin_up_grid()
+        .run(path.clone(), re, 3.0 * period)
+        .unwrap();
     let h = &run.history;
     assert_eq!(h.time.len(), 600);
     assert!((h.time[599] - 3.0 * period).abs() < 1e-9);
@@ -108,7 +111,7 @@ fn a_spin_up_on_a_coarser_grid_hands_over_to_the_full_grid() {
                 },
             }
         } else {
-            path
+            path.clone()
         };
         let section = ViscousSection {
             spin_up_periods,

@@ -5,6 +5,7 @@
 
 use fwav_ns2d::{Complex64, FrameState};
 
+use super::deflection::RigidDeflection;
 use crate::aero2d::motion::{Motion, PitchRamp, SectionFlapping};
 
 /// The peak rate of [`SectionPath::Still`]'s start-up turn for a mirror
@@ -17,7 +18,7 @@ pub const STILL_KICK_RATE: f64 = 0.05;
 pub const STILL_KICK_CHORDS: f64 = 2.0;
 
 /// How the section moves, in chords and chords travelled (`c = U = 1`).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum SectionPath {
     /// Harmonic plunge and pitch about a pivot (`fwav aero2d`'s).
     Harmonic(Motion),
@@ -25,6 +26,12 @@ pub enum SectionPath {
     /// of an inclined stroke plane, no pitch (the aerodynamic
     /// discipline's); the frame's origin is at mid-chord.
     Flapping(SectionFlapping),
+    /// The flapping section carried and turned besides by the rigid part
+    /// of its deformation (the wing's bending and twist at the section:
+    /// [`RigidDeflection`]), the frame's origin at mid-chord: a deforming
+    /// section whose shape hardly changes, run on a grid that moves only
+    /// with the frame.
+    Deflected(SectionFlapping, Box<RigidDeflection>),
     /// A section at rest in the stream pitched nose-up by Eldredge's ramp
     /// about `pivot` (chords from the leading edge): the LDVM paper's
     /// case 1 (no period).
@@ -58,7 +65,7 @@ impl SectionPath {
     pub(super) fn pivot(&self) -> f64 {
         match self {
             Self::Harmonic(m) => m.pivot,
-            Self::Flapping(_) => 0.5,
+            Self::Flapping(_) | Self::Deflected(..) => 0.5,
             Self::Ramp { pivot, .. } | Self::Still { pivot, .. } => *pivot,
         }
     }
@@ -66,7 +73,7 @@ impl SectionPath {
     pub(super) fn reduced_frequency(&self) -> f64 {
         match self {
             Self::Harmonic(m) => m.reduced_frequency,
-            Self::Flapping(f) => f.reduced_frequency,
+            Self::Flapping(f) | Self::Deflected(f, _) => f.reduced_frequency,
             Self::Ramp { .. } | Self::Still { .. } => 0.0,
         }
     }
@@ -94,6 +101,11 @@ impl SectionPath {
                 let (x, _, h, _) = f.at(t);
                 (x, h, 0.0)
             }
+            Self::Deflected(f, d) => {
+                let (x, _, h, _) = f.at(t);
+                let s = d.state(t);
+                (x + s.translation.re, h + s.translation.im, -s.angle)
+            }
             Self::Ramp { ramp, .. } => (0.0, 0.0, ramp.at(t).0),
             // The start-up turn included.
             Self::Still { .. } => (0.0, 0.0, -fwav_ns2d::Motion::state(self, t).angle),
@@ -116,6 +128,15 @@ impl SectionPath {
                 let w = 2.0 * f.reduced_frequency;
                 let (_, dx, _, dh) = f.at(0.0);
                 (1.0 + f.radius * f.amplitude.abs() * w, (1.0 - dx).hypot(dh))
+            }
+            Self::Deflected(f, d) => {
+                let w = 2.0 * f.reduced_frequency;
+                let (_, dx, _, dh) = f.at(0.0);
+                let v = d.state(0.0).velocity;
+                (
+                    1.0 + f.radius * f.amplitude.abs() * w + d.peak_speed(0.5),
+                    (1.0 - dx - v.re).hypot(dh + v.im),
+                )
             }
             Self::Ramp { pivot, ramp } => {
                 let arm = pivot.max(1.0 - pivot);
@@ -153,6 +174,20 @@ impl fwav_ns2d::Motion for SectionPath {
                     velocity: Complex64::new(dx - 1.0, dh),
                     acceleration: Complex64::new(ddx, ddh),
                     ..FrameState::default()
+                }
+            }
+            Self::Deflected(f, d) => {
+                // The flapping frame's motion, and the deflection's in
+                // the same (fixed) axes.
+                let (_, dx, _, dh) = f.at(t);
+                let (ddx, ddh) = f.acceleration(t);
+                let s = d.state(t);
+                FrameState {
+                    velocity: Complex64::new(dx - 1.0, dh) + s.velocity,
+                    acceleration: Complex64::new(ddx, ddh) + s.acceleration,
+                    angle: s.angle,
+                    rate: s.rate,
+                    angular_acceleration: s.angular_acceleration,
                 }
             }
             Self::Ramp { ramp, .. } => {
