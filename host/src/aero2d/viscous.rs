@@ -605,16 +605,18 @@ impl ViscousSection {
     /// [`SectionPath::Flapping`], or samples [`RigidDeflection::fit`]
     /// cannot hold, run as [`Self::run_deforming`].
     ///
-    /// Why (module docs, "The deformation's rigid part"): the moving
-    /// grid is first order in its own motion within a step, so the
-    /// default FWAV section's heave of ±0.13 chords given as deformation
-    /// put its first stroke's CT 4.2 % above the frame's at Courant 3 (1.9
-    /// % at 1.5); given as the frame, the same motion is converged in the
-    /// step (0.03 %). The grid's motion also costs half again a rigid
-    /// step, which the section without its change of shape does not pay;
-    /// but the default section's change of shape, 1.05e-3 chords, moves
-    /// CT by 3.7 %, and the discipline keeps it (README, "The
-    /// deformation's rigid part").
+    /// Why (README, "The deformation's rigid part"): the moving grid is
+    /// first order in its own motion within a step, so the default FWAV
+    /// section's rigid part (a heave of ±0.13 chords, a pitch of ±1.4°)
+    /// given as deformation put its first stroke's CT 4.2 % above the
+    /// frame's at Courant 3 and 1.9 % at 1.5 (the pitch's: the heave
+    /// alone agrees within 0.5 %); given as the frame, the same motion is
+    /// converged in the step (0.03 %). The grid's motion
+    /// also costs half again a rigid step, which the section without its
+    /// change of shape does not pay; but the default section's change of
+    /// shape, 1.05e-3 chords, moves CT by 3.7 %, and the discipline keeps
+    /// the whole deformation on the moving grid
+    /// ([`crate::discipline::section_model::ViscousPlate::shape_tolerance`]).
     ///
     /// # Errors
     /// As [`Self::run_deforming`].

@@ -266,9 +266,10 @@ pub struct ViscousPlate {
     /// of the time). No `[design]` setting (README, "The deformation's
     /// rigid part"): on the default section the change of shape, 1.05e-3
     /// chords, moves the first stroke's CT by 3.7 % at the step's limit,
-    /// so it may not be left out; and the default way is as converged in
-    /// the step at Courant 3 (within 0.5 % of Courant 1.5 and 0.75) as
-    /// the split way (1.5 %), the two settling about 2 % apart.
+    /// so it may not be left out; and the default way's CT at Courant 3
+    /// is within 0.5 % of Courant 1.5's and 0.75's (CP 0.75 %), the split
+    /// way's 1.6 % from Courant 0.75's (CP 0.35 %), the two settling
+    /// about 2 % apart.
     ///
     /// [`RigidDeflection`]: crate::aero2d::viscous::RigidDeflection
     #[serde(default)]

@@ -323,7 +323,7 @@ fn a_rigid_deformation_is_the_frames_motion() {
         .unwrap()
         .samples
         .iter()
-        .map(|s| rigid_fit(s))
+        .map(|s| rigid_fit(s, true))
         .collect();
     let kinematics = FlappingKinematics::INITIAL;
     let run = |shape_tolerance| {

@@ -13,7 +13,8 @@
 //! Given as the frame, the default section's rigid part is converged in
 //! the time step; given as deformation, its first stroke's CT is 4.2 %
 //! high at Courant 3, the moving grid being first order in its own
-//! motion within a step. Its change of shape, small as it is, moves CT by
+//! motion within a step (the pitch's: the heave alone agrees within
+//! 0.5 %). Its change of shape, small as it is, moves CT by
 //! 3.7 %, so the default leaves nothing out and keeps the whole
 //! deformation on the moving grid (README, "The deformation's rigid
 //! part"; [`super::ViscousSection::run_deflecting`]).

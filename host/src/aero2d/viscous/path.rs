@@ -28,9 +28,10 @@ pub enum SectionPath {
     Flapping(SectionFlapping),
     /// The flapping section carried and turned besides by the rigid part
     /// of its deformation (the wing's bending and twist at the section:
-    /// [`RigidDeflection`]), the frame's origin at mid-chord: a deforming
-    /// section whose shape hardly changes, run on a grid that moves only
-    /// with the frame.
+    /// [`RigidDeflection`]), the frame's origin at mid-chord: the frame
+    /// of a deforming section whose change of shape beyond that part is
+    /// left out or runs on the moving grid
+    /// ([`super::ViscousSection::run_deflecting`]).
     Deflected(SectionFlapping, Box<RigidDeflection>),
     /// A section at rest in the stream pitched nose-up by Eldredge's ramp
     /// about `pivot` (chords from the leading edge): the LDVM paper's
