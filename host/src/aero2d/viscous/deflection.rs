@@ -31,9 +31,9 @@
 
 use fwav_ns2d::{trigonometric_terms, Complex64};
 
-/// Most samples a [`RigidDeflection`] holds: its spectrum is a fixed
-/// array, so that [`super::SectionPath`] stays a plain value. A history
-/// of more samples is not fitted (it runs on the moving grid).
+/// Most samples a [`RigidDeflection`] holds (its spectrum is a fixed
+/// array: a plain value, evaluated every step without allocating). A
+/// history of more samples is not fitted (it runs on the moving grid).
 pub const MAX_DEFLECTION_SAMPLES: usize = 64;
 
 /// The rigid part of a periodic deformation history (module docs), in the
