@@ -262,8 +262,9 @@ pub struct ViscousPlate {
     /// its rigid part (the wing's bending and twist at the section,
     /// [`RigidDeflection`]) as the frame's motion and its change of shape
     /// beyond that on the moving grid, or left out when it is at most `t`
-    /// chords (the undeformed plate carried and turned: about two thirds
-    /// of the time). No `[design]` setting (README, "The deformation's
+    /// chords (the undeformed plate carried and turned: 0.63 of the
+    /// moving grid's time on one thread, 0.85 on two). No `[design]`
+    /// setting (README, "The deformation's
     /// rigid part"): on the default section the change of shape, 1.05e-3
     /// chords, moves the first stroke's CT by 3.7 % at the step's limit,
     /// so it may not be left out; and the default way's CT at Courant 3
