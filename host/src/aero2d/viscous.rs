@@ -58,12 +58,10 @@
 //! discipline does not spin up
 //! ([`crate::discipline::section_model::ViscousPlate::spin_up`]).
 
-use fwav_ns2d::{
-    Complex64, Contour, Deformation, FarStretch, Flow, GridSpec, NsError, SectionMap,
-    MAX_FAR_GROWTH,
-};
+use fwav_ns2d::{Complex64, Contour, FarStretch, Flow, GridSpec, SectionMap, MAX_FAR_GROWTH};
 
 mod deflection;
+mod deforming;
 mod error;
 mod march;
 mod path;
@@ -377,61 +375,6 @@ impl ViscousSection {
         self.around / 2
     }
 
-    /// The deformation history through `samples` over `period` (chords
-    /// travelled), sample `i` at `i · period / n`, in the section's
-    /// kinematic frame (chords, leading edge at (0, 0)), the pitch axis
-    /// `pivot` put at the origin: for the plate, mid-lines from the
-    /// leading to the trailing edge, each the mid-line of a membrane of
-    /// the plate's thickness ([`Contour::membrane`]) shortened by half the
-    /// thickness at each end, so that a flat sample is the rigid plate;
-    /// for a contour or an ellipse, whole contours
-    /// ([`ViscousShape::from_points`]). Each shape is drawn on the same
-    /// number of points, the `i`-th the same point of the section, which
-    /// [`Deformation::of_shapes`] follows. Cost: a map fit a sample (a
-    /// few ms each).
-    fn deformation(
-        &self,
-        pivot: f64,
-        samples: &[Vec<(f64, f64)>],
-        period: f64,
-    ) -> Result<Deformation, ViscousError> {
-        let terms = self.laurent_terms();
-        let n = samples.len();
-        let shift = |z: &Complex64| (z.re - pivot, z.im);
-        let maps = samples
-            .iter()
-            .enumerate()
-            .map(|(sample, points)| {
-                let failed = |source: NsError| ViscousError::DeformedShape {
-                    sample,
-                    samples: n,
-                    source,
-                };
-                let contour = match &self.shape {
-                    ViscousShape::Plate(t) => {
-                        let midline = shortened_midline(points, 0.5 * t);
-                        Contour::membrane(&midline, *t, CONTOUR_POINTS).map_err(failed)?
-                    }
-                    ViscousShape::Ellipse(_) | ViscousShape::Contour(_) => {
-                        // A sharp trailing edge made blunt, as the rigid
-                        // section's (`from_points` gives a contour).
-                        let blunt = match ViscousShape::from_points(points) {
-                            Ok(ViscousShape::Contour(p)) => p,
-                            Ok(_) => points.clone(),
-                            Err(ViscousError::Solver(e)) => return Err(failed(e)),
-                            Err(e) => return Err(e),
-                        };
-                        Contour::from_points(&blunt).map_err(failed)?
-                    }
-                };
-                let points: Vec<(f64, f64)> = contour.points().iter().map(shift).collect();
-                let contour = Contour::from_points(&points).map_err(failed)?;
-                SectionMap::from_contour_with_angles(&contour, terms).map_err(failed)
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        Ok(Deformation::of_shapes(&maps, period)?)
-    }
-
     /// The grid of this resolution for the map `map` at `reynolds`.
     fn grid(&self, map: &SectionMap, reynolds: f64) -> GridSpec {
         // The first cell's physical height over its height in ξ is
@@ -485,43 +428,6 @@ pub struct ViscousRun {
     pub surface: SurfaceLoads,
 }
 
-/// The mid-line `points` (leading to trailing edge) shortened by `cut`
-/// of its length at each end (the membrane's semicircular ends add it
-/// back); unchanged when shorter than `4 cut`.
-fn shortened_midline(points: &[(f64, f64)], cut: f64) -> Vec<(f64, f64)> {
-    let length: f64 = points
-        .windows(2)
-        .map(|p| (p[1].0 - p[0].0).hypot(p[1].1 - p[0].1))
-        .sum();
-    if length.is_nan() || length <= 4.0 * cut {
-        return points.to_vec();
-    }
-    // The leading end's cut; then the reversed line's.
-    let trim = |line: &[(f64, f64)]| -> Vec<(f64, f64)> {
-        let mut left = cut;
-        for (i, p) in line.windows(2).enumerate() {
-            let d = (p[1].0 - p[0].0).hypot(p[1].1 - p[0].1);
-            if d > left {
-                let f = left / d;
-                let start = (
-                    p[0].0 + f * (p[1].0 - p[0].0),
-                    p[0].1 + f * (p[1].1 - p[0].1),
-                );
-                let mut out = vec![start];
-                out.extend_from_slice(&line[i + 1..]);
-                return out;
-            }
-            left -= d;
-        }
-        line.to_vec()
-    };
-    let mut reversed = trim(points);
-    reversed.reverse();
-    let mut out = trim(&reversed);
-    out.reverse();
-    out
-}
-
 impl ViscousSection {
     /// Runs `path` at `reynolds` for `duration` chords travelled,
     /// sampling the loads every `period / 200` (or `duration / 2000`
@@ -553,95 +459,6 @@ impl ViscousSection {
                 Ok(Flow::new(&map, spec, path, 1.0 / reynolds)?)
             };
         self.run_flows(build, path, reynolds, duration)
-    }
-
-    /// [`Self::run`] with the section deforming through `samples` over
-    /// each period of `path` (sample `i` at `i · period / n`), in the
-    /// section's kinematic frame (chords, leading edge at (0, 0)): for the
-    /// plate, mid-lines from the leading to the trailing edge, each the
-    /// mid-line of a membrane of the plate's thickness shortened by half
-    /// the thickness at each end (so that a flat sample is the rigid
-    /// plate); for a contour or an ellipse, whole contours. The grid moves
-    /// to each step's map ([`Flow::deforming`]). Cost: the rigid run's
-    /// and the grid's motion, three inverse FFTs a ring a step: 81.0 s
-    /// for the default section's 4 cycles deforming as the built-in
-    /// design's first system analysis found, 55.7 s rigid (384 × 256,
-    /// 2026-12-05; `discipline_ns_scores::ns_deforming_evaluation_benchmark`).
-    ///
-    /// # Errors
-    /// As [`Self::run`]; [`ViscousError::DeformingWithoutPeriod`] for a
-    /// path without a period, [`ViscousError::DeformedShape`] for a
-    /// sample that cannot be mapped.
-    pub fn run_deforming(
-        &self,
-        path: SectionPath,
-        reynolds: f64,
-        duration: f64,
-        samples: &[Vec<(f64, f64)>],
-    ) -> Result<ViscousRun, ViscousError> {
-        let k = path.reduced_frequency();
-        if k.is_nan() || k <= 0.0 {
-            return Err(ViscousError::DeformingWithoutPeriod);
-        }
-        let period = std::f64::consts::PI / k;
-        let build =
-            |section: &Self, path: SectionPath| -> Result<Flow<SectionPath>, ViscousError> {
-                let deformation = section.deformation(path.pivot(), samples, period)?;
-                let spec = section.grid(&deformation.map_at(0.0), reynolds);
-                Ok(Flow::deforming(deformation, spec, path, 1.0 / reynolds)?)
-            };
-        self.run_flows(build, path, reynolds, duration)
-    }
-
-    /// A flapping section deforming by `samples` (as
-    /// [`Self::run_deforming`] takes them) with the rigid part of its
-    /// deformation ([`RigidDeflection`]: the wing's bending and twist at
-    /// the section) in the moving frame ([`SectionPath::Deflected`]), and
-    /// only its change of shape on the moving grid; or, when the shape
-    /// changes by at most `shape_tolerance` chords beyond that part
-    /// ([`RigidDeflection::shape_change`]), that change left out and the
-    /// undeformed section carried and turned on a grid that moves only
-    /// with the frame ([`Self::run`]). A path other than
-    /// [`SectionPath::Flapping`], or samples [`RigidDeflection::fit`]
-    /// cannot hold, run as [`Self::run_deforming`].
-    ///
-    /// Why (README, "The deformation's rigid part"): the moving grid is
-    /// first order in its own motion within a step, so the default FWAV
-    /// section's rigid part (a heave of ±0.13 chords, a pitch of ±1.4°)
-    /// given as deformation put its first stroke's CT 4.2 % above the
-    /// frame's at Courant 3 and 1.9 % at 1.5 (the pitch's: the heave
-    /// alone agrees within 0.5 %); given as the frame, the same motion is
-    /// converged in the step (0.03 %). The grid's motion
-    /// also costs half again a rigid step, which the section without its
-    /// change of shape does not pay; but the default section's change of
-    /// shape, 1.05e-3 chords, moves CT by 3.7 %, and the discipline keeps
-    /// the whole deformation on the moving grid
-    /// ([`crate::discipline::section_model::ViscousPlate::shape_tolerance`]).
-    ///
-    /// # Errors
-    /// As [`Self::run_deforming`].
-    pub fn run_deflecting(
-        &self,
-        path: SectionPath,
-        reynolds: f64,
-        duration: f64,
-        samples: &[Vec<(f64, f64)>],
-        shape_tolerance: f64,
-    ) -> Result<ViscousRun, ViscousError> {
-        let SectionPath::Flapping(flapping) = path else {
-            return self.run_deforming(path, reynolds, duration, samples);
-        };
-        let period = std::f64::consts::PI / flapping.reduced_frequency;
-        let Some(deflection) = RigidDeflection::fit(samples, path.pivot(), period) else {
-            return self.run_deforming(path, reynolds, duration, samples);
-        };
-        let deflected = SectionPath::Deflected(flapping, Box::new(deflection));
-        if deflection.shape_change() <= shape_tolerance {
-            self.run(deflected, reynolds, duration)
-        } else {
-            let shape = deflection.residual(samples, path.pivot());
-            self.run_deforming(deflected, reynolds, duration, &shape)
-        }
     }
 
     /// The grid of the spin-up ([`Self::spin_up_periods`]): its cells
