@@ -633,18 +633,22 @@ fn ldvm_case1_lift_under_navier_stokes_converges() {
 /// same number of points in the same order (the `i`-th the same point of
 /// the section). A 12 % ellipse's contour pitched ±5° about mid-chord,
 /// given as 24 contours, is the same contour pitched rigidly by the
-/// frame, to the discretization: the lift, thrust and power histories of
-/// the second period differ by 1.2 %, 0.16 % and 0.15 % of each one's
-/// largest value on 128 × 96, and 0.22 %, 0.04 % and 0.04 % on 256 × 192
-/// (the lift's falling fivefold with the grid; about 17 s).
+/// frame, to the contours' maps' fit: the lift, thrust and power
+/// histories of the second period differ by 0.056 %, 0.007 % and 0.13 %
+/// of each one's largest value on 128 × 96, and 0.067 %, 0.007 % and
+/// 0.10 % on 256 × 192 (2026-12-06; about 17 s); held to 0.2 %. The grid
+/// does not change them: the moving grid's rigid part is the frame's to
+/// rounding (`fwav-ns2d`'s `tests/deforming_sections.rs`), and what is
+/// left is each contour's map fitted on its own. Until its rigid part was
+/// split off (2026-12-06), the midpoint rule's sweep added 1.2 %, 0.16 %
+/// and 0.15 % on the coarse grid and 0.22 %, 0.04 % and 0.04 % on the fine.
 #[test]
 fn a_pitch_given_as_contours_is_the_rigid_pitch() {
     let coarse = pitch_as_contours_gap(128, 96);
     let fine = pitch_as_contours_gap(256, 192);
     println!("pitch as contours: CL, CT, CP differ by {coarse:?}, finer grid {fine:?}");
-    assert!(coarse.iter().all(|d| *d < 0.015), "{coarse:?}");
-    assert!(fine.iter().all(|d| *d < 0.005), "{fine:?}");
-    assert!(fine[0] < 0.5 * coarse[0], "{coarse:?} {fine:?}");
+    assert!(coarse.iter().all(|d| *d < 0.002), "{coarse:?}");
+    assert!(fine.iter().all(|d| *d < 0.002), "{fine:?}");
 }
 
 /// The largest differences (CL, CT, CP; second period, of the rigid

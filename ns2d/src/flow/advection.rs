@@ -243,6 +243,10 @@ pub(super) struct RateRows<'a> {
     /// `now + half (now - previous)` ([`super::Flow::step`]).
     pub(super) psi: &'a [f64],
     pub(super) frame_psi: &'a [f64],
+    /// The streamfunction of a deforming grid's rigid part at the nodes
+    /// (`flow/deforming.rs`), taken off as the frame's is; `None` for a
+    /// rigid grid.
+    pub(super) grid_psi: Option<&'a [f64]>,
     pub(super) previous_relative: &'a [f64],
     pub(super) half: f64,
     /// `1/J` at all nodes.
@@ -281,6 +285,11 @@ impl RateRows<'_> {
         {
             *o = p - f;
         }
+        if let Some(grid_psi) = self.grid_psi {
+            for (o, g) in out.iter_mut().zip(self.ring(grid_psi, j)) {
+                *o -= g;
+            }
+        }
     }
 
     /// The relative streamfunction at the step's middle at the corners
@@ -307,13 +316,12 @@ impl RateRows<'_> {
             }
             return;
         }
-        for (((m, s), f), p) in above
+        self.relative_at_start(j + 1, above);
+        for (m, p) in above
             .iter_mut()
-            .zip(self.ring(self.psi, j + 1))
-            .zip(self.ring(self.frame_psi, j + 1))
             .zip(self.ring(self.previous_relative, j + 1))
         {
-            *m = at_middle(s - f, *p, self.half);
+            *m = at_middle(*m, *p, self.half);
         }
         for (k, c) in out.iter_mut().enumerate() {
             let kp = if k + 1 == nt { 0 } else { k + 1 };
@@ -545,6 +553,7 @@ impl<M: Motion> Flow<M> {
             w: &self.omega,
             psi: &self.psi,
             frame_psi: &self.frame_psi,
+            grid_psi: self.deforming.as_ref().map(|d| &d.rigid_psi[..]),
             previous_relative: &self.previous_relative,
             half,
             inv_jac: &g.inv_jac,

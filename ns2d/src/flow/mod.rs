@@ -427,8 +427,10 @@ impl<M: Motion> Flow<M> {
         for k in 0..nt {
             let kp = if k + 1 == nt { 0 } else { k + 1 };
             let km = if k == 0 { nt - 1 } else { k - 1 };
-            // ψr_θ > 0 means outward relative flow (U^ξ = ψr_θ / J).
-            let rel = |kk: usize| self.psi[j * nt + kk] - self.frame_psi[j * nt + kk];
+            // ψr_θ > 0 means outward relative flow (U^ξ = ψr_θ / J; the
+            // grid's rigid part, the one that reaches the outer ring, in
+            // ψr).
+            let rel = |kk: usize| self.relative_at(j * nt + kk).0;
             let outward = rel(kp) - rel(km) > 0.0;
             self.omega[j * nt + k] = if outward {
                 self.omega[(j - 1) * nt + k]
@@ -454,10 +456,11 @@ impl<M: Motion> Flow<M> {
                 let kp = if k + 1 == nt { 0 } else { k + 1 };
                 let km = if k == 0 { nt - 1 } else { k - 1 };
                 let i = j * nt + k;
-                let rel = |n: usize| self.psi[n] - self.frame_psi[n];
+                let rel = |n: usize| self.relative_at(n).0;
                 let jac = g.jac[i];
-                // Less the grid's own motion where the section deforms.
-                let swept = g.dz_dxi[i].conj() * self.grid_velocity(i);
+                // Less the grid's own motion where the section deforms
+                // (its rigid part is in `rel`).
+                let swept = self.relative_at(i).1;
                 let psi_t = (rel(j * nt + kp) - rel(j * nt + km)) / (2.0 * dt) - swept.re;
                 let psi_e = (rel(i + nt) - rel(i - nt)) / (2.0 * de) + swept.im * gp;
                 let adv = (psi_t / (jac * gp)).abs() / de + (psi_e / (gp * jac)).abs() / dt;

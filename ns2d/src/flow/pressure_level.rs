@@ -40,8 +40,9 @@
 //! ```
 //!
 //! The integral is the vorticity's flux across the line relative to it:
-//! `(ẑ×w)·dl = dψr - Re(i w_g conj(z_ξ)) dξ` with `ψr = ψ - ψ_frame` and
-//! `w_g` a deforming grid's own velocity. Across a boundary layer it is
+//! `(ẑ×w)·dl = dψr - Re(i w_g conj(z_ξ)) dξ` with `ψr = ψ - ψ_frame - ψ_g`
+//! and `w_g` a deforming grid's own velocity less its rigid part, whose
+//! streamfunction is `ψ_g` (`flow/deforming.rs`). Across a boundary layer it is
 //! the loss of `|u - v|²/2` to the wall, Bernoulli's jump the layer does
 //! not make in the pressure.
 //!
@@ -76,10 +77,12 @@ impl<M: Motion> Flow<M> {
         let frame = self.frame;
         let rigid = frame.rigid_field();
         let node_velocity = |i: usize| frame.point_velocity(g.z[i]) + self.grid_velocity(i);
-        let relative = |i: usize| self.psi[i] - rigid.streamfunction(g.z[i]);
+        // Relative to a deforming grid's rigid part too, and the rest of
+        // its velocity across a radial line, per unit ξ.
+        let relative =
+            |i: usize| self.psi[i] - rigid.streamfunction(g.z[i]) - self.grid_rigid_psi(i);
         let i_unit = Complex64::new(0.0, 1.0);
-        // A deforming grid's own velocity across a radial line, per unit ξ.
-        let swept = |i: usize| (i_unit * self.grid_velocity(i) * g.dz_dxi[i].conj()).re;
+        let swept = |i: usize| (i_unit * self.swept_rest(i)).re;
         let outer_velocity = self.outer_ring_velocity();
         let sum: f64 = (0..nt)
             .map(|k| {
