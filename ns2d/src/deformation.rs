@@ -140,10 +140,21 @@ impl Deformation {
     /// As [`Self::periodic`]; [`NsError::BadSection`] when the shapes do
     /// not have the same number of points.
     pub fn of_shapes(shapes: &[(SectionMap, Vec<f64>)], period: f64) -> Result<Self, NsError> {
+        Self::periodic(&Self::followed(shapes)?, period)
+    }
+
+    /// The maps of [`Self::of_shapes`]: each shape's map with its circle
+    /// turned to put its points, on the mean, at the first shape's
+    /// angles.
+    ///
+    /// # Errors
+    /// [`NsError::BadSection`] when the shapes do not have the same
+    /// number of points.
+    pub fn followed(shapes: &[(SectionMap, Vec<f64>)]) -> Result<Vec<SectionMap>, NsError> {
         let Some((_, reference)) = shapes.first() else {
-            return Self::periodic(&[], period);
+            return Ok(Vec::new());
         };
-        let maps = shapes
+        shapes
             .iter()
             .map(|(map, angles)| {
                 if angles.len() != reference.len() {
@@ -160,8 +171,7 @@ impl Deformation {
                     .sum();
                 Ok(map.turned_circle(mean.arg()))
             })
-            .collect::<Result<Vec<_>, _>>()?;
-        Self::periodic(&maps, period)
+            .collect()
     }
 
     /// The period.

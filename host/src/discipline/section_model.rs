@@ -267,10 +267,11 @@ pub struct ViscousPlate {
     /// setting (README, "The deformation's
     /// rigid part"): on the default section the change of shape, 1.05e-3
     /// chords, moves the first stroke's CT by 3.7 % at the step's limit,
-    /// so it may not be left out; and the default way's CT at Courant 3
-    /// is within 0.5 % of Courant 1.5's and 0.75's (CP 0.75 %), the split
-    /// way's 1.6 % from Courant 0.75's (CP 0.35 %), the two settling
-    /// about 2 % apart.
+    /// so it may not be left out; and with it on the moving grid the two
+    /// ways are one flow (the first stroke's CT within 0.07 % at Courant
+    /// 3 and 0.03 % at 1.5, since each sample's map is its change of
+    /// shape's moved by its rigid part), whose CT at Courant 3 is 1.6 %
+    /// below Courant 0.75's (CP 0.3 % above).
     ///
     /// [`RigidDeflection`]: crate::aero2d::viscous::RigidDeflection
     #[serde(default)]

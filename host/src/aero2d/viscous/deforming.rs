@@ -19,10 +19,10 @@ impl ViscousSection {
     /// the thickness at each end (so that a flat sample is the rigid
     /// plate); for a contour or an ellipse, whole contours. The grid moves
     /// to each step's map ([`Flow::deforming`]). Cost: the rigid run's
-    /// and the grid's motion, three inverse FFTs a ring a step: 81.0 s
+    /// and the grid's motion, three inverse FFTs a ring a step: 93.1 s
     /// for the default section's 4 cycles deforming as the built-in
-    /// design's first system analysis found, 55.7 s rigid (384 × 256,
-    /// 2026-12-05; `discipline_ns_scores::ns_deforming_evaluation_benchmark`).
+    /// design's first system analysis found, 52.5 s rigid (384 × 256,
+    /// 2026-12-06; `discipline_ns_scores::ns_deforming_evaluation_benchmark`).
     ///
     /// # Errors
     /// As [`Self::run`]; [`ViscousError::DeformingWithoutPeriod`] for a
@@ -61,18 +61,14 @@ impl ViscousSection {
     /// [`SectionPath::Flapping`], or samples [`RigidDeflection::fit`]
     /// cannot hold, run as [`Self::run_deforming`].
     ///
-    /// Why (README, "The deformation's rigid part"): the moving grid is
-    /// first order in its own motion within a step, so the default FWAV
-    /// section's rigid part (a heave of ±0.13 chords, a pitch of ±1.4°)
-    /// given as deformation put its first stroke's CT 4.2 % above the
-    /// frame's at Courant 3 and 1.9 % at 1.5 (the pitch's: the heave
-    /// alone agrees within 0.5 %); given as the frame, the same motion is
-    /// converged in the step (0.03 %). The grid's motion
-    /// also costs half again a rigid step, which the section without its
+    /// Why (README, "The deformation's rigid part"): the grid's motion
+    /// costs half again a rigid step, which the section without its
     /// change of shape does not pay; but the default section's change of
     /// shape, 1.05e-3 chords, moves CT by 3.7 %, and the discipline keeps
     /// the whole deformation on the moving grid
-    /// ([`crate::discipline::section_model::ViscousPlate::shape_tolerance`]).
+    /// ([`crate::discipline::section_model::ViscousPlate::shape_tolerance`]),
+    /// where [`Self::run_deforming`] gives the same flow as this with the
+    /// change of shape on the grid (the first stroke's CT within 0.07 %).
     ///
     /// # Errors
     /// As [`Self::run_deforming`].
@@ -110,18 +106,62 @@ impl ViscousSection {
     /// for a contour or an ellipse, whole contours
     /// ([`ViscousShape::from_points`]). Each shape is drawn on the same
     /// number of points, the `i`-th the same point of the section, which
-    /// [`Deformation::of_shapes`] follows. Cost: a map fit a sample (a
-    /// few ms each).
+    /// [`Deformation::followed`] follows.
+    ///
+    /// The plate's samples are first split into their rigid part
+    /// ([`RigidDeflection`]) and their change of shape: each sample's map
+    /// is the map fitted to its change of shape, then moved rigidly by
+    /// its rigid part (exactly: [`SectionMap::moved`]). Why: a map fitted
+    /// to each carried and turned plate on its own is not the turned map
+    /// of the others; its small differences (each fit's own, at the
+    /// plate's rounded ends) move the grid's finest cells back and forth
+    /// between the samples. On the default FWAV section with its change
+    /// of shape taken out, the first stroke's CT was 4.5 % above the same
+    /// rigid motion as the frame's at Courant 3 (0.10225 against 0.09788)
+    /// and 1.0 % at Courant 0.75; with the maps moved exactly, 0.09778
+    /// at Courant 3 (2026-12-06, README "The deformation's rigid part").
+    /// Samples the fit cannot hold keep their own fitted maps.
+    ///
+    /// Cost: a map fit a sample (a few ms each).
     fn deformation(
         &self,
         pivot: f64,
         samples: &[Vec<(f64, f64)>],
         period: f64,
     ) -> Result<Deformation, ViscousError> {
+        let rigid = match self.shape {
+            ViscousShape::Plate(_) => RigidDeflection::fit(samples, pivot, period),
+            ViscousShape::Ellipse(_) | ViscousShape::Contour(_) => None,
+        };
+        let Some(rigid) = rigid else {
+            let maps = Deformation::followed(&self.shape_maps(pivot, samples)?)?;
+            return Ok(Deformation::periodic(&maps, period)?);
+        };
+        let shapes = rigid.residual(samples, pivot);
+        let n = shapes.len();
+        let maps: Vec<SectionMap> = Deformation::followed(&self.shape_maps(pivot, &shapes)?)?
+            .iter()
+            .enumerate()
+            .map(|(i, map)| {
+                let state = rigid.state(period * i as f64 / n as f64);
+                map.moved(state.angle, state.translation)
+            })
+            .collect();
+        Ok(Deformation::periodic(&maps, period)?)
+    }
+
+    /// Each of `samples`' shapes ([`Self::deformation`]) mapped, the pitch
+    /// axis `pivot` put at the origin: the map and the angles of its
+    /// points on the unit circle.
+    fn shape_maps(
+        &self,
+        pivot: f64,
+        samples: &[Vec<(f64, f64)>],
+    ) -> Result<Vec<(SectionMap, Vec<f64>)>, ViscousError> {
         let terms = self.laurent_terms();
         let n = samples.len();
         let shift = |z: &Complex64| (z.re - pivot, z.im);
-        let maps = samples
+        samples
             .iter()
             .enumerate()
             .map(|(sample, points)| {
@@ -151,8 +191,7 @@ impl ViscousSection {
                 let contour = Contour::from_points(&points).map_err(failed)?;
                 SectionMap::from_contour_with_angles(&contour, terms).map_err(failed)
             })
-            .collect::<Result<Vec<_>, _>>()?;
-        Ok(Deformation::of_shapes(&maps, period)?)
+            .collect()
     }
 }
 
