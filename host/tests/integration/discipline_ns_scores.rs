@@ -174,6 +174,15 @@ fn rows_against(
 /// in efficiency: `NS_WINDOW_SCATTER` (5.30 % and 4.50 %) is these over
 /// √2, and the Courant-4 run on the default grid checks it within 10 %.
 ///
+/// With each plate sample's map its change of shape's moved by its rigid
+/// part (2026-12-06, commit `d202268`; the machine otherwise idle but for
+/// editing): **1,720 s**, 19 evaluations. The rows moved from
+/// `l18-384x256.txt` by 5.02 % RMS in CT (mean −2.2 %) and 4.48 % in
+/// efficiency: less than two evaluations at another step differ
+/// (7.50 % and 6.36 %, below). Best row 13 Hz, ±40°, −10°, 70° again
+/// (2.598); ANOM 13 Hz, ±30°, 0°, 70°; frequency level means 1.50, 1.92,
+/// 2.40 (docs/ns-design, `l18-384x256-moved.txt`).
+///
 /// On a plate as thick as the vehicle's leading edge
 /// (`FWAV_NS_THICKNESS=0.01`, 2026-12-05) the rows are compared with
 /// that plate's own at Courant 3 (docs/ns-design,
@@ -182,7 +191,7 @@ fn rows_against(
 /// and 23.1 % in efficiency: 16.9 % and 16.3 % an evaluation, three to
 /// four times the 0.04 c plate's (README, "The plate's thickness").
 #[test]
-#[ignore = "benchmark (25 to 35 min: 1,507 s at Courant 3 on 2026-12-05; over the issue's 10): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_discipline_benchmark`"]
+#[ignore = "benchmark (25 to 35 min: 1,720 s at Courant 3 on 2026-12-06; over the issue's 10): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_discipline_benchmark`"]
 fn ns_discipline_benchmark() {
     use fwav::discipline::kinematic::{optimize, DesignSpace, Weights};
     use fwav::optimize::nsga2::Nsga2Config;

@@ -427,10 +427,11 @@ impl<M: Motion> Flow<M> {
         for k in 0..nt {
             let kp = if k + 1 == nt { 0 } else { k + 1 };
             let km = if k == 0 { nt - 1 } else { k - 1 };
-            // ψr_θ > 0 means outward relative flow (U^ξ = ψr_θ / J; the
-            // grid's rigid part, the one that reaches the outer ring, in
-            // ψr).
-            let rel = |kk: usize| self.relative_at(j * nt + kk).0;
+            // ψr_θ > 0 means outward relative flow (U^ξ = ψr_θ / J), ψr
+            // the step start's (`previous_relative` since the advection's
+            // rates: relative to the frame and to a deforming grid's
+            // rigid part, the part that reaches the outer ring).
+            let rel = |kk: usize| self.previous_relative[j * nt + kk];
             let outward = rel(kp) - rel(km) > 0.0;
             self.omega[j * nt + k] = if outward {
                 self.omega[(j - 1) * nt + k]

@@ -113,13 +113,14 @@ impl ViscousSection {
     /// is the map fitted to its change of shape, then moved rigidly by
     /// its rigid part (exactly: [`SectionMap::moved`]). Why: a map fitted
     /// to each carried and turned plate on its own is not the turned map
-    /// of the others; its small differences (each fit's own, at the
-    /// plate's rounded ends) move the grid's finest cells back and forth
-    /// between the samples. On the default FWAV section with its change
+    /// of the others, and the grid follows the fits' small differences
+    /// between the samples (presumably at the plate's rounded ends, where
+    /// the cells are finest). On the default FWAV section with its change
     /// of shape taken out, the first stroke's CT was 4.5 % above the same
     /// rigid motion as the frame's at Courant 3 (0.10225 against 0.09788)
-    /// and 1.0 % at Courant 0.75; with the maps moved exactly, 0.09778
-    /// at Courant 3 (2026-12-06, README "The deformation's rigid part").
+    /// and 0.4 % at Courant 0.75 (0.09882 against 0.09841); with the maps
+    /// moved exactly, 0.09778 at Courant 3 (2026-12-06, README "The
+    /// deformation's rigid part").
     /// Samples the fit cannot hold keep their own fitted maps.
     ///
     /// Cost: a map fit a sample (a few ms each).
