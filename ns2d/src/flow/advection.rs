@@ -292,6 +292,27 @@ impl RateRows<'_> {
         }
     }
 
+    /// Ring `j`'s relative streamfunction at the step's middle into
+    /// `out`: [`Self::relative_at_start`] carried by [`at_middle`], in one
+    /// pass.
+    fn relative_at_middle(&self, j: usize, out: &mut [f64]) {
+        let r = j * self.nt..(j + 1) * self.nt;
+        let start = self.psi[r.clone()].iter().zip(&self.frame_psi[r.clone()]);
+        let moved = out.iter_mut().zip(&self.previous_relative[r.clone()]);
+        match self.grid_psi {
+            Some(grid_psi) => {
+                for (((m, p), (s, f)), g) in moved.zip(start).zip(&grid_psi[r]) {
+                    *m = at_middle(s - f - g, *p, self.half);
+                }
+            }
+            None => {
+                for ((m, p), (s, f)) in moved.zip(start) {
+                    *m = at_middle(s - f, *p, self.half);
+                }
+            }
+        }
+    }
+
     /// The relative streamfunction at the step's middle at the corners
     /// `(j + ½, k + ½)` of ring `j` (`j + 1` is a ring; the wall's corners
     /// for `j` = `usize::MAX` are the wall's own values, so no flux
@@ -316,13 +337,7 @@ impl RateRows<'_> {
             }
             return;
         }
-        self.relative_at_start(j + 1, above);
-        for (m, p) in above
-            .iter_mut()
-            .zip(self.ring(self.previous_relative, j + 1))
-        {
-            *m = at_middle(*m, *p, self.half);
-        }
+        self.relative_at_middle(j + 1, above);
         for (k, c) in out.iter_mut().enumerate() {
             let kp = if k + 1 == nt { 0 } else { k + 1 };
             *c = 0.25 * (here[k] + here[kp] + above[k] + above[kp]);

@@ -332,11 +332,12 @@ impl DeformingGrid {
         for (k, p) in self.wall_psi.iter_mut().enumerate() {
             *p += rigid_psi(k) - start - closure * k as f64 / nt as f64;
         }
-        let whole = |k: usize| rest[k] + grid.dz_dxi[k].conj() * rigid.at(grid.z[k]);
         for (k, slope) in self.wall_slope.iter_mut().enumerate() {
-            *slope = -whole(k).im;
+            let whole = rest[k] + grid.dz_dxi[k].conj() * rigid.at(grid.z[k]);
+            *slope = -whole.im;
         }
-        self.circulation = (0..nt).map(|k| whole(k).im).sum::<f64>() * grid.d_theta;
+        // `Σ Im(whole) = -Σ ψ_ξ` (negating is exact, so the same sum).
+        self.circulation = -self.wall_slope.iter().sum::<f64>() * grid.d_theta;
     }
 
     /// The faces' swept fluxes at the current step's start and at the
