@@ -90,6 +90,7 @@ pub struct RigidField {
 impl RigidField {
     /// The streamfunction `Im(conj(V) z) - Ω |z|²/2`.
     #[must_use]
+    #[inline]
     pub fn streamfunction(&self, z: Complex64) -> f64 {
         (self.velocity.conj() * z).im - 0.5 * self.rate * z.norm_sqr()
     }

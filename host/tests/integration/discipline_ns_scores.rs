@@ -347,7 +347,12 @@ const THIN_PLATE_ROWS: &str = "l18-384x256-t0.01.txt";
 /// and +1.8 %), against 55.3 s and 85.6 s for the binary of before run
 /// the same hour; a first run gave 111.2 s deforming, the same flow, in
 /// a slower minute. Four strokes on one thread, side by side: 154.4 s
-/// against 144.0 s (+7 %).
+/// against 144.0 s (+7 %). With the moving grid's own passes trimmed
+/// (2026-12-06, the same flow to the bit; `fwav-ns2d`'s
+/// `flow/deforming.rs`), run in turn with the binary of before in a noisy
+/// hour: 58.2 s and 95.0 s against 68.0 s and 96.5 s; three deforming
+/// strokes on one thread, the two side by side, 109.1 s and 107.6 s
+/// against 123.9 s and 122.5 s (−12 %).
 ///
 /// The plate is `env_plate`'s: `FWAV_NS_THICKNESS` sets its thickness
 /// (chords; README, "The plate's thickness"), `FWAV_NS_COURANT` the

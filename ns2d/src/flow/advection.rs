@@ -525,11 +525,16 @@ impl RateRows<'_> {
             out.ring_speed[k] = round.weight[k] * round.speed[k];
         }
         if self.swept.is_some() {
-            // The moving cell's share, `ω Σ F_f` (`flow/deforming.rs`).
-            for k in 0..nt {
-                let km = if k == 0 { nt - 1 } else { k - 1 };
-                let net = above.speed[k] - below.speed[k] + round.speed[k] - round.speed[km];
-                out.explicit[k] += inv_jac[k] * cell * w0[k] * net;
+            // The moving cell's share, `ω Σ F_f` (`flow/deforming.rs`):
+            // node 0 (whose face `k - ½` is the last) apart, and the rest
+            // on slices of the ring's length, without a wrap or bounds to
+            // test in the loop.
+            let (up, down, round) = (&above.speed[..nt], &below.speed[..nt], &round.speed[..nt]);
+            let (inv_jac, w0, explicit) = (&inv_jac[..nt], &w0[..nt], &mut out.explicit[..nt]);
+            let net = |k: usize, km: usize| up[k] - down[k] + round[k] - round[km];
+            explicit[0] += inv_jac[0] * cell * w0[0] * net(0, nt - 1);
+            for k in 1..nt {
+                explicit[k] += inv_jac[k] * cell * w0[k] * net(k, k - 1);
             }
         }
     }

@@ -76,7 +76,11 @@ impl<M: Motion> Flow<M> {
         let (nt, nr) = (g.nt, g.nr);
         let frame = self.frame;
         let rigid = frame.rigid_field();
-        let node_velocity = |i: usize| frame.point_velocity(g.z[i]) + self.grid_velocity(i);
+        // At node `k` of the wall's ring or the outer ring's.
+        let node_velocity = |outer: bool, k: usize| {
+            let i = if outer { g.at(nr - 1, k) } else { k };
+            frame.point_velocity(g.z[i]) + self.grid_velocity(outer, k)
+        };
         // Relative to a deforming grid's rigid part too, and the rest of
         // its velocity across a radial line, per unit ξ.
         let relative =
@@ -86,9 +90,8 @@ impl<M: Motion> Flow<M> {
         let outer_velocity = self.outer_ring_velocity();
         let sum: f64 = (0..nt)
             .map(|k| {
-                let wall = 0.5 * node_velocity(k).norm_sqr();
-                let i_outer = g.at(nr - 1, k);
-                let outer = (outer_velocity[k] * node_velocity(i_outer).conj()).re;
+                let wall = 0.5 * node_velocity(false, k).norm_sqr();
+                let outer = (outer_velocity[k] * node_velocity(true, k).conj()).re;
                 let mut flux = 0.0;
                 for j in 0..nr - 1 {
                     let (a, b) = (g.at(j, k), g.at(j + 1, k));
