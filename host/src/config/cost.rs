@@ -61,19 +61,21 @@ const DEFAULT_MEMORY: f64 = 680e6;
 /// section model at the default resolution (384 × 256 with the far field
 /// coarsened, Courant number 3), s, on the 2-core development machine:
 /// the first cycle's discipline of the default design with
-/// `section_model = "ns"` took 1,507 s (2026-12-05,
+/// `section_model = "ns"` took 1,720 s (2026-12-06,
 /// `discipline_ns_scores::ns_discipline_benchmark`, the machine otherwise
-/// idle); 1,950 s on the exponential 384 × 320, the default until that
-/// day, and cycle 3's 2,261 s on 2026-12-04, before the step's later
-/// speed-ups (docs/ns-design). Its 20 evaluations (the 18 rows and two
-/// confirmations; the analysed design is a row, found in the cache) run
-/// two at a time, each on one core (README, "Speed"), about 150 s each,
-/// where the initial design's evaluation takes 81.0 s on two threads
-/// (`discipline_ns_scores::ns_deforming_evaluation_benchmark`, the same
-/// day): the array's rows, with their faster strokes, cost more than the
-/// initial design on average, so the discipline is measured rather than
-/// counted from one evaluation.
-pub const NS_DISCIPLINE_SECONDS: f64 = 1507.0;
+/// idle, with each plate sample's map moved by its rigid part); the NS
+/// design run of the same day took 1,856 s and 1,828 s for its cycles 2
+/// and 3 (docs/ns-design). 1,507 s with the maps of before (2026-12-05),
+/// 1,950 s on the exponential 384 × 320, the default until that day.
+/// Its 19 or 20 evaluations (the 18 rows and the confirmations; the
+/// analysed design is a row, found in the cache) run two at a time,
+/// each on one core (README, "Speed"), about 170 s each, where the
+/// initial design's evaluation takes 93 s on two threads
+/// (`discipline_ns_scores::ns_deforming_evaluation_benchmark`): the
+/// array's rows, with their faster strokes, cost more than the initial
+/// design on average, so the discipline is measured rather than counted
+/// from one evaluation.
+pub const NS_DISCIPLINE_SECONDS: f64 = 1720.0;
 
 /// The cycles each evaluation ran in [`NS_DISCIPLINE_SECONDS`]'s run
 /// (`[design] section_cycles` of the default design).
@@ -84,6 +86,9 @@ const NS_MEASURED_SECTION_CYCLES: f64 = 4.0;
 /// so the cache serves none of an earlier cycle's evaluations). The NS
 /// design runs converged in cycle 2 on 384 × 256 and 384 × 240 and in
 /// cycle 3 on 384 × 320 (docs/ns-design): the estimate takes the longer.
+/// With each plate sample's map moved by its rigid part (2026-12-06) the
+/// run on 384 × 256 had not converged after three cycles (it was stopped
+/// in the fourth), so an NS run may take longer than estimated.
 pub const NS_CYCLES: f64 = 3.0;
 
 /// Navier–Stokes evaluations of a design run: each cycle's 21, over
@@ -219,13 +224,14 @@ mod tests {
     }
 
     /// The Navier–Stokes section model's disciplines are in the built-in
-    /// design's estimate, which says what they cost. At 1,507 s each (the
-    /// default 384 × 256 grid), three of them, they make it about 11 times
+    /// design's estimate, which says what they cost. At 1,720 s each (the
+    /// default 384 × 256 grid), three of them, they make it about 13 times
     /// the LDVM run, beyond the [`FAR_TIME_RATIO`] at which `fwav design`
     /// asks before it starts. (The default NS design run on 384 × 256
     /// took 54 min 13 s on 2026-12-05: it converged in cycle 2, its two
-    /// disciplines 1,661 s and 1,522 s; the estimate, for three cycles,
-    /// is 1 h 23 min. On the exponential 384 × 320 it took 9,845 s of
+    /// disciplines 1,661 s and 1,522 s; with the maps of 2026-12-06 it
+    /// took 105 minutes for three cycles without converging. The
+    /// estimate, for three cycles, is about 1.6 hours. On the exponential 384 × 320 it took 9,845 s of
     /// stage time, 2 h 44 min, three cycles, two of its disciplines
     /// partly shared; on 384 × 240, 78.6 minutes: docs/ns-design.)
     #[test]
