@@ -231,9 +231,10 @@ mod tests {
     /// took 54 min 13 s on 2026-12-05: it converged in cycle 2, its two
     /// disciplines 1,661 s and 1,522 s; with the maps of 2026-12-06 it
     /// took 105 minutes for three cycles without converging. The
-    /// estimate, for three cycles, is about 1.6 hours. On the exponential 384 × 320 it took 9,845 s of
-    /// stage time, 2 h 44 min, three cycles, two of its disciplines
-    /// partly shared; on 384 × 240, 78.6 minutes: docs/ns-design.)
+    /// estimate, for three cycles, is about 1.6 hours. On the
+    /// exponential 384 × 320 it took 9,845 s of stage time, 2 h 44 min,
+    /// three cycles, two of its disciplines partly shared; on 384 × 240,
+    /// 78.6 minutes: docs/ns-design.)
     #[test]
     fn the_ns_section_model_is_in_the_estimate() {
         let mut ns = SystemConfig::default();

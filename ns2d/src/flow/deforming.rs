@@ -75,7 +75,7 @@
 //!
 //! A profile of three strokes on one thread (2026-12-06, `perf`) put the
 //! deforming step at 1.62 times the same strokes' with the change of
-//! shape left out; this module's own lines were a quarter of the step.
+//! shape left out; this module's own lines were a sixth of the step.
 //! Trimmed, the same flow to the bit: each ring's powers end where they
 //! underflow (counting the nonzero ones on every call was a quarter of
 //! [`fill`]'s time), the series' orders are read beside the terms (so
