@@ -356,7 +356,9 @@ impl DeformingGrid {
         let nt = grid.nt;
         let rigid = self.rigid;
         let rest = &self.swept_node[..nt];
-        let rigid_psi = |k: usize| rigid.streamfunction(grid.z[k]);
+        // The rigid part's streamfunction at the wall's nodes, as
+        // [`Flow::move_grid`] has just formed it.
+        let rigid_psi = &self.rigid_psi[..nt];
         self.wall_psi[0] = 0.0;
         for k in 1..nt {
             self.wall_psi[k] =
@@ -364,9 +366,9 @@ impl DeformingGrid {
         }
         // A net flux (the area's change) spread round the wall.
         let closure = self.wall_psi[nt - 1] + 0.5 * (rest[nt - 1].re + rest[0].re) * grid.d_theta;
-        let start = rigid_psi(0);
-        for (k, p) in self.wall_psi.iter_mut().enumerate() {
-            *p += rigid_psi(k) - start - closure * k as f64 / nt as f64;
+        let start = rigid_psi[0];
+        for (k, (p, r)) in self.wall_psi.iter_mut().zip(rigid_psi).enumerate() {
+            *p += r - start - closure * k as f64 / nt as f64;
         }
         for (k, slope) in self.wall_slope.iter_mut().enumerate() {
             let whole = rest[k] + grid.dz_dxi[k].conj() * rigid.at(grid.z[k]);
