@@ -222,7 +222,7 @@ impl ViscousSection {
     /// 0.01 c), and the thrust grows about in proportion to it (the
     /// suction on the rounded nose): on the default FWAV section's first
     /// stroke CT 0.0138, 0.0370, 0.0779 at 0.01, 0.02, 0.04 c, CP within
-    /// 3 % (README, "The plate's thickness"; the failing
+    /// 3 % (`ns2d/README.md`, "The plate's thickness"; the failing
     /// `viscous_default_section::the_scores_hardly_depend_on_the_plates_thickness`).
     pub const DEFAULT_THICKNESS: f64 = 0.04;
 
@@ -299,7 +299,7 @@ impl ViscousSection {
     /// over strokes 3 to 12 (CT 0.0680, efficiency 0.0425) moves 5.1 % and
     /// 2.7 % with 320 rings, 3.6 % and 2.8 % with 512 round, where every
     /// finer grid settles into one periodic flow within 1.6 % (the
-    /// README's "The long mean"; `viscous_default_section::the_long_mean_converges_with_the_resolution`).
+    /// `ns2d/README.md`'s "The long mean"; `viscous_default_section::the_long_mean_converges_with_the_resolution`).
     /// On 384 × 320 the flow is periodic from the fourth stroke, and the
     /// mean over strokes 3 to 12 (CT 0.0715, efficiency 0.0436) moves
     /// −0.2 % and +0.2 % with 400 rings, −0.7 % and +1.1 % with 512

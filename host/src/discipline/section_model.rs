@@ -18,7 +18,7 @@
 //!   coarsened, Courant number 3, [`ViscousSection::run`]) and 81.0 s
 //!   deforming as the built-in design's first system analysis found
 //!   (2026-12-05; 67.5 s and 99.3 s on the exponential 384 × 320 the
-//!   same day; the README's "Speed" gives each step of the way, and why
+//!   same day; `ns2d/README.md`'s "Speed" gives each step of the way, and why
 //!   the former estimate of about 59 s "in a normal hour" was
 //!   withdrawn): some 100 to 145 times the LDVM's 0.56 s for the same 4
 //!   cycles (timed the same day).
@@ -119,7 +119,7 @@ impl SectionFlowModel {
 /// design differ by when anything changes what brought the flow to its
 /// window. The flow round the deforming plate has not settled by then,
 /// and on many designs never does (the vortices shed in earlier strokes
-/// meet the plate again where small differences put them; README, "The
+/// meet the plate again where small differences put them; `ns2d/README.md`, "The
 /// evaluation's window"), so any small change moves the window's scores.
 ///
 /// Measured (2026-12-05) as a change of the time step on the first
@@ -264,7 +264,7 @@ pub struct ViscousPlate {
     /// beyond that on the moving grid, or left out when it is at most `t`
     /// chords (the undeformed plate carried and turned: 0.63 of the
     /// moving grid's time on one thread, 0.85 on two). No `[design]`
-    /// setting (README, "The deformation's
+    /// setting (`ns2d/README.md`, "The deformation's
     /// rigid part"): on the default section the change of shape, 1.05e-3
     /// chords, moves the first stroke's CT by 3.7 % at the step's limit,
     /// so it may not be left out; and with it on the moving grid the two

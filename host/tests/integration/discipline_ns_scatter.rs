@@ -5,7 +5,7 @@
 //! rows' converged (twelve-stroke) scores. These measurements set the
 //! declared scatter the adoption margin carries
 //! (`section_model::NS_WINDOW_SCATTER`, `NS_LONG_MEAN_SCATTER`). All heavy
-//! (minutes to an hour and a half): ignored, run by name (the README,
+//! (minutes to an hour and a half): ignored, run by name (`ns2d/README.md`,
 //! "The evaluation's window" and "A longer step", quotes their figures).
 //! What an evaluation and a discipline run cost, and the rows' records,
 //! are `discipline_ns_scores`.
@@ -48,12 +48,12 @@ use crate::viscous_default_section::{mean, standard_deviation, window_of};
 /// (docs/ns-design). At Courant 4 (`FWAV_NS_COURANT=4`, initial
 /// kinematics, 2026-12-04): 0.61 % and 0.65 %, 327 s against Courant 3's
 /// 498 s the same hour, but its first window 5.3 % (CT) and 4.4 %
-/// (efficiency) above Courant 3's (README, "Speed"). At L18 row 14 (11
+/// (efficiency) above Courant 3's (`ns2d/README.md`, "Speed"). At L18 row 14 (11
 /// Hz, ±40°, −10°, plane 90°; `RAYON_NUM_THREADS=1`, 2026-12-04): CT
 /// 0.1171, 0.1144, 0.1245, 0.1029, 0.1061 (7.7 %; efficiency 7.0 %),
 /// 754 s, at Courant 3 (above the declared scatter: not checked there),
 /// and 0.1090, 0.1035, 0.1276, 0.1297, 0.0993 (12.3 %), 581 s, at
-/// Courant 4; their means agree within 0.7 % (README, "The L18 rows at
+/// Courant 4; their means agree within 0.7 % (`ns2d/README.md`, "The L18 rows at
 /// another step"). The rows of `NS_LONG_MEAN_SCATTER` on the exponential
 /// 384 x 320 (2026-12-04, one thread each, Courant 3 and 4; 347 s to
 /// 937 s a run; on the default grid, 2026-12-05, see the constant's
@@ -181,7 +181,7 @@ fn a_spin_up_keeps_the_deforming_window_scores() {
 /// Courant 4 (`discipline_ns_scores::ns_discipline_benchmark` with
 /// `FWAV_NS_COURANT=4`) against Courant 3 (the NS design run of docs/ns-design, cycle 1) moved CT by
 /// 5.6 % RMS and up to 12.8 %; this runs the rows that moved most at a
-/// step half the default's (README, "A longer step"). `FWAV_NS_CYCLES`
+/// step half the default's (`ns2d/README.md`, "A longer step"). `FWAV_NS_CYCLES`
 /// sets the strokes (4 by default; all after the second scored, as
 /// `[design] section_cycles` scores them). Measured
 /// (2026-12-04), CT and efficiency at Courant 4 / 3 / 1.5: row 2 (the

@@ -3,7 +3,7 @@
 //! an evaluation and a discipline run cost, and the discipline's L18 rows
 //! against their records (docs/ns-design), which give one evaluation's
 //! scatter as the step's change. The benchmarks are heavy (minutes to
-//! half an hour): ignored, run by name (the README, "Speed" and "The
+//! half an hour): ignored, run by name (`ns2d/README.md`, "Speed" and "The
 //! evaluation's window", quotes their figures). How the scores scatter
 //! otherwise (window to window, with the step, the spin-up, a shorter
 //! evaluation, against the long means) is `discipline_ns_scatter`; the
@@ -189,7 +189,7 @@ fn rows_against(
 /// `l18-384x256-t0.01.txt`: 3,033 s, best row 13 Hz, ±20°, 0°, 110°). At
 /// Courant 4 (2,234 s, the same best row) they moved by 23.9 % RMS in CT
 /// and 23.1 % in efficiency: 16.9 % and 16.3 % an evaluation, three to
-/// four times the 0.04 c plate's (README, "The plate's thickness").
+/// four times the 0.04 c plate's (`ns2d/README.md`, "The plate's thickness").
 #[test]
 #[ignore = "benchmark (25 to 35 min: 1,720 s at Courant 3 on 2026-12-06; over the issue's 10): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_discipline_benchmark`"]
 fn ns_discipline_benchmark() {
@@ -292,7 +292,7 @@ fn ns_discipline_benchmark() {
 }
 
 /// The plate as thick as the vehicle's carbon leading edge (chords:
-/// 0.6 mm on the 60 mm chord; README, "The plate's thickness").
+/// 0.6 mm on the 60 mm chord; `ns2d/README.md`, "The plate's thickness").
 const THIN_PLATE: f64 = 0.01;
 
 /// Its first-cycle L18 rows at Courant 3 (docs/ns-design).
@@ -324,7 +324,7 @@ const THIN_PLATE_ROWS: &str = "l18-384x256-t0.01.txt";
 /// hour" figures above were estimates scaled from 384 x 240 by the
 /// rigid ratio 1.34; deforming, 320 rings cost 1.47 times 240 (99.0 s
 /// against 67.2 s the same hour), and 384 x 240 itself took 67.2 s that
-/// day against 57.3 s with slower code on 2026-12-03: withdrawn (README,
+/// day against 57.3 s with slower code on 2026-12-03: withdrawn (`ns2d/README.md`,
 /// "Speed").
 ///
 /// On the default 384 x 256 with the far field coarsened (2026-12-05,
@@ -338,7 +338,7 @@ const THIN_PLATE_ROWS: &str = "l18-384x256-t0.01.txt";
 /// idle): rigid 47.5 s, deforming 70.1 s (CT 0.0890, efficiency 0.0341)
 /// against 56.5 s and 84.0 s at the default 3 run next: a sixth off, not
 /// the quarter the Courant numbers' ratio would give, and still over the
-/// 60 s (README, "A longer step").
+/// 60 s (`ns2d/README.md`, "A longer step").
 ///
 /// With each plate sample's map its change of shape's moved by its
 /// rigid part and the grid's rigid part taken off by its streamfunction
@@ -355,7 +355,7 @@ const THIN_PLATE_ROWS: &str = "l18-384x256-t0.01.txt";
 /// against 123.9 s and 122.5 s (−12 %).
 ///
 /// The plate is `env_plate`'s: `FWAV_NS_THICKNESS` sets its thickness
-/// (chords; README, "The plate's thickness"), `FWAV_NS_COURANT` the
+/// (chords; `ns2d/README.md`, "The plate's thickness"), `FWAV_NS_COURANT` the
 /// step's Courant number, `FWAV_NS_RADIAL` the rings.
 #[test]
 #[ignore = "benchmark (2 to 3 min); fails the issue's 60 s deforming (93.1 s on 2026-12-06; rigid 52.5 s): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_deforming_evaluation_benchmark`"]
@@ -399,7 +399,7 @@ fn ns_deforming_evaluation_benchmark() {
 /// printed), `env_plate`'s variables set the plate.
 ///
 /// Measured (2026-12-06, 384 × 256, three strokes, one thread each,
-/// beside other runs; the first stroke's CT and CP; README, "The
+/// beside other runs; the first stroke's CT and CP; `ns2d/README.md`, "The
 /// deformation's rigid part"), since each plate sample's map is its
 /// change of shape's moved by its rigid part (`ViscousSection`'s
 /// deformation) and the moving grid's rigid part is taken off by its

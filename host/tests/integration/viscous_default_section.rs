@@ -4,7 +4,7 @@
 //! resolution, how its first stroke converges with the wall cell, and how
 //! much the window the discipline scores scatters from window to window.
 //! All but the helpers are benchmarks or heavy checks, ignored in CI; the
-//! resolution study's figures are in the README ("Viscous section analysis").
+//! resolution study's figures are in `ns2d/README.md`.
 
 use std::f64::consts::PI;
 
@@ -20,7 +20,7 @@ fn fwav_mid_span_flow() -> (f64, f64) {
 }
 
 /// The plate's thickness, chords: `FWAV_NS_THICKNESS` where set, else
-/// the default ([`ViscousSection::DEFAULT_THICKNESS`]; README, "The
+/// the default ([`ViscousSection::DEFAULT_THICKNESS`]; `ns2d/README.md`, "The
 /// plate's thickness").
 pub(crate) fn env_thickness() -> f64 {
     std::env::var("FWAV_NS_THICKNESS")
@@ -59,7 +59,7 @@ fn fwav_mid_span_run(section: &ViscousSection, cycles: f64) -> fwav::aero2d::vis
 /// the default before: 67.5 s (2026-12-05) and 118.3 s in a slow hour
 /// (both in `discipline_ns_scores::ns_deforming_evaluation_benchmark`;
 /// the "about 43 s in a normal hour" once scaled from 384 x 240 by the
-/// rigid ratio 1.34 was withdrawn, README "Speed"). On 384
+/// rigid ratio 1.34 was withdrawn, `ns2d/README.md` "Speed"). On 384
 /// x 240: 44.2 s, 20,905 steps, 22.9 ns per cell per step, on a day the
 /// same run took 31.9 s in
 /// `discipline_ns_scores::ns_deforming_evaluation_benchmark` (the machine's
@@ -161,7 +161,7 @@ fn default_section_four_cycles_benchmark() {
 /// cell 0.2, 0.1, 0.05, 0.025 (-6.0 % at the halving, about first order)
 /// while CP settled (1.7551, 1.7157, 1.7095, 1.7095): it read the wall
 /// layer's curvature from rings 1 and 2, where the layer is not yet
-/// parabolic (README, "The wall's first cell").
+/// parabolic (`ns2d/README.md`, "The wall's first cell").
 #[test]
 #[ignore = "heavy (about 35 s in release: 34 s on 2026-12-05): `cargo test --release -p fwav --test integration -- \
             --ignored --nocapture wall_cell`"]
@@ -219,10 +219,10 @@ fn default_section_thrust_converges_with_the_wall_cell() {
 /// round move CT by −1.4 % at 0.01 c, +1.4 % at 0.02 c and +1.7 % at
 /// 0.04 c. The thinner plate costs more steps (first stroke: 11,169,
 /// 7,971, 5,895, 4,178 at 0.01, 0.02, 0.04, 0.08 c; its edges' cells are
-/// smaller). README, "The plate's thickness".
+/// smaller). `ns2d/README.md`, "The plate's thickness".
 #[test]
 #[ignore = "fails: the plate's thickness sets the thrust (first stroke CT -52.6 % at half the \
-            default 0.04 c; README, \"The plate's thickness\"); heavy (about 2 min): \
+            default 0.04 c; `ns2d/README.md`, \"The plate's thickness\"); heavy (about 2 min): \
             `cargo test --release -p fwav --test integration -- --ignored --nocapture \
             viscous_default_section::the_scores_hardly_depend_on_the_plates_thickness`"]
 fn the_scores_hardly_depend_on_the_plates_thickness() {
@@ -370,12 +370,12 @@ fn long_mean(history: &History) -> (f64, f64, f64) {
 /// refined radially as a whole to 320 rings
 /// ([`ViscousSection::with_radial`]: the near grid's 320 rings become
 /// 400, the far growth 4.5 % a cell 3.6 %) and 512 nodes round, one at a
-/// time. Measured (2026-12-05; README, "The far field coarsened"): CT
+/// time. Measured (2026-12-05; `ns2d/README.md`, "The far field coarsened"): CT
 /// 0.0713 (standard error 0.1 %: periodic), efficiency 0.0417; the step
 /// halved -0.6 % and +0.0 %, 320 rings -0.1 % and +0.3 %, 512 round
 /// -0.5 % and +1.2 %; passed, 1,004 s for the four runs (the first one
 /// slowed by a build beside it). On the exponential 384 x 320, the
-/// default before (2026-12-03, a slow hour; README, "The long mean"):
+/// default before (2026-12-03, a slow hour; `ns2d/README.md`, "The long mean"):
 /// CT 0.0715, efficiency 0.0436 (the input power counted the flight's
 /// work then); the step halved -1.6 % and -0.5 %, 400 rings -0.2 % and
 /// +0.2 %, 512 round -0.6 % and +1.1 %; passed, 1,836 s. On 384 x 240,

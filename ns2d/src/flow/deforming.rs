@@ -97,7 +97,7 @@
 //! is the frame's to rounding, and the first stroke of the default FWAV
 //! section's rigid part alone, which was 4.5 % above the frame's at
 //! Courant 3, was so through its maps fitted sample by sample, not
-//! through this: `fwav`'s README, "The deformation's rigid part"). The
+//! through this: `ns2d/README.md`, "The deformation's rigid part"). The
 //! wall's influence matrix is built on the grid of its time and rebuilt when `J` in the wall's two rings
 //! has moved by more than [`INFLUENCE_DRIFT`] since (each time step in
 //! use has its own) ([`super::Flow::wall_residual`] shows what the drift

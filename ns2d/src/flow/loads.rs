@@ -109,7 +109,7 @@ impl<M: Motion> Flow<M> {
     /// curvature from rings 1 and 2, where a wall layer a few cells thick
     /// is not yet parabolic, and the default FWAV section's thrust moved
     /// 6 % when the first cell was halved; with this estimate 2.0 %
-    /// (README, "The wall's first cell"). Cost: `O(N_θ)`.
+    /// (`ns2d/README.md`, "The wall's first cell"). Cost: `O(N_θ)`.
     fn wall_vorticity_flux(&self) -> Vec<f64> {
         let g = &self.grid;
         let nt = g.nt;

@@ -12,7 +12,7 @@
 //! ([`fwav_ns2d::Flow::deforming`]), which costs half again a rigid step.
 //! Its change of shape, small as it is, moves CT by 3.7 %, so the
 //! default leaves nothing out and keeps the whole deformation on the
-//! moving grid (README, "The deformation's rigid part";
+//! moving grid (`ns2d/README.md`, "The deformation's rigid part";
 //! [`super::ViscousSection::run_deflecting`]). There too the rigid part
 //! is taken apart: each sample's map is the map of its change of shape
 //! moved rigidly by this fit (`ViscousSection::deformation`), which is

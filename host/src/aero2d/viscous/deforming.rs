@@ -61,7 +61,7 @@ impl ViscousSection {
     /// [`SectionPath::Flapping`], or samples [`RigidDeflection::fit`]
     /// cannot hold, run as [`Self::run_deforming`].
     ///
-    /// Why (README, "The deformation's rigid part"): the grid's motion
+    /// Why (`ns2d/README.md`, "The deformation's rigid part"): the grid's motion
     /// costs half again a rigid step, which the section without its
     /// change of shape does not pay; but the default section's change of
     /// shape, 1.05e-3 chords, moves CT by 3.7 %, and the discipline keeps
@@ -119,7 +119,7 @@ impl ViscousSection {
     /// of shape taken out, the first stroke's CT was 4.5 % above the same
     /// rigid motion as the frame's at Courant 3 (0.10225 against 0.09788)
     /// and 0.4 % at Courant 0.75 (0.09882 against 0.09841); with the maps
-    /// moved exactly, 0.09778 at Courant 3 (2026-12-06, README "The
+    /// moved exactly, 0.09778 at Courant 3 (2026-12-06, `ns2d/README.md` "The
     /// deformation's rigid part").
     /// Samples the fit cannot hold keep their own fitted maps.
     ///
