@@ -91,6 +91,19 @@ pub const SPIN_UP_COARSENING: f64 = 1.5;
 /// Steps a run may take before it is refused as beyond this machine.
 pub const MAX_VISCOUS_STEPS: usize = 2_000_000;
 
+/// The laminar boundary layer's thickness at the trailing edge, chords
+/// times `√Re`: the flat plate's `δ₉₉ = 5.0 x / √Re_x` (Blasius 1908;
+/// Schlichting & Gersten, *Boundary-Layer Theory*, 9th ed., 2017, the
+/// flat plate at zero incidence) at `x = c`, the thickest an attached
+/// laminar layer grows along the chord. A grid whose longest wall cell is longer than this
+/// cannot resolve the layer anywhere along the wall and is refused
+/// ([`ViscousError::Unresolved`]). Passing it is necessary, not
+/// sufficient: the default FWAV plate at Re 12,329 converges with 384
+/// nodes round, cells 0.19 of this thickness, and 256 round (0.29)
+/// still moved its first stroke's CT by +21 % (`ns2d/README.md`, "The
+/// step's velocity, and the default resolution").
+pub const TRAILING_EDGE_LAYER: f64 = 5.0;
+
 /// The section of the viscous model, chords, leading edge at `x = 0`.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ViscousShape {
@@ -342,6 +355,17 @@ impl ViscousSection {
         Self::new(ViscousShape::Plate(thickness))
     }
 
+    /// Checks, before any step, that this grid can resolve the flow at
+    /// `reynolds` ([`TRAILING_EDGE_LAYER`]): what [`Self::run`] checks
+    /// first, for a caller that wants to refuse a case early (a design's
+    /// configuration). Cost: the section's map.
+    ///
+    /// # Errors
+    /// [`ViscousError::Unresolved`]; the map's errors for a bad section.
+    pub fn check_resolution(&self, reynolds: f64) -> Result<(), ViscousError> {
+        self.grid(&self.map(0.0)?, reynolds).map(|_| ())
+    }
+
     /// The conformal map of the section, the pitch axis `pivot` (chords
     /// from the leading edge) at the origin.
     fn map(&self, pivot: f64) -> Result<SectionMap, ViscousError> {
@@ -376,9 +400,14 @@ impl ViscousSection {
     }
 
     /// The grid of this resolution for the map `map` at `reynolds`.
-    fn grid(&self, map: &SectionMap, reynolds: f64) -> GridSpec {
+    ///
+    /// # Errors
+    /// [`ViscousError::Unresolved`] when its wall cells are longer than
+    /// the laminar boundary layer is thick ([`TRAILING_EDGE_LAYER`]).
+    fn grid(&self, map: &SectionMap, reynolds: f64) -> Result<GridSpec, ViscousError> {
         // The first cell's physical height over its height in ξ is
-        // |∂z/∂ξ| at the wall: sized where that is largest.
+        // |∂z/∂ξ| at the wall: sized where that is largest. The map is
+        // conformal, so the wall's cells are |∂z/∂ξ| dθ long.
         let stretch = (0..64)
             .map(|k| {
                 let theta = f64::from(k) * std::f64::consts::TAU / 64.0;
@@ -386,6 +415,7 @@ impl ViscousSection {
                     .norm()
             })
             .fold(0.0, f64::max);
+        self.wall_cells_resolve(stretch, reynolds)?;
         let first = self.first_cell_layers / reynolds.sqrt() / stretch;
         let outer_radius = self.outer_chords / map.scale();
         // At a low Reynolds number the layer is thick: the first cell is
@@ -395,13 +425,37 @@ impl ViscousSection {
         // uniform cell is the one to stay below.
         let rings = self.far.map_or(self.radial, |f| f.near_radial);
         let uniform = outer_radius.ln() / (rings.max(2) - 1) as f64;
-        GridSpec {
+        Ok(GridSpec {
             around: self.around,
             radial: self.radial,
             outer_radius,
             first_cell: first.min(0.05).min(0.5 * uniform),
             far: self.far,
+        })
+    }
+
+    /// Checks that the longest wall cell, `stretch` (the largest
+    /// `|∂z/∂ξ|` at the wall, chords) times `2π / around`, is no longer
+    /// than the laminar boundary layer at `reynolds` is thick at the
+    /// trailing edge ([`TRAILING_EDGE_LAYER`]).
+    ///
+    /// # Errors
+    /// [`ViscousError::Unresolved`], naming the fewest nodes round that
+    /// would pass.
+    fn wall_cells_resolve(&self, stretch: f64, reynolds: f64) -> Result<(), ViscousError> {
+        let layer = TRAILING_EDGE_LAYER / reynolds.sqrt();
+        let cell = stretch * std::f64::consts::TAU / self.around as f64;
+        if cell <= layer {
+            return Ok(());
         }
+        let around =
+            ((stretch * std::f64::consts::TAU / layer).ceil() as usize).next_multiple_of(2);
+        Err(ViscousError::Unresolved {
+            reynolds,
+            cell,
+            layer,
+            around,
+        })
     }
 }
 
@@ -455,7 +509,7 @@ impl ViscousSection {
         let build =
             |section: &Self, path: SectionPath| -> Result<Flow<SectionPath>, ViscousError> {
                 let map = section.map(path.pivot())?;
-                let spec = section.grid(&map, reynolds);
+                let spec = section.grid(&map, reynolds)?;
                 Ok(Flow::new(&map, spec, path, 1.0 / reynolds)?)
             };
         self.run_flows(build, path, reynolds, duration)
@@ -638,5 +692,63 @@ mod tests {
         assert!(growth(&spun.with_radial(fewest - 1).spin_up_grid()) > MAX_FAR_GROWTH);
         assert_eq!(refused(&spun.with_radial(fewest)), None);
         assert_eq!(refused(&spun), None);
+    }
+
+    /// A grid whose wall cells are longer than the laminar layer is thick
+    /// at the trailing edge ([`TRAILING_EDGE_LAYER`]) is refused before
+    /// any step, naming the fewest nodes round that pass; the default
+    /// plate at the default FWAV section's Reynolds number (12,329, the
+    /// discipline's) and at the CLI's (15,000) passes, its longest cells
+    /// 0.19 and 0.21 of the layer. The plate's conformal map stretches
+    /// the wall most at mid-chord, by `c / 2` per radian for a flat
+    /// plate (Joukowski's map) and 5 % more for the 4 % plate's round
+    /// ends: 384 round give cells of 0.00859 c against `π c / 384`.
+    #[test]
+    fn a_grid_too_coarse_for_the_reynolds_number_names_the_nodes_round() {
+        let plate = ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS);
+        let map = plate.map(0.25).unwrap();
+        let grid = |s: &ViscousSection, reynolds: f64| s.grid(&map, reynolds);
+        for reynolds in [12_329.0, 15_000.0] {
+            let layer = TRAILING_EDGE_LAYER / f64::sqrt(reynolds);
+            let spec = grid(&plate, reynolds).unwrap();
+            assert_eq!(spec.around, 384);
+            // About a fifth of the layer, 5 % over a flat plate's π c / 384.
+            let cell = match grid(
+                &ViscousSection {
+                    around: 16,
+                    ..plate.clone()
+                },
+                reynolds,
+            ) {
+                Err(ViscousError::Unresolved { cell, .. }) => cell * 16.0 / 384.0,
+                other => panic!("{other:?}"),
+            };
+            assert!(cell < 0.22 * layer, "{cell} {layer}");
+            let flat = std::f64::consts::PI / 384.0;
+            assert!(cell > flat && cell < 1.06 * flat, "{cell}");
+        }
+        // Re 1e8 on 64 nodes round (a run that once reported a thrust).
+        let coarse = ViscousSection {
+            around: 64,
+            ..plate.clone()
+        };
+        let Err(e @ ViscousError::Unresolved { around, .. }) = grid(&coarse, 1e8) else {
+            panic!("Re 1e8 on 64 round passed");
+        };
+        assert!(
+            e.to_string()
+                .contains(&format!("give at least {around} nodes round")),
+            "{e}"
+        );
+        assert_eq!(around % 2, 0);
+        let with = |around| ViscousSection {
+            around,
+            ..plate.clone()
+        };
+        assert!(grid(&with(around), 1e8).is_ok());
+        assert!(matches!(
+            grid(&with(around - 2), 1e8),
+            Err(ViscousError::Unresolved { .. })
+        ));
     }
 }

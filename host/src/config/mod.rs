@@ -52,6 +52,7 @@ pub mod wing;
 use fwav_settings::SettingError;
 use serde::{Deserialize, Serialize};
 
+use crate::aero2d::viscous::{ViscousError, TRAILING_EDGE_LAYER};
 use crate::aeroelastic::analysis::SystemSettings;
 use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::aeroelastic::model::{FlightCondition, WingModel, WingModelError};
@@ -169,6 +170,30 @@ pub enum ConfigError {
         /// The lowest frequency that fits, Hz.
         min_frequency_hz: f64,
     },
+    /// `design.section_model = "ns"` at a mid-span Reynolds number its
+    /// grid cannot resolve ([`crate::aero2d::viscous::TRAILING_EDGE_LAYER`]).
+    #[error(
+        "design.section_model = \"ns\" at flight.speed_m_s = {speed_m_s}: the mid-span section \
+         ({chord_m} m chord) flies at Re {reynolds:.0}, and the Navier–Stokes model's grid has \
+         wall cells of {cell:.2e} chords, longer than the laminar boundary layer is thick at the \
+         trailing edge ({layer:.2e}): it cannot resolve that flow (it can up to Re \
+         {max_reynolds:.0}); lower flight.speed_m_s or the chord, or set design.section_model = \
+         \"ldvm\""
+    )]
+    SectionUnresolved {
+        /// `flight.speed_m_s`.
+        speed_m_s: f64,
+        /// The mid-span chord, m.
+        chord_m: f64,
+        /// The section's Reynolds number.
+        reynolds: f64,
+        /// The grid's longest wall cell, chords.
+        cell: f64,
+        /// The boundary layer's thickness at the trailing edge, chords.
+        layer: f64,
+        /// The highest Reynolds number the grid resolves.
+        max_reynolds: f64,
+    },
 }
 
 /// The whole file.
@@ -222,7 +247,30 @@ impl SystemConfig {
         wing::check_planform(&self.wing)?;
         design::check_weights(&self.design)?;
         self.check_section_work()?;
+        self.check_section_resolution()?;
         Ok(())
+    }
+
+    /// Refuses `section_model = "ns"` at a Reynolds number its grid
+    /// cannot resolve ([`SectionCase::check_resolution`]).
+    fn check_section_resolution(&self) -> Result<(), ConfigError> {
+        let case = self.section_case();
+        match case.check_resolution() {
+            Err(EvaluationError::Viscous(ViscousError::Unresolved {
+                reynolds,
+                cell,
+                layer,
+                ..
+            })) => Err(ConfigError::SectionUnresolved {
+                speed_m_s: case.flight.speed,
+                chord_m: case.chord,
+                reynolds,
+                cell,
+                layer,
+                max_reynolds: (TRAILING_EDGE_LAYER / cell).powi(2),
+            }),
+            _ => Ok(()),
+        }
     }
 
     /// Refuses frequencies whose 2D analyses in the aerodynamic discipline

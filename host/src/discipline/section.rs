@@ -254,6 +254,20 @@ impl SectionCase {
         })
     }
 
+    /// Refuses a Navier–Stokes case whose grid cannot resolve its
+    /// Reynolds number ([`crate::aero2d::viscous::ViscousSection::check_resolution`]);
+    /// the LDVM takes any.
+    ///
+    /// # Errors
+    /// [`EvaluationError::Viscous`] with
+    /// [`crate::aero2d::viscous::ViscousError::Unresolved`].
+    pub fn check_resolution(&self) -> Result<(), EvaluationError> {
+        match &self.model {
+            SectionFlowModel::Ns(plate) => Ok(plate.section().check_resolution(self.reynolds())?),
+            SectionFlowModel::Ldvm => Ok(()),
+        }
+    }
+
     /// The periods the scores average: all after the first
     /// [`TRANSIENT_CYCLES`].
     pub fn scored_cycles(&self) -> usize {

@@ -17,13 +17,15 @@ use fwav::discipline::section_model::{
     SectionFlowModel, SectionModelName, ViscousPlate, NS_LONG_MEAN_SCATTER, NS_WINDOW_SCATTER,
 };
 
-/// A 12 % plate on 48 × 48 nodes out to 15 chords (exponential
+/// A 12 % plate on 80 × 48 nodes out to 15 chords (exponential
 /// stretching), first cell a fifth of the boundary layer: coarse, for a
-/// test of seconds (the default is 384 × 256 out to 30 chords).
+/// test of seconds (the default is 384 × 256 out to 30 chords); 80 round
+/// are the fewest whose wall cells the Reynolds number of the built-in
+/// mid-span section (12,329) lets pass (78, `ViscousError::Unresolved`).
 fn coarse_plate() -> ViscousPlate {
     ViscousPlate {
         thickness: 0.12,
-        around: 48,
+        around: 80,
         radial: 48,
         far: None,
         outer_chords: 15.0,
@@ -135,6 +137,38 @@ fn section_model_setting_refuses_bad_values() {
         .unwrap_err()
         .to_string();
     assert_eq!(e, "design.section_cycles = 2 is outside 3..=40");
+}
+
+/// The Navier–Stokes model at a mid-span Reynolds number its grid cannot
+/// resolve (its wall cells longer than the laminar boundary layer is
+/// thick at the trailing edge, `5 c / √Re`, Blasius) is refused when the
+/// file is read, naming what sets it and the highest it resolves; the
+/// same flight on the LDVM, and the NS model at the built-in flight
+/// (Re 12,329) and at 20 m/s on the built-in wing (Re 82,192; at 50 m/s
+/// its lowest frequency level would be refused as too many steps), are
+/// taken; the default grid resolves up to Re 338,773.
+#[test]
+fn ns_model_refuses_a_reynolds_number_its_grid_cannot_resolve() {
+    let fast_wide = "[flight]\nspeed_m_s = 50.0\n[wing]\nroot_chord_m = 0.2\ntip_chord_m = 0.2\n";
+    let e = SystemConfig::from_toml(&format!("{fast_wide}[design]\nsection_model = \"ns\"\n"))
+        .unwrap_err()
+        .to_string();
+    for says in [
+        "flight.speed_m_s = 50",
+        "0.2 m chord",
+        "Re 684932",
+        "cannot resolve",
+        "up to Re 338773",
+        "section_model = \"ldvm\"",
+    ] {
+        assert!(e.contains(says), "{says}: {e}");
+    }
+    assert!(SystemConfig::from_toml(fast_wide).is_ok());
+    assert!(SystemConfig::from_toml("[design]\nsection_model = \"ns\"\n").is_ok());
+    assert!(SystemConfig::from_toml(
+        "[flight]\nspeed_m_s = 20.0\n[design]\nsection_model = \"ns\"\n"
+    )
+    .is_ok());
 }
 
 fn result(ct: f64) -> SectionResult {

@@ -482,6 +482,12 @@ fn aero2d_runs_the_viscous_model() {
         (&["--ns-thickness", "0.001"][..], "0.005 to 0.3"),
         // The far cells would grow by 1.045^(255/27) = 1.516 a ring.
         (&["--ns-radial", "28"][..], "give at least 29 (--ns-radial)"),
+        // Wall cells of 0.0515 c against a layer of 5e-4 c at the
+        // trailing edge (a run that once reported a thrust).
+        (
+            &["--reynolds", "1e8"][..],
+            "give at least 6594 nodes round (--ns-around)",
+        ),
     ] {
         let mut argv = vec!["aero2d", "--model", "ns", "--ns-around", "64"];
         argv.extend_from_slice(bad);

@@ -43,7 +43,7 @@ impl ViscousSection {
         let build =
             |section: &Self, path: SectionPath| -> Result<Flow<SectionPath>, ViscousError> {
                 let deformation = section.deformation(path.pivot(), samples, period)?;
-                let spec = section.grid(&deformation.map_at(0.0), reynolds);
+                let spec = section.grid(&deformation.map_at(0.0), reynolds)?;
                 Ok(Flow::deforming(deformation, spec, path, 1.0 / reynolds)?)
             };
         self.run_flows(build, path, reynolds, duration)

@@ -3,7 +3,7 @@
 use fwav_ns2d::NsError;
 
 #[cfg(doc)]
-use super::{ViscousSection, MAX_VISCOUS_STEPS};
+use super::{ViscousSection, MAX_VISCOUS_STEPS, TRAILING_EDGE_LAYER};
 #[cfg(doc)]
 use fwav_ns2d::{FarStretch, MAX_FAR_GROWTH};
 
@@ -67,6 +67,26 @@ pub enum ViscousError {
         /// The fewest rings of the grid that keep it, on the spin-up's
         /// grid too ([`FarStretch::fewest_rings`] without a spin-up).
         fewest: usize,
+    },
+    /// The grid's wall cells are longer than the laminar boundary layer
+    /// is thick at the trailing edge ([`TRAILING_EDGE_LAYER`]): it cannot
+    /// resolve this Reynolds number.
+    #[error(
+        "at Re {reynolds:.0} the grid's longest wall cell, {cell:.2e} chords, is longer than the \
+         laminar boundary layer is thick at the trailing edge ({layer:.2e} chords, 5/sqrt(Re)): \
+         the grid cannot resolve this Reynolds number; give at least {around} nodes round \
+         (--ns-around), or a lower Reynolds number (converged results need finer cells still: \
+         the default FWAV plate at Re 12,329 takes 384)"
+    )]
+    Unresolved {
+        /// The Reynolds number.
+        reynolds: f64,
+        /// The longest wall cell, chords.
+        cell: f64,
+        /// The boundary layer's thickness at the trailing edge, chords.
+        layer: f64,
+        /// The fewest nodes round (even) whose wall cells pass.
+        around: usize,
     },
     /// The stable time step keeps falling: the run would take too long.
     #[error(
