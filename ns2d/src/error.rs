@@ -11,12 +11,15 @@ pub enum NsError {
         /// The value given.
         value: f64,
     },
-    /// A section contour with too few distinct points.
+    /// A section contour with too few points.
     #[error(
-        "the section contour has {count} distinct points: give at least 8 points round the section"
+        "the section contour has {count} points (a last point closing it on the first not \
+         counted): give at least 8 points round the section"
     )]
     ContourTooFewPoints {
-        /// The distinct points given (a closing duplicate not counted).
+        /// The points given, a closing repeat of the first not counted
+        /// (points repeated elsewhere are [`NsError::ContourRepeatedPoint`]
+        /// once there are 8).
         count: usize,
     },
     /// A contour point that is not a finite number.

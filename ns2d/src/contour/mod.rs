@@ -3,7 +3,7 @@
 //! ([`crate::SectionMap::from_contour`]).
 //!
 //! The checks, each a typed [`NsError`] naming the point or segment: at
-//! least 8 distinct points, every coordinate finite, no two consecutive
+//! least 8 points (a closing duplicate not counted), every coordinate finite, no two consecutive
 //! points equal, no segment meeting another (a figure-eight, a bow-tie, a
 //! spike going back on itself), a non-zero enclosed area. Points may come
 //! in either orientation and with or without the closing duplicate (a
