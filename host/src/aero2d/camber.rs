@@ -44,6 +44,65 @@ pub enum CamberError {
         /// Points given.
         got: usize,
     },
+    /// A mid-line sample much longer or shorter than the chord
+    /// ([`MIDLINE_STRETCH`]).
+    #[error(
+        "sample {sample}'s mid-line is {length:.4} chords long: a section's mid-line keeps the \
+         chord's length within {}% (a system analysis's within 0.25%); check the sample, cut \
+         short or scaled, or the file's units (chords)",
+        100.0 * MIDLINE_STRETCH
+    )]
+    MidlineLength {
+        /// Sample index.
+        sample: usize,
+        /// Its length along the points, chords.
+        length: f64,
+    },
+}
+
+/// How far a mid-line sample's length may differ from the chord, as a
+/// fraction of it. The membrane's mid-line is nearly inextensible: over
+/// the four cycles of the Navier–Stokes design run of `docs/ns-design`
+/// (2026-12-06) the system analysis's samples were 1.0000 to 1.0025
+/// chords long. A sample 5 % off is not a membrane's deformation but a
+/// broken file (a sample cut short, points in another unit), and the
+/// models would extend or squeeze it into a section that never flew.
+pub const MIDLINE_STRETCH: f64 = 0.05;
+
+/// Checks that each of `samples` (mid-lines, chords, as
+/// [`CamberHistory::from_section_points`] takes them) has at least two
+/// finite points and a length along them within [`MIDLINE_STRETCH`] of
+/// the chord.
+///
+/// # Errors
+/// [`CamberError::TooFewPoints`], [`CamberError::NotFinite`],
+/// [`CamberError::MidlineLength`] for the first sample that fails.
+pub fn check_midlines(samples: &[Vec<(f64, f64)>]) -> Result<(), CamberError> {
+    samples
+        .iter()
+        .enumerate()
+        .try_for_each(|(i, points)| check_midline(i, points))
+}
+
+/// [`check_midlines`] for one sample, number `sample`.
+fn check_midline(sample: usize, points: &[(f64, f64)]) -> Result<(), CamberError> {
+    if points.len() < 2 {
+        return Err(CamberError::TooFewPoints {
+            sample,
+            got: points.len(),
+        });
+    }
+    if !points.iter().all(|(x, y)| x.is_finite() && y.is_finite()) {
+        return Err(CamberError::NotFinite);
+    }
+    let length: f64 = points
+        .windows(2)
+        .map(|w| f64::hypot(w[1].0 - w[0].0, w[1].1 - w[0].1))
+        .sum();
+    if (length - 1.0).abs() > MIDLINE_STRETCH {
+        return Err(CamberError::MidlineLength { sample, length });
+    }
+    Ok(())
 }
 
 /// A periodic camber-line history.
@@ -105,7 +164,9 @@ impl CamberHistory {
     /// linearly where the deformed line is shorter: the offsets are the
     /// camber (thin-airfoil theory keeps the normal offset; the small
     /// chordwise motion of the points is neglected, second order in the
-    /// deflection).
+    /// deflection). Each sample's points must rise in `x`, and its length
+    /// is checked ([`check_midlines`]): a mid-line far shorter than the
+    /// chord would be extended into one that never flew.
     pub fn from_section_points(
         samples: &[Vec<(f64, f64)>],
         period: f64,
@@ -134,6 +195,7 @@ impl CamberHistory {
                     point: j + 1,
                 });
             }
+            check_midline(i, points)?;
             let eta = grid
                 .iter()
                 .map(|&x| {
@@ -285,6 +347,45 @@ mod tests {
             CamberHistory::from_section_points(&[vec![(0.0, 0.0)]], 1.0, 11),
             Err(CamberError::TooFewPoints { sample: 0, got: 1 })
         );
+    }
+
+    /// A mid-line sample far from the chord's length (cut short, or in
+    /// another unit) is refused naming it; a bent one of the chord's
+    /// length, and one stretched by less than [`MIDLINE_STRETCH`], are
+    /// taken.
+    #[test]
+    fn a_midline_of_another_length_is_refused() {
+        let line = |scale: f64, camber: f64| -> Vec<(f64, f64)> {
+            (0..=20)
+                .map(|i| {
+                    let x = i as f64 / 20.0;
+                    (scale * x, camber * (std::f64::consts::PI * x).sin())
+                })
+                .collect()
+        };
+        // Camber 0.05: 1.0062 chords along the points.
+        assert_eq!(check_midlines(&[line(1.0, 0.05), line(1.04, 0.0)]), Ok(()));
+        for (samples, sample, length) in [
+            (vec![line(1.0, 0.0), line(0.077, 0.0)], 1, 0.077),
+            (vec![line(75.0, 0.0)], 0, 75.0),
+            (
+                vec![line(1.0, 0.0), line(1.0, 0.0), line(0.94, 0.0)],
+                2,
+                0.94,
+            ),
+        ] {
+            match check_midlines(&samples) {
+                Err(CamberError::MidlineLength {
+                    sample: s,
+                    length: l,
+                }) => {
+                    assert_eq!(s, sample);
+                    assert!((l - length).abs() < 1e-12, "{l}");
+                }
+                other => panic!("{other:?}"),
+            }
+            assert!(CamberHistory::from_section_points(&samples, 1.0, 11).is_err());
+        }
     }
 
     #[test]

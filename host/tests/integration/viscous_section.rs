@@ -9,6 +9,7 @@
 
 use std::f64::consts::PI;
 
+use fwav::aero2d::camber::CamberError;
 use fwav::aero2d::case::{Case, SectionModel};
 use fwav::aero2d::motion::Motion;
 use fwav::aero2d::viscous::{SectionPath, ViscousError, ViscousSection, ViscousShape};
@@ -271,14 +272,28 @@ fn the_input_power_on_garricks_plunge_is_near_theory() {
 
 /// What the viscous model cannot take is refused, saying what to do: a
 /// plate too thin to grid, a deformation sample that cannot be mapped
-/// (a mid-line bent back on itself, its surfaces crossing), named by its
-/// number.
+/// (a mid-line bent back on itself, its surfaces crossing) or that is
+/// not a mid-line of the chord's length (folded back so far that it is
+/// 1.6 chords long), each named by its number.
 #[test]
 fn viscous_model_refuses_what_it_cannot_take() {
     let plate = SectionModel::Viscous(coarse_plate());
     let mut deforming = case(plate, Motion::plunge(1.0, 0.05), 1000.0);
     let flat = vec![(0.0, 0.0), (0.5, 0.0), (1.0, 0.0)];
-    let folded = vec![(0.0, 0.0), (0.6, 0.0), (0.3, 0.001), (1.0, 0.0)];
+    let long_fold = vec![(0.0, 0.0), (0.6, 0.0), (0.3, 0.001), (1.0, 0.0)];
+    deforming.deformation = Some(vec![flat.clone(), flat.clone(), long_fold, flat.clone()]);
+    let e = deforming.run().unwrap_err();
+    assert!(
+        matches!(
+            e,
+            fwav::aero2d::case::CaseError::Viscous(ViscousError::Midline(
+                CamberError::MidlineLength { sample: 2, .. }
+            ))
+        ),
+        "{e}"
+    );
+    // Folded back by 0.02 c over the 12 % plate: 1.01 chords long.
+    let folded = vec![(0.0, 0.0), (0.5, 0.0), (0.48, 0.0005), (0.97, 0.0)];
     deforming.deformation = Some(vec![flat.clone(), flat.clone(), folded, flat]);
     let e = deforming.run().unwrap_err();
     assert!(

@@ -5,6 +5,8 @@
 
 use fwav_ns2d::{Complex64, Contour, Deformation, Flow, NsError, SectionMap};
 
+use crate::aero2d::camber::check_midlines;
+
 use super::{
     RigidDeflection, SectionPath, ViscousError, ViscousRun, ViscousSection, ViscousShape,
     CONTOUR_POINTS,
@@ -80,6 +82,9 @@ impl ViscousSection {
         samples: &[Vec<(f64, f64)>],
         shape_tolerance: f64,
     ) -> Result<ViscousRun, ViscousError> {
+        if matches!(self.shape, ViscousShape::Plate(_)) {
+            check_midlines(samples)?;
+        }
         let SectionPath::Flapping(flapping) = path else {
             return self.run_deforming(path, reynolds, duration, samples);
         };
@@ -131,7 +136,10 @@ impl ViscousSection {
         period: f64,
     ) -> Result<Deformation, ViscousError> {
         let rigid = match self.shape {
-            ViscousShape::Plate(_) => RigidDeflection::fit(samples, pivot, period),
+            ViscousShape::Plate(_) => {
+                check_midlines(samples)?;
+                RigidDeflection::fit(samples, pivot, period)
+            }
             ViscousShape::Ellipse(_) | ViscousShape::Contour(_) => None,
         };
         let Some(rigid) = rigid else {

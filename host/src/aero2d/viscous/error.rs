@@ -2,6 +2,8 @@
 
 use fwav_ns2d::NsError;
 
+use crate::aero2d::camber::CamberError;
+
 #[cfg(doc)]
 use super::{ViscousSection, MAX_VISCOUS_STEPS, TRAILING_EDGE_LAYER};
 #[cfg(doc)]
@@ -25,6 +27,10 @@ pub enum ViscousError {
          the section rigid, or give a periodic motion"
     )]
     DeformingWithoutPeriod,
+    /// A plate's deformation sample that is not a mid-line of the section
+    /// ([`crate::aero2d::camber::check_midlines`]).
+    #[error("the deformation history: {0}")]
+    Midline(#[from] CamberError),
     /// A deformation sample the solver cannot map.
     #[error(
         "deformation sample {sample} of {samples}: {source}; check the section history (a \
