@@ -95,9 +95,9 @@ pub const MAX_VISCOUS_STEPS: usize = 2_000_000;
 /// times `√Re`: the flat plate's `δ₉₉ = 5.0 x / √Re_x` (Blasius 1908;
 /// Schlichting & Gersten, *Boundary-Layer Theory*, 9th ed., 2017, the
 /// flat plate at zero incidence) at `x = c`, the thickest an attached
-/// laminar layer grows along the chord. A grid whose longest wall cell is longer than this
-/// cannot resolve the layer anywhere along the wall and is refused
-/// ([`ViscousError::Unresolved`]). Passing it is necessary, not
+/// laminar layer grows along the chord. A grid whose longest wall cell
+/// is longer than this cannot resolve the layer anywhere along the wall
+/// and is refused ([`ViscousError::Unresolved`]). Passing it is necessary, not
 /// sufficient: the default FWAV plate at Re 12,329 converges with 384
 /// nodes round, cells 0.19 of this thickness, and 256 round (0.29)
 /// still moved its first stroke's CT by +21 % (`ns2d/README.md`, "The
