@@ -158,7 +158,13 @@ impl SectionFlowModel {
 /// and [`NS_LONG_MEAN_SCATTER`] taken out, one evaluation's error is
 /// 5.84 % and 4.62 %: within the 17 % by which a standard deviation
 /// of 18 values is itself uncertain, so the start adds little and these
-/// figures stand.
+/// figures stand. Measured again with each plate sample's map moved by
+/// its rigid part (2026-12-06, the binary of `ba486e3`, the same test
+/// run as one, 6,012 s;
+/// `docs/ns-design/long-means-384x256-moved.txt`): 4.43 % and 4.09 %
+/// (means +1.40 % and +0.98 %), within the 17 % again, so the figures
+/// stand for the present maps too (the long means' own scatter taken
+/// out is still the old maps' [`NS_LONG_MEAN_SCATTER`]).
 ///
 /// From window to window of one 12-stroke run (strokes 3 to 12 as five
 /// windows of two; `discipline_ns_scatter::ns_deforming_window_scatter_benchmark`,

@@ -353,7 +353,11 @@ fn a_three_stroke_evaluation_keeps_the_rows_scores() {
 /// digit in CT but row 2's long mean (0.0874 against 0.0873; the five
 /// windows' printed CTs average 0.08734, so the two lie either side of
 /// a rounding), and the efficiencies' last digit apart by the two
-/// definitions (0.0335 against 0.0334 for row 1).
+/// definitions (0.0335 against 0.0334 for row 1). Run as one again with
+/// each plate sample's map moved by its rigid part (2026-12-06, the
+/// binary of `ba486e3`, 6,012 s, its first hour beside compiles and
+/// tests): CT 4.43 % (mean +1.40 %), efficiency 4.09 % (mean +0.98 %),
+/// passing (`docs/ns-design/long-means-384x256-moved.txt`).
 #[test]
 #[ignore = "heavy (about 90 min: 18 four-stroke and 18 twelve-stroke runs, two at a time, \
             a round of two rows 10-13 min): \
