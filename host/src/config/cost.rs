@@ -70,8 +70,9 @@ const DEFAULT_MEMORY: f64 = 680e6;
 /// Its 19 or 20 evaluations (the 18 rows and the confirmations; the
 /// analysed design is a row, found in the cache) run two at a time,
 /// each on one core (`ns2d/README.md`, "Speed"), about 170 s each, where the
-/// initial design's evaluation takes 93 s on two threads
-/// (`discipline_ns_scores::ns_deforming_evaluation_benchmark`): the
+/// initial design's evaluation took 93 s on two threads then (82 s
+/// since the moving grid's passes were trimmed;
+/// `discipline_ns_scores::ns_deforming_evaluation_benchmark`): the
 /// array's rows, with their faster strokes, cost more than the initial
 /// design on average, so the discipline is measured rather than counted
 /// from one evaluation.

@@ -156,8 +156,8 @@ pub const DESIGN: Table<DesignConfig> = Table {
                   \"ns\": laminar Navier-Stokes of a thin plate (ns_thickness) with its \
                   friction and separation, the plate's mid-line deforming as the system \
                   analysis found (on a moving grid); lesp_critical does not apply. Cost: \
-                  about 53 s for one 4-cycle evaluation of the default section on two \
-                  cores when rigid, 93 s deforming as the default design's first system \
+                  about 54 s for one 4-cycle evaluation of the default section on two \
+                  cores when rigid, 82 s deforming as the default design's first system \
                   analysis found (384 x 256 nodes, the far field coarsened), about 29 \
                   minutes for a discipline run (measured alone on the default design)",
             value: |d| Value::Choice(d.section_model.word()),

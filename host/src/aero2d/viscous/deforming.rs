@@ -21,9 +21,9 @@ impl ViscousSection {
     /// the thickness at each end (so that a flat sample is the rigid
     /// plate); for a contour or an ellipse, whole contours. The grid moves
     /// to each step's map ([`Flow::deforming`]). Cost: the rigid run's
-    /// and the grid's motion, three inverse FFTs a ring a step: 93.1 s
+    /// and the grid's motion, three inverse FFTs a ring a step: 82.2 s
     /// for the default section's 4 cycles deforming as the built-in
-    /// design's first system analysis found, 52.5 s rigid (384 × 256,
+    /// design's first system analysis found, 54.3 s rigid (384 × 256,
     /// 2026-12-06; `discipline_ns_scores::ns_deforming_evaluation_benchmark`).
     ///
     /// # Errors
