@@ -269,6 +269,8 @@ impl SystemConfig {
                 layer,
                 max_reynolds: (TRAILING_EDGE_LAYER / cell).powi(2),
             }),
+            // A plate the map refuses is out of `design.ns_thickness`'s
+            // range, which the settings table has refused above.
             _ => Ok(()),
         }
     }
