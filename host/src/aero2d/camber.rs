@@ -86,6 +86,12 @@ pub fn check_midlines(samples: &[Vec<(f64, f64)>]) -> Result<(), CamberError> {
 
 /// [`check_midlines`] for one sample, number `sample`.
 fn check_midline(sample: usize, points: &[(f64, f64)]) -> Result<(), CamberError> {
+    check_midline_points(sample, points)?;
+    check_midline_length(sample, points)
+}
+
+/// At least two points in sample number `sample`, each finite.
+fn check_midline_points(sample: usize, points: &[(f64, f64)]) -> Result<(), CamberError> {
     if points.len() < 2 {
         return Err(CamberError::TooFewPoints {
             sample,
@@ -95,6 +101,12 @@ fn check_midline(sample: usize, points: &[(f64, f64)]) -> Result<(), CamberError
     if !points.iter().all(|(x, y)| x.is_finite() && y.is_finite()) {
         return Err(CamberError::NotFinite);
     }
+    Ok(())
+}
+
+/// Sample number `sample`'s length along its points within
+/// [`MIDLINE_STRETCH`] of the chord.
+fn check_midline_length(sample: usize, points: &[(f64, f64)]) -> Result<(), CamberError> {
     let length: f64 = points
         .windows(2)
         .map(|w| f64::hypot(w[1].0 - w[0].0, w[1].1 - w[0].1))
@@ -180,22 +192,14 @@ impl CamberHistory {
             .collect();
         let mut offsets = Vec::with_capacity(samples.len());
         for (i, points) in samples.iter().enumerate() {
-            if points.len() < 2 {
-                return Err(CamberError::TooFewPoints {
-                    sample: i,
-                    got: points.len(),
-                });
-            }
-            if !points.iter().all(|(x, y)| x.is_finite() && y.is_finite()) {
-                return Err(CamberError::NotFinite);
-            }
+            check_midline_points(i, points)?;
             if let Some(j) = points.windows(2).position(|w| w[1].0 <= w[0].0) {
                 return Err(CamberError::PointOrder {
                     sample: i,
                     point: j + 1,
                 });
             }
-            check_midline(i, points)?;
+            check_midline_length(i, points)?;
             let eta = grid
                 .iter()
                 .map(|&x| {

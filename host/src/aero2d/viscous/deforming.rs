@@ -28,8 +28,9 @@ impl ViscousSection {
     ///
     /// # Errors
     /// As [`Self::run`]; [`ViscousError::DeformingWithoutPeriod`] for a
-    /// path without a period, [`ViscousError::DeformedShape`] for a
-    /// sample that cannot be mapped.
+    /// path without a period, [`ViscousError::Midline`] for a plate's
+    /// sample that is not a mid-line of the chord's length,
+    /// [`ViscousError::DeformedShape`] for a sample that cannot be mapped.
     pub fn run_deforming(
         &self,
         path: SectionPath,
@@ -37,6 +38,9 @@ impl ViscousSection {
         duration: f64,
         samples: &[Vec<(f64, f64)>],
     ) -> Result<ViscousRun, ViscousError> {
+        if matches!(self.shape, ViscousShape::Plate(_)) {
+            check_midlines(samples)?;
+        }
         let k = path.reduced_frequency();
         if k.is_nan() || k <= 0.0 {
             return Err(ViscousError::DeformingWithoutPeriod);
@@ -136,10 +140,7 @@ impl ViscousSection {
         period: f64,
     ) -> Result<Deformation, ViscousError> {
         let rigid = match self.shape {
-            ViscousShape::Plate(_) => {
-                check_midlines(samples)?;
-                RigidDeflection::fit(samples, pivot, period)
-            }
+            ViscousShape::Plate(_) => RigidDeflection::fit(samples, pivot, period),
             ViscousShape::Ellipse(_) | ViscousShape::Contour(_) => None,
         };
         let Some(rigid) = rigid else {
