@@ -332,6 +332,7 @@ impl SectionCase {
                             duration,
                             &samples,
                             tolerance,
+                            plate.shape_change,
                         )?,
                         None => section.run_deforming(path, self.reynolds(), duration, &samples)?,
                     }
