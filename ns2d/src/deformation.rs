@@ -222,14 +222,6 @@ impl Deformation {
     pub fn map_at(&self, t: f64) -> SectionMap {
         self.state(t).map()
     }
-
-    /// The mean map over the period: each coefficient's mean over the
-    /// samples (the history's zeroth harmonic). Not checked for
-    /// univalence ([`crate::Flow::transpiring`] checks it).
-    #[must_use]
-    pub fn mean_map(&self) -> SectionMap {
-        SectionMap::from_coefficients(&self.spectrum[0])
-    }
 }
 
 /// How harmonic `h` of the discrete Fourier transform of `n` equally

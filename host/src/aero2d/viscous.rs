@@ -70,7 +70,6 @@ mod surface;
 use super::history::History;
 use super::ldvm::FreeVortex;
 pub use deflection::{DeflectionState, RigidDeflection, MAX_DEFLECTION_SAMPLES};
-pub use deforming::ShapeChange;
 pub use error::ViscousError;
 use march::March;
 pub use path::{SectionPath, STILL_KICK_CHORDS, STILL_KICK_RATE};

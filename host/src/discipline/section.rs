@@ -332,7 +332,6 @@ impl SectionCase {
                             duration,
                             &samples,
                             tolerance,
-                            plate.shape_change,
                         )?,
                         None => section.run_deforming(path, self.reynolds(), duration, &samples)?,
                     }

@@ -26,7 +26,7 @@
 use fwav_ns2d::FarStretch;
 use serde::{Deserialize, Serialize};
 
-use crate::aero2d::viscous::{ShapeChange, ViscousSection, ViscousShape};
+use crate::aero2d::viscous::{ViscousSection, ViscousShape};
 
 use super::section::TRANSIENT_CYCLES;
 
@@ -282,12 +282,6 @@ pub struct ViscousPlate {
     /// [`RigidDeflection`]: crate::aero2d::viscous::RigidDeflection
     #[serde(default)]
     pub shape_tolerance: Option<f64>,
-    /// How the change of shape beyond the rigid part reaches the flow
-    /// when `shape_tolerance` is `Some` and does not leave it out
-    /// ([`ShapeChange`]): the moving grid (the default, and files without
-    /// the key) or the wall's transpiration on the mean shape's grid.
-    #[serde(default)]
-    pub shape_change: ShapeChange,
 }
 
 /// [`ViscousSection::DEFAULT_COURANT`], for files without the key.
@@ -311,7 +305,6 @@ impl ViscousPlate {
             courant: s.courant,
             spin_up: false,
             shape_tolerance: None,
-            shape_change: ShapeChange::MovingGrid,
         }
     }
 

@@ -33,7 +33,6 @@ fn coarse_plate() -> ViscousPlate {
         courant: fwav::aero2d::viscous::ViscousSection::DEFAULT_COURANT,
         spin_up: false,
         shape_tolerance: None,
-        shape_change: fwav::aero2d::viscous::ShapeChange::MovingGrid,
     }
 }
 

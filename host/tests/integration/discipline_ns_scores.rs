@@ -9,7 +9,7 @@
 //! evaluation, against the long means) is `discipline_ns_scatter`; the
 //! setting-up of the cases they share is here.
 
-use fwav::aero2d::viscous::{ShapeChange, ViscousSection};
+use fwav::aero2d::viscous::ViscousSection;
 use fwav::aeroelastic::FlappingKinematics;
 use fwav::config::SystemConfig;
 use fwav::discipline::cache::EvaluationCache;
@@ -458,31 +458,27 @@ fn ns_deflected_evaluation_benchmark() {
                 .collect()
         })
         .collect();
-    let (grid, by_wall) = (ShapeChange::MovingGrid, ShapeChange::Transpiration);
     let ways = [
-        ("shape left out", Some(0.01), grid, &real),
-        ("shape on the moving grid", Some(0.0), grid, &real),
-        ("all on the moving grid", None, grid, &real),
-        ("rigid part alone, on the moving grid", None, grid, &fitted),
+        ("shape left out", Some(0.01), &real),
+        ("shape on the moving grid", Some(0.0), &real),
+        ("all on the moving grid", None, &real),
+        ("rigid part alone, on the moving grid", None, &fitted),
         (
             "rigid part alone as the frame, on the moving grid",
             Some(0.0),
-            grid,
             &fitted,
         ),
         (
             "twice the shape's change, on the moving grid",
             Some(0.0),
-            grid,
             &doubled,
         ),
-        ("the heave alone, on the moving grid", None, grid, &heaved),
-        ("the heave alone as the frame", Some(0.0), grid, &heaved),
-        ("shape by transpiration", Some(0.0), by_wall, &real),
+        ("the heave alone, on the moving grid", None, &heaved),
+        ("the heave alone as the frame", Some(0.0), &heaved),
     ];
     let only = std::env::var("FWAV_NS_ONLY").ok();
     let mut first_ct = Vec::new();
-    for (name, shape_tolerance, shape_change, deformation) in ways {
+    for (name, shape_tolerance, deformation) in ways {
         if only.as_deref().is_some_and(|o| o != name) {
             continue;
         }
@@ -491,7 +487,6 @@ fn ns_deflected_evaluation_benchmark() {
             deformation: deformation.clone(),
             ..deforming_case(ViscousPlate {
                 shape_tolerance,
-                shape_change,
                 ..plate
             })
         };

@@ -260,10 +260,6 @@ pub(super) struct RateRows<'a> {
     /// step's middle as the relative streamfunction is; `None` for a
     /// rigid grid.
     pub(super) swept: Option<super::deforming::SweptFluxes<'a>>,
-    /// Whether the wall blows or sucks through a grid that does not move
-    /// ([`super::Flow::transpiring`]): the wall's cells (ring 1) then
-    /// take the moving cell's share `ω Σ F_f` as a moving grid's cells do.
-    pub(super) transpiring: bool,
 }
 
 /// A quantity at the step's middle from its value at the step's start,
@@ -528,7 +524,7 @@ impl RateRows<'_> {
             out.radial_speed[k] = above.weight[k] * above.speed[k];
             out.ring_speed[k] = round.weight[k] * round.speed[k];
         }
-        if self.swept.is_some() || (self.transpiring && j == 1) {
+        if self.swept.is_some() {
             // The moving cell's share, `ω Σ F_f` (`flow/deforming.rs`):
             // node 0 (whose face `k - ½` is the last) apart, and the rest
             // on slices of the ring's length, without a wrap or bounds to
@@ -577,13 +573,12 @@ impl<M: Motion> Flow<M> {
             w: &self.omega,
             psi: &self.psi,
             frame_psi: &self.frame_psi,
-            grid_psi: self.deforming.as_ref().and_then(|d| d.moving_rigid_psi()),
+            grid_psi: self.deforming.as_ref().map(|d| &d.rigid_psi[..]),
             previous_relative: &self.previous_relative,
             half,
             inv_jac: &g.inv_jac,
             inv_cell: &self.inv_cell,
-            swept: self.deforming.as_ref().and_then(|d| d.swept(g)),
-            transpiring: self.deforming.as_ref().is_some_and(|d| d.transpiring),
+            swept: self.deforming.as_ref().map(|d| d.swept(g)),
         };
         let mut radial = std::mem::take(&mut self.radial_faces);
         radial.fill(&rows, &mut self.relative_start);

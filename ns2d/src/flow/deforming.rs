@@ -162,11 +162,6 @@ pub(super) struct DeformingGrid {
     wall_velocity_theta: Vec<Complex64>,
     /// The circulation of the wall's deformation velocity, `∮ w·ds`.
     pub(super) circulation: f64,
-    /// Whether the grid stays on the history's mean map and the
-    /// deformation reaches the flow through the wall's velocity alone
-    /// ([`Flow::transpiring`]): no node moves, nothing is swept, and
-    /// `swept_node` holds `conj(z_ξ) w` on the wall's ring only.
-    pub(super) transpiring: bool,
 }
 
 /// The rigid part of the grid's motion, `w_r = V + iα̇ z` (body axes):
@@ -301,9 +296,8 @@ fn fill(buf: &mut [Complex64], c: &[Complex64], rho: f64, ring: RingTerms<'_>, s
 }
 
 impl DeformingGrid {
-    /// The state for `deformation` on a grid of `nt` nodes round, moving
-    /// or (`transpiring`) not ([`Flow::transpiring`]).
-    fn new(deformation: Deformation, grid: &OGrid, transpiring: bool) -> Self {
+    /// The state for `deformation` on a grid of `nt` nodes round.
+    fn new(deformation: Deformation, grid: &OGrid) -> Self {
         let (nt, n) = (grid.nt, grid.len());
         let zero = Complex64::new(0.0, 0.0);
         let terms = deformation.terms();
@@ -328,7 +322,6 @@ impl DeformingGrid {
             wall_acceleration: vec![zero; nt],
             wall_velocity_theta: vec![zero; nt],
             circulation: 0.0,
-            transpiring,
         }
     }
 
@@ -386,30 +379,20 @@ impl DeformingGrid {
     }
 
     /// The faces' swept fluxes at the current step's start and at the
-    /// last one's ([`SweptFluxes`]) on `grid`; `None` when the grid does
-    /// not move ([`Flow::transpiring`]).
-    pub(super) fn swept<'a>(&'a self, grid: &'a OGrid) -> Option<SweptFluxes<'a>> {
-        (!self.transpiring).then_some(SweptFluxes {
+    /// last one's ([`SweptFluxes`]) on `grid`.
+    pub(super) fn swept<'a>(&'a self, grid: &'a OGrid) -> SweptFluxes<'a> {
+        SweptFluxes {
             now: &self.swept_node,
             before: &self.previous_node,
             xi: &grid.xi,
             d_theta: grid.d_theta,
-        })
-    }
-
-    /// The streamfunction of the grid's rigid part at the nodes; `None`
-    /// when the grid does not move ([`Flow::transpiring`]).
-    pub(super) fn moving_rigid_psi(&self) -> Option<&[f64]> {
-        (!self.transpiring).then_some(&self.rigid_psi[..])
+        }
     }
 
     /// Keep the nodes' `conj(z_ξ) w` as the last step's before the grid
-    /// moves (a swap: [`Flow::move_grid`] writes every node); nothing to
-    /// keep when it does not move.
+    /// moves (a swap: [`Flow::move_grid`] writes every node).
     pub(super) fn keep_swept_as_previous(&mut self) {
-        if !self.transpiring {
-            std::mem::swap(&mut self.swept_node, &mut self.previous_node);
-        }
+        std::mem::swap(&mut self.swept_node, &mut self.previous_node);
     }
 }
 
@@ -511,88 +494,10 @@ impl<M: Motion> Flow<M> {
         }
         let map = deformation.map_at(0.0);
         let mut flow = Self::new(&map, spec, motion, viscosity)?;
-        flow.deforming = Some(DeformingGrid::new(deformation, &flow.grid, false));
+        flow.deforming = Some(DeformingGrid::new(deformation, &flow.grid));
         flow.move_grid(0.0);
         flow.evaluate(0.0);
         Ok(flow)
-    }
-
-    /// A flow at rest round the section deforming by `deformation`,
-    /// taken by its wall's velocity alone (transpiration): the grid stays
-    /// on the history's mean map ([`Deformation::mean_map`]) and moves
-    /// only with `motion`, and each step the wall's conditions, its
-    /// circulation and its loads take the velocity and acceleration of
-    /// the deforming wall's point of the same `θ`, as [`Self::deforming`]
-    /// takes them on the moving grid; as [`Flow::new`] otherwise.
-    ///
-    /// Why: the moving grid costs half again a rigid step (module docs);
-    /// this, three inverse FFTs of the wall's ring a step. What it leaves
-    /// out is where the wall is: the shape's departure from the mean map,
-    /// so it is for small changes of shape about a mean, such as the
-    /// default FWAV plate's beyond its heave and pitch (at most 1.05e-3
-    /// chords against a wall cell of about 5e-3 on 384 nodes round), not
-    /// for a motion of its own (given to the frame). The fluid the wall
-    /// blows or sucks through its face carries the vorticity of the cell
-    /// it enters or leaves (the transport taken in the form of the moving
-    /// grid's, `-Σ F_f ω_f + ω Σ F_f`, on the wall's cells). The
-    /// transpiration condition is Lighthill's (1958, *J. Fluid Mech.* 4,
-    /// "On displacement thickness"), used for small structural
-    /// deflections in aeroelastic flow solvers.
-    ///
-    /// # Errors
-    /// As [`Self::deforming`]; [`NsError::MapNotUnivalent`] when the mean
-    /// map folds (a history that is not a small change about a mean).
-    pub fn transpiring(
-        deformation: Deformation,
-        spec: crate::GridSpec,
-        motion: M,
-        viscosity: f64,
-    ) -> Result<Self, NsError> {
-        let terms = deformation.terms();
-        if terms + 2 > spec.around {
-            return Err(NsError::BadGrid {
-                what: "around (at least the deformation's Laurent terms + 2)",
-                value: spec.around as f64,
-                min: (terms + 2) as f64,
-                max: 8192.0,
-            });
-        }
-        let map = deformation.mean_map();
-        let zeros = map.derivative_zeros_outside();
-        if zeros != 0 {
-            return Err(NsError::MapNotUnivalent { terms, zeros });
-        }
-        let mut flow = Self::new(&map, spec, motion, viscosity)?;
-        flow.deforming = Some(DeformingGrid::new(deformation, &flow.grid, true));
-        flow.move_grid(0.0);
-        flow.evaluate(0.0);
-        Ok(flow)
-    }
-
-    /// A transpiring wall's velocity at time `t` ([`Self::transpiring`]):
-    /// `w = ∂F/∂t` on the wall's ring, `conj(z_ξ) w` there (the grid's
-    /// `z_ξ`, which does not move), the wall's series and conditions, and
-    /// the section's area. Cost: three inverse FFTs of one ring.
-    fn transpire(&mut self, t: f64) {
-        let Some(d) = self.deforming.as_mut() else {
-            return;
-        };
-        let g = &self.grid;
-        let nt = g.nt;
-        let state = d.deformation.state(t);
-        let wall_velocity = &mut d.velocity[..nt];
-        let ring = RingTerms {
-            powers: &d.unit_powers,
-            orders: &d.orders,
-        };
-        fill(wall_velocity, &state.rate, 1.0, ring, Series::Value);
-        d.fft.process(wall_velocity);
-        for ((s, w), dz) in d.swept_node.iter_mut().zip(&*wall_velocity).zip(&g.dz_dxi) {
-            *s = dz.conj() * w;
-        }
-        d.wall_series(&state);
-        d.wall_conditions(g);
-        self.area = state.map().area();
     }
 
     /// Move a deforming section's grid to the map of time `t`: nodes,
@@ -603,10 +508,6 @@ impl<M: Motion> Flow<M> {
         let Some(d) = self.deforming.as_mut() else {
             return;
         };
-        if d.transpiring {
-            self.transpire(t);
-            return;
-        }
         let state = d.deformation.state(t);
         let rigid = RigidPart::of(&state);
         d.rigid = rigid;
@@ -696,10 +597,9 @@ impl<M: Motion> Flow<M> {
     /// `conj(z_ξ) w'` at node `i`, `w'` the grid's velocity less its rigid
     /// part (zero for a rigid section).
     pub(super) fn swept_rest(&self, i: usize) -> Complex64 {
-        match &self.deforming {
-            Some(d) if !d.transpiring => d.swept_node[i],
-            _ => Complex64::new(0.0, 0.0),
-        }
+        self.deforming
+            .as_ref()
+            .map_or(Complex64::new(0.0, 0.0), |d| d.swept_node[i])
     }
 
     /// The grid's velocity at node `k` of the wall's ring (`outer`:

@@ -4,7 +4,6 @@
 //! ([`super::RigidDeflection`]).
 
 use fwav_ns2d::{Complex64, Contour, Deformation, Flow, NsError, SectionMap};
-use serde::{Deserialize, Serialize};
 
 use crate::aero2d::camber::check_midlines;
 
@@ -12,20 +11,6 @@ use super::{
     RigidDeflection, SectionPath, ViscousError, ViscousRun, ViscousSection, ViscousShape,
     CONTOUR_POINTS,
 };
-
-/// How a deforming section's change of shape beyond its rigid part
-/// reaches the flow when that part moves the frame
-/// ([`ViscousSection::run_deflecting`]).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ShapeChange {
-    /// On a grid that moves to each step's map ([`Flow::deforming`]).
-    #[default]
-    MovingGrid,
-    /// Through the wall's velocity on a grid that stays on the mean
-    /// shape ([`Flow::transpiring`]): the wall's position is the mean's.
-    Transpiration,
-}
 
 impl ViscousSection {
     /// [`Self::run`] with the section deforming through `samples` over
@@ -53,19 +38,6 @@ impl ViscousSection {
         duration: f64,
         samples: &[Vec<(f64, f64)>],
     ) -> Result<ViscousRun, ViscousError> {
-        self.run_shapes(path, reynolds, duration, samples, ShapeChange::MovingGrid)
-    }
-
-    /// [`Self::run_deforming`], the deformation taken `by` the moving grid
-    /// or by the wall's transpiration.
-    fn run_shapes(
-        &self,
-        path: SectionPath,
-        reynolds: f64,
-        duration: f64,
-        samples: &[Vec<(f64, f64)>],
-        by: ShapeChange,
-    ) -> Result<ViscousRun, ViscousError> {
         if matches!(self.shape, ViscousShape::Plate(_)) {
             check_midlines(samples)?;
         }
@@ -77,17 +49,8 @@ impl ViscousSection {
         let build =
             |section: &Self, path: SectionPath| -> Result<Flow<SectionPath>, ViscousError> {
                 let deformation = section.deformation(path.pivot(), samples, period)?;
-                let viscosity = 1.0 / reynolds;
-                Ok(match by {
-                    ShapeChange::MovingGrid => {
-                        let spec = section.grid(&deformation.map_at(0.0), reynolds)?;
-                        Flow::deforming(deformation, spec, path, viscosity)?
-                    }
-                    ShapeChange::Transpiration => {
-                        let spec = section.grid(&deformation.mean_map(), reynolds)?;
-                        Flow::transpiring(deformation, spec, path, viscosity)?
-                    }
-                })
+                let spec = section.grid(&deformation.map_at(0.0), reynolds)?;
+                Ok(Flow::deforming(deformation, spec, path, 1.0 / reynolds)?)
             };
         self.run_flows(build, path, reynolds, duration)
     }
@@ -122,7 +85,6 @@ impl ViscousSection {
         duration: f64,
         samples: &[Vec<(f64, f64)>],
         shape_tolerance: f64,
-        by: ShapeChange,
     ) -> Result<ViscousRun, ViscousError> {
         if matches!(self.shape, ViscousShape::Plate(_)) {
             check_midlines(samples)?;
@@ -139,7 +101,7 @@ impl ViscousSection {
             self.run(deflected, reynolds, duration)
         } else {
             let shape = deflection.residual(samples, path.pivot());
-            self.run_shapes(deflected, reynolds, duration, &shape, by)
+            self.run_deforming(deflected, reynolds, duration, &shape)
         }
     }
 
