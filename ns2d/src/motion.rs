@@ -79,7 +79,7 @@ impl FrameState {
 
 /// The rigid velocity field of a [`FrameState`] in body axes, with the
 /// rotation of the frame's velocity into them done once.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct RigidField {
     /// The frame's velocity in body axes.
     pub velocity: Complex64,
@@ -93,6 +93,13 @@ impl RigidField {
     #[inline]
     pub fn streamfunction(&self, z: Complex64) -> f64 {
         (self.velocity.conj() * z).im - 0.5 * self.rate * z.norm_sqr()
+    }
+
+    /// The velocity at `z`, `V + iΩz`.
+    #[must_use]
+    #[inline]
+    pub fn velocity_at(&self, z: Complex64) -> Complex64 {
+        self.velocity + Complex64::new(0.0, self.rate) * z
     }
 }
 

@@ -7,7 +7,7 @@
 //! grids are then the same at every instant, and the flow must be too: the
 //! flow cannot tell how the grid got where it is. What the two runs do
 //! differently is the deformation's machinery: the grid's rigid part
-//! taken from the maps' rates (`flow/deforming.rs`, `RigidPart`) and its
+//! taken from the maps' rates (`flow/deforming.rs`, `rigid_part`) and its
 //! streamfunction in the faces' fluxes, the wall's conditions and the
 //! pressure level, the wall's own normal flux and tangential velocity,
 //! its circulation in Kelvin's bookkeeping, the moved nodes and metrics,

@@ -12,7 +12,7 @@
 //! - **Advection relative to the moving cells.** The grid's velocity is
 //!   split into its rigid part `w_r = V + iα̇ z` (the turn of the map's
 //!   leading coefficient and the translation that goes with it:
-//!   [`RigidPart`]) and the rest, the change of shape's. The rigid part
+//!   [`rigid_part`]) and the rest, the change of shape's. The rigid part
 //!   has a streamfunction, taken off the fluid's as the frame's is, so its
 //!   fluxes are differences at the faces' corners, exact round every cell:
 //!   a plunge or pitch given as deformation is the frame's motion to
@@ -114,7 +114,7 @@ use super::Flow;
 use crate::deformation::{Deformation, MapState};
 use crate::error::NsError;
 use crate::grid::OGrid;
-use crate::motion::Motion;
+use crate::motion::{Motion, RigidField};
 
 /// The relative change of `J` at the wall's two rings since the wall's
 /// influence matrix was built beyond which it is built again.
@@ -144,16 +144,16 @@ pub(super) struct DeformingGrid {
     /// the rings whose loads and pressure level want it (elsewhere it is
     /// formed in a ring's scratch and swept: one grid-sized array fewer
     /// written every step). And `conj(z_ξ) w'` at every node, `w'`
-    /// the grid's velocity less its rigid part ([`RigidPart`]; from which
+    /// the grid's velocity less its rigid part ([`rigid_part`]; from which
     /// the faces' swept fluxes are taken: [`SweptFluxes`]), also as it was
     /// at the last step's start.
     velocity: Vec<Complex64>,
     swept_node: Vec<Complex64>,
     previous_node: Vec<Complex64>,
     /// The streamfunction of the grid's rigid part at the nodes
-    /// ([`RigidPart::streamfunction`]), and that part.
+    /// ([`RigidField::streamfunction`]), and that part.
     pub(super) rigid_psi: Vec<f64>,
-    rigid: RigidPart,
+    rigid: RigidField,
     /// At the wall: the deformation's streamfunction and `ψ_ξ`, its
     /// acceleration `∂²z/∂t²` and `∂w/∂θ`.
     pub(super) wall_psi: Vec<f64>,
@@ -164,7 +164,8 @@ pub(super) struct DeformingGrid {
     pub(super) circulation: f64,
 }
 
-/// The rigid part of the grid's motion, `w_r = V + iα̇ z` (body axes):
+/// The rigid part of the grid's motion `state`, `w_r = V + iα̇ z` (body
+/// axes; a [`RigidField`], as the frame's is):
 /// the turn of the map's leading coefficient `a`, `α̇ = Im(ȧ/a)`, and the
 /// translation that goes with it, `V = ż0 - iα̇ z0`. A map that merely
 /// moves (`F = e^{iα} F_0 + d`) has `w = w_r` exactly; the rest of the
@@ -178,32 +179,11 @@ pub(super) struct DeformingGrid {
 /// deformation was the frame's to 2e-3 (256 × 192) and is now to 2e-10
 /// (`tests/deforming_sections.rs`); the default FWAV section's first
 /// stroke moved by 0.25 % in CT and 0.15 % in CP (384 × 256, Courant 3).
-#[derive(Clone, Copy, Debug, Default)]
-struct RigidPart {
-    velocity: Complex64,
-    rate: f64,
-}
-
-impl RigidPart {
-    /// The rigid part of the map's motion `state` (type docs).
-    fn of(state: &MapState) -> Self {
-        let (a, a_rate) = (state.coefficients[0], state.rate[0]);
-        let rate = (a_rate * a.conj()).im / a.norm_sqr();
-        let velocity = state.rate[1] - Complex64::new(0.0, rate) * state.coefficients[1];
-        Self { velocity, rate }
-    }
-
-    /// Its velocity at `z`.
-    #[inline]
-    fn at(&self, z: Complex64) -> Complex64 {
-        self.velocity + Complex64::new(0.0, self.rate) * z
-    }
-
-    /// Its streamfunction at `z`, `Im(conj(V) z) - α̇|z|²/2`.
-    #[inline]
-    fn streamfunction(&self, z: Complex64) -> f64 {
-        (self.velocity.conj() * z).im - 0.5 * self.rate * z.norm_sqr()
-    }
+fn rigid_part(state: &MapState) -> RigidField {
+    let (a, a_rate) = (state.coefficients[0], state.rate[0]);
+    let rate = (a_rate * a.conj()).im / a.norm_sqr();
+    let velocity = state.rate[1] - Complex64::new(0.0, rate) * state.coefficients[1];
+    RigidField { velocity, rate }
 }
 
 /// Which series of a ring's inverse FFT ([`fill`]).
@@ -316,7 +296,7 @@ impl DeformingGrid {
             swept_node: vec![zero; n],
             previous_node: vec![zero; n],
             rigid_psi: vec![0.0; n],
-            rigid: RigidPart::default(),
+            rigid: RigidField::default(),
             wall_psi: vec![0.0; nt],
             wall_slope: vec![0.0; nt],
             wall_acceleration: vec![zero; nt],
@@ -347,7 +327,7 @@ impl DeformingGrid {
 
     /// The wall's streamfunction, `ψ_ξ` and circulation of the grid's
     /// velocity (module docs): the streamfunction the rigid part's
-    /// ([`RigidPart::streamfunction`], exact) and the rest's normal flux
+    /// ([`RigidField::streamfunction`], exact) and the rest's normal flux
     /// (the real part of the wall ring's `swept_node`, per `dθ`) summed
     /// round; `ψ_ξ` and the circulation from the whole `conj(z_ξ) w` (the
     /// rigid part added back), its imaginary part `-ψ_ξ` and the
@@ -371,7 +351,7 @@ impl DeformingGrid {
             *p += r - start - closure * k as f64 / nt as f64;
         }
         for (k, slope) in self.wall_slope.iter_mut().enumerate() {
-            let whole = rest[k] + grid.dz_dxi[k].conj() * rigid.at(grid.z[k]);
+            let whole = rest[k] + grid.dz_dxi[k].conj() * rigid.velocity_at(grid.z[k]);
             *slope = -whole.im;
         }
         // `Σ Im(whole) = -Σ ψ_ξ` (negating is exact, so the same sum).
@@ -509,7 +489,7 @@ impl<M: Motion> Flow<M> {
             return;
         };
         let state = d.deformation.state(t);
-        let rigid = RigidPart::of(&state);
+        let rigid = rigid_part(&state);
         d.rigid = rigid;
         let g = &mut self.grid;
         let nt = g.nt;
@@ -550,7 +530,7 @@ impl<M: Motion> Flow<M> {
                     for ((((j, ij), z), d), ((w, s), p)) in nodes.zip(dz.iter()).zip(grid_motion) {
                         *j = d.norm_sqr();
                         *ij = 1.0 / *j;
-                        *s = d.conj() * (w - rigid.at(*z));
+                        *s = d.conj() * (w - rigid.velocity_at(*z));
                         *p = rigid.streamfunction(*z);
                     }
                 },
@@ -578,7 +558,7 @@ impl<M: Motion> Flow<M> {
     }
 
     /// The streamfunction of the flow relative to the frame and to the
-    /// grid's rigid part ([`RigidPart`]) at node `i`, and
+    /// grid's rigid part ([`rigid_part`]) at node `i`, and
     /// [`Self::swept_rest`] there: the relative flow's streamfunction
     /// derivatives less the latter are its fluxes.
     pub(super) fn relative_at(&self, i: usize) -> (f64, Complex64) {
@@ -623,7 +603,7 @@ mod tests {
         let zeta = Complex64::from_polar(rho, theta);
         let z = state.map().point(zeta);
         let w = crate::SectionMap::from_coefficients(&state.rate).point(zeta);
-        (w, RigidPart::of(&state).at(z))
+        (w, rigid_part(&state).velocity_at(z))
     }
 
     /// A map that merely moves (turned about and carried off the origin)
