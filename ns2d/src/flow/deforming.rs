@@ -148,8 +148,8 @@ pub(super) struct DeformingGrid {
     /// the faces' swept fluxes are taken: [`SweptFluxes`]), also as it was
     /// at the last step's start.
     velocity: Vec<Complex64>,
-    swept_node: Vec<Complex64>,
-    previous_node: Vec<Complex64>,
+    swept_node: NodeFlux,
+    previous_node: NodeFlux,
     /// The streamfunction of the grid's rigid part at the nodes
     /// ([`RigidField::streamfunction`]), and that part.
     pub(super) rigid_psi: Vec<f64>,
@@ -293,8 +293,8 @@ impl DeformingGrid {
             unit_powers: vec![1.0; terms],
             orders: (1..=terms).map(|m| m as f64).collect(),
             velocity: vec![zero; 2 * nt],
-            swept_node: vec![zero; n],
-            previous_node: vec![zero; n],
+            swept_node: NodeFlux::zeros(n),
+            previous_node: NodeFlux::zeros(n),
             rigid_psi: vec![0.0; n],
             rigid: RigidField::default(),
             wall_psi: vec![0.0; nt],
@@ -335,23 +335,23 @@ impl DeformingGrid {
     fn wall_conditions(&mut self, grid: &OGrid) {
         let nt = grid.nt;
         let rigid = self.rigid;
-        let rest = &self.swept_node[..nt];
+        let (rest, rest_im) = (&self.swept_node.re[..nt], &self.swept_node.im[..nt]);
         // The rigid part's streamfunction at the wall's nodes, as
         // [`Flow::move_grid`] has just formed it.
         let rigid_psi = &self.rigid_psi[..nt];
         self.wall_psi[0] = 0.0;
         for k in 1..nt {
-            self.wall_psi[k] =
-                self.wall_psi[k - 1] + 0.5 * (rest[k - 1].re + rest[k].re) * grid.d_theta;
+            self.wall_psi[k] = self.wall_psi[k - 1] + 0.5 * (rest[k - 1] + rest[k]) * grid.d_theta;
         }
         // A net flux (the area's change) spread round the wall.
-        let closure = self.wall_psi[nt - 1] + 0.5 * (rest[nt - 1].re + rest[0].re) * grid.d_theta;
+        let closure = self.wall_psi[nt - 1] + 0.5 * (rest[nt - 1] + rest[0]) * grid.d_theta;
         let start = rigid_psi[0];
         for (k, (p, r)) in self.wall_psi.iter_mut().zip(rigid_psi).enumerate() {
             *p += r - start - closure * k as f64 / nt as f64;
         }
         for (k, slope) in self.wall_slope.iter_mut().enumerate() {
-            let whole = rest[k] + grid.dz_dxi[k].conj() * rigid.velocity_at(grid.z[k]);
+            let whole = Complex64::new(rest[k], rest_im[k])
+                + grid.dz_dxi[k].conj() * rigid.velocity_at(grid.z[k]);
             *slope = -whole.im;
         }
         // `Σ Im(whole) = -Σ ψ_ξ` (negating is exact, so the same sum).
@@ -376,6 +376,30 @@ impl DeformingGrid {
     }
 }
 
+/// `conj(z_ξ) w'` at every node ([`DeformingGrid`]), its real part (a
+/// radial face's swept flux per `dθ`) and its imaginary part (a ring
+/// face's per `dξ`) apart: each face's loop reads only the part it
+/// sweeps ([`SweptFluxes`]), half the bytes of the whole numbers.
+pub(super) struct NodeFlux {
+    re: Vec<f64>,
+    im: Vec<f64>,
+}
+
+impl NodeFlux {
+    /// Zero at `n` nodes.
+    fn zeros(n: usize) -> Self {
+        Self {
+            re: vec![0.0; n],
+            im: vec![0.0; n],
+        }
+    }
+
+    /// At node `i`.
+    fn at(&self, i: usize) -> Complex64 {
+        Complex64::new(self.re[i], self.im[i])
+    }
+}
+
 /// The fluxes the faces sweep (module docs), by the midpoint rule from
 /// the nodes' `conj(z_ξ) w` at the step's start (`now`) and at the last
 /// step's (`before`), taken at the step's middle, `now + half (now -
@@ -383,8 +407,8 @@ impl DeformingGrid {
 /// the fluid's relative streamfunction is ([`super::Flow::step`]). Taken
 /// where the advection needs them, not kept for every face.
 pub(super) struct SweptFluxes<'a> {
-    now: &'a [Complex64],
-    before: &'a [Complex64],
+    now: &'a NodeFlux,
+    before: &'a NodeFlux,
     xi: &'a [f64],
     d_theta: f64,
 }
@@ -401,10 +425,10 @@ impl SweptFluxes<'_> {
         let at = j * nt;
         // Slices of the ring's length (the ring and the next out, now and
         // before), so the loop has no bounds to check.
-        let (now, now_above) = self.now[at..at + 2 * nt].split_at(nt);
-        let (before, before_above) = self.before[at..at + 2 * nt].split_at(nt);
+        let (now, now_above) = self.now.re[at..at + 2 * nt].split_at(nt);
+        let (before, before_above) = self.before.re[at..at + 2 * nt].split_at(nt);
         let d_theta = self.d_theta;
-        let flux = |a: &Complex64, b: &Complex64| 0.5 * (a.re + b.re) * d_theta;
+        let flux = |a: &f64, b: &f64| 0.5 * (a + b) * d_theta;
         let nodes = now
             .iter()
             .zip(now_above)
@@ -431,10 +455,10 @@ impl SweptFluxes<'_> {
         };
         let span = 0.5 * (xi[j] + xi[j + 1]) - below;
         let (now, before) = (
-            &self.now[j * nt..(j + 1) * nt],
-            &self.before[j * nt..(j + 1) * nt],
+            &self.now.im[j * nt..(j + 1) * nt],
+            &self.before.im[j * nt..(j + 1) * nt],
         );
-        let flux = |a: &Complex64, b: &Complex64| 0.5 * (a.im + b.im) * span;
+        let flux = |a: &f64, b: &f64| 0.5 * (a + b) * span;
         // The faces `k + ½` but the last, then the last (round to node 0):
         // no wrap to test in the loop.
         let pairs = (now.iter().zip(&now[1..])).zip(before.iter().zip(&before[1..]));
@@ -505,7 +529,8 @@ impl<M: Motion> Flow<M> {
         g.z.par_chunks_mut(nt)
             .zip(g.dz_dxi.par_chunks_mut(nt))
             .zip(kept.into_par_iter())
-            .zip(d.swept_node.par_chunks_mut(nt))
+            .zip(d.swept_node.re.par_chunks_mut(nt))
+            .zip(d.swept_node.im.par_chunks_mut(nt))
             .zip(d.rigid_psi.par_chunks_mut(nt))
             .zip(g.jac.par_chunks_mut(nt))
             .zip(g.inv_jac.par_chunks_mut(nt))
@@ -513,7 +538,11 @@ impl<M: Motion> Flow<M> {
             .zip(d.powers.par_iter())
             .for_each_init(
                 || (vec![zero; scratch_len], vec![zero; nt]),
-                |(scratch, ring_velocity), ((((((((z, dz), kept), swept), rigid_psi), jac), inv_jac), xi), powers)| {
+                |(scratch, ring_velocity),
+                 (
+                    ((((((((z, dz), kept), swept_re), swept_im), rigid_psi), jac), inv_jac), xi),
+                    powers,
+                )| {
                     let v = kept.unwrap_or(ring_velocity);
                     let rho = xi.exp();
                     for (series, coefficients, out) in [
@@ -526,11 +555,15 @@ impl<M: Motion> Flow<M> {
                         fft.process_with_scratch(out, scratch);
                     }
                     let nodes = jac.iter_mut().zip(inv_jac.iter_mut()).zip(z.iter());
-                    let grid_motion = v.iter().zip(swept.iter_mut()).zip(rigid_psi.iter_mut());
-                    for ((((j, ij), z), d), ((w, s), p)) in nodes.zip(dz.iter()).zip(grid_motion) {
+                    let swept = swept_re.iter_mut().zip(swept_im.iter_mut());
+                    let grid_motion = v.iter().zip(swept).zip(rigid_psi.iter_mut());
+                    for ((((j, ij), z), d), ((w, (s_re, s_im)), p)) in
+                        nodes.zip(dz.iter()).zip(grid_motion)
+                    {
                         *j = d.norm_sqr();
                         *ij = 1.0 / *j;
-                        *s = d.conj() * (w - rigid.velocity_at(*z));
+                        let s = d.conj() * (w - rigid.velocity_at(*z));
+                        (*s_re, *s_im) = (s.re, s.im);
                         *p = rigid.streamfunction(*z);
                     }
                 },
@@ -579,7 +612,7 @@ impl<M: Motion> Flow<M> {
     pub(super) fn swept_rest(&self, i: usize) -> Complex64 {
         self.deforming
             .as_ref()
-            .map_or(Complex64::new(0.0, 0.0), |d| d.swept_node[i])
+            .map_or(Complex64::new(0.0, 0.0), |d| d.swept_node.at(i))
     }
 
     /// The grid's velocity at node `k` of the wall's ring (`outer`:
