@@ -61,22 +61,23 @@ const DEFAULT_MEMORY: f64 = 680e6;
 /// section model at the default resolution (384 × 256 with the far field
 /// coarsened, Courant number 3), s, on the 2-core development machine:
 /// the first cycle's discipline of the default design with
-/// `section_model = "ns"` took 1,720 s (2026-12-06,
-/// `discipline_ns_scores::ns_discipline_benchmark`, the machine otherwise
-/// idle, with each plate sample's map moved by its rigid part); the NS
+/// `section_model = "ns"` took 1,671 s (2026-12-06, after the moving
+/// grid's trims; `discipline_ns_scores::ns_discipline_benchmark`, the
+/// machine otherwise idle; 1,720 s before them the same day, with each
+/// plate sample's map moved by its rigid part); the NS
 /// design run of the same day took 1,856 s and 1,828 s for its cycles 2
 /// and 3 (docs/ns-design). 1,507 s with the maps of before (2026-12-05),
 /// 1,950 s on the exponential 384 × 320, the default until that day.
 /// Its 19 or 20 evaluations (the 18 rows and the confirmations; the
 /// analysed design is a row, found in the cache) run two at a time,
 /// each on one core (`ns2d/README.md`, "Speed"), about 170 s each, where the
-/// initial design's evaluation took 93 s on two threads then (82 s
-/// since the moving grid's passes were trimmed;
+/// initial design's evaluation took 93 s on two threads before the
+/// trims (82 s after the first;
 /// `discipline_ns_scores::ns_deforming_evaluation_benchmark`): the
 /// array's rows, with their faster strokes, cost more than the initial
 /// design on average, so the discipline is measured rather than counted
 /// from one evaluation.
-pub const NS_DISCIPLINE_SECONDS: f64 = 1720.0;
+pub const NS_DISCIPLINE_SECONDS: f64 = 1671.0;
 
 /// The cycles each evaluation ran in [`NS_DISCIPLINE_SECONDS`]'s run
 /// (`[design] section_cycles` of the default design).
@@ -225,7 +226,7 @@ mod tests {
     }
 
     /// The Navier–Stokes section model's disciplines are in the built-in
-    /// design's estimate, which says what they cost. At 1,720 s each (the
+    /// design's estimate, which says what they cost. At 1,671 s each (the
     /// default 384 × 256 grid), three of them, they make it about 13 times
     /// the LDVM run, beyond the [`FAR_TIME_RATIO`] at which `fwav design`
     /// asks before it starts. (The default NS design run on 384 × 256

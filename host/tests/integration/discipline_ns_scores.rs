@@ -181,7 +181,12 @@ fn rows_against(
 /// efficiency: less than two evaluations at another step differ
 /// (7.50 % and 6.36 %, below). Best row 13 Hz, ±40°, −10°, 70° again
 /// (2.598); ANOM 13 Hz, ±30°, 0°, 70°; frequency level means 1.50, 1.92,
-/// 2.40 (docs/ns-design, `l18-384x256-moved.txt`).
+/// 2.40 (docs/ns-design, `l18-384x256-moved.txt`). After the moving
+/// grid's trims (2026-12-06, the binary of `19df000`: the same flows to
+/// the bit, the rows and the best row the same to every digit printed;
+/// the machine otherwise idle, on a day when the rigid evaluation, whose
+/// code did not change, took 57.2 s, 64.9 s and 68.2 s in the
+/// hours round it against its quiet 54.3 s that morning): **1,671 s**.
 ///
 /// On a plate as thick as the vehicle's leading edge
 /// (`FWAV_NS_THICKNESS=0.01`, 2026-12-05) the rows are compared with
@@ -191,7 +196,7 @@ fn rows_against(
 /// and 23.1 % in efficiency: 16.9 % and 16.3 % an evaluation, three to
 /// four times the 0.04 c plate's (`ns2d/README.md`, "The plate's thickness").
 #[test]
-#[ignore = "benchmark (25 to 35 min: 1,720 s at Courant 3 on 2026-12-06; over the issue's 10): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_discipline_benchmark`"]
+#[ignore = "benchmark (25 to 35 min: 1,671 s at Courant 3 on 2026-12-06; over the issue's 10): `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline_ns_scores::ns_discipline_benchmark`"]
 fn ns_discipline_benchmark() {
     use fwav::discipline::kinematic::{optimize, DesignSpace, Weights};
     use fwav::optimize::nsga2::Nsga2Config;
@@ -356,7 +361,12 @@ const THIN_PLATE_ROWS: &str = "l18-384x256-t0.01.txt";
 /// the machine otherwise idle: **rigid 54.3 s, deforming 82.2 s** (the
 /// same flows to the bit: CT 7.10436678696318e-2 and
 /// 8.980278828971328e-2), the deforming evaluation 11.7 % sooner than the
-/// quiet 93.1 s before the trim and 1.37 times the 60 s.
+/// quiet 93.1 s before the trim and 1.37 times the 60 s. After
+/// the swept fluxes' parts were kept apart (`NodeFlux`, the binary of
+/// `19df000`; −4.2 % on three deforming strokes on one thread, side by
+/// side: `ns2d/README.md`, "Speed"), in a slow hour: rigid 68.2 s,
+/// deforming 92.6 s, the same flows to the bit. The reason below keeps
+/// the quiet figures.
 ///
 /// The plate is `env_plate`'s: `FWAV_NS_THICKNESS` sets its thickness
 /// (chords; `ns2d/README.md`, "The plate's thickness"), `FWAV_NS_COURANT` the
