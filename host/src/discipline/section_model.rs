@@ -237,7 +237,6 @@ pub const NS_LONG_MEAN_STROKES: usize = 10;
 /// then (+11.2 %), its own windows scattering little (1.9 % and 0.8 %
 /// in CT at Courant 3 and 4): the two runs had settled into flows whose
 /// means differ by 11 %.
-///
 pub const NS_LONG_MEAN_SCATTER: (f64, f64) = (0.0321, 0.0308);
 
 /// The Navier–Stokes model's thin plate and grid ([`ViscousSection`]'s
