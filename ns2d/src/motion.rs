@@ -42,7 +42,7 @@ impl FrameState {
     /// fluid, in body axes: `V + Ω × z`.
     #[must_use]
     pub fn point_velocity(&self, z: Complex64) -> Complex64 {
-        self.body_velocity() + Complex64::new(0.0, self.rate) * z
+        self.rigid_field().velocity_at(z)
     }
 
     /// Acceleration of the body point `z`, body axes:
@@ -66,7 +66,7 @@ impl FrameState {
     /// `Im(conj(V) z) - Ω |z|²/2` (body axes).
     #[must_use]
     pub fn streamfunction(&self, z: Complex64) -> f64 {
-        (self.body_velocity().conj() * z).im - 0.5 * self.rate * z.norm_sqr()
+        self.rigid_field().streamfunction(z)
     }
 
     /// The gradient `(∂ψ/∂x, ∂ψ/∂y)` of [`Self::streamfunction`] as a
