@@ -51,11 +51,11 @@ pub(crate) fn parse_design(text: &str) -> FlappingKinematics {
     FlappingKinematics::from_degrees([x[0], x[1], x[2], x[3]])
 }
 
-/// The default plate, its thickness, rings and Courant number replaced
-/// by `FWAV_NS_THICKNESS` (chords), `FWAV_NS_RADIAL` (the grid refined
-/// or coarsened as a whole,
-/// [`fwav::aero2d::viscous::ViscousSection::with_radial`]) and
-/// `FWAV_NS_COURANT` where set; `FWAV_NS_FAR=none` for the exponential
+/// The default plate, its thickness, rings, nodes round and Courant
+/// number replaced by `FWAV_NS_THICKNESS` (chords), `FWAV_NS_RADIAL` (the
+/// grid refined or coarsened as a whole,
+/// [`fwav::aero2d::viscous::ViscousSection::with_radial`]),
+/// `FWAV_NS_AROUND` and `FWAV_NS_COURANT` where set; `FWAV_NS_FAR=none` for the exponential
 /// stretching throughout (the default before 2026-12-05, on 320 rings).
 pub(crate) fn env_plate() -> ViscousPlate {
     let default = ViscousPlate::new(env_thickness());
@@ -67,6 +67,7 @@ pub(crate) fn env_plate() -> ViscousPlate {
     ViscousPlate {
         radial,
         far,
+        around: std::env::var("FWAV_NS_AROUND").map_or(default.around, |v| v.parse().unwrap()),
         courant: std::env::var("FWAV_NS_COURANT").map_or(default.courant, |v| v.parse().unwrap()),
         ..default
     }
