@@ -185,8 +185,8 @@ pub const DESIGN: Table<DesignConfig> = Table {
                   time. The Navier-Stokes flow round the deforming plate has not settled by \
                   then: over cycles 3 and 4 (4, the default) its scores scatter by 5.3 % (CT) \
                   and 4.5 % (efficiency) with any change of what led up to them, which the \
-                  discipline's adoption margin carries; over cycles 3 to 12 (12) by 4.0 % and \
-                  3.4 %, at three times the time (about 1.3 hours a discipline run)",
+                  discipline's adoption margin carries; over cycles 3 to 12 (12) by 4.6 % and \
+                  4.2 %, at three times the time (about 1.3 hours a discipline run)",
             value: |d| Value::unsigned(d.section_cycles),
         },
     ],

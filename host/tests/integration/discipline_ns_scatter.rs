@@ -357,10 +357,23 @@ fn a_three_stroke_evaluation_keeps_the_rows_scores() {
 /// each plate sample's map moved by its rigid part (2026-12-06, the
 /// binary of `ba486e3`, 6,012 s, its first hour beside compiles and
 /// tests): CT 4.43 % (mean +1.40 %), efficiency 4.09 % (mean +0.98 %),
-/// passing (`docs/ns-design/long-means-384x256-moved.txt`).
+/// passing (`docs/ns-design/long-means-384x256-moved.txt`), with the
+/// long-mean scatter of then (4.03 % and 3.43 %) taken out.
+///
+/// Fails with [`NS_LONG_MEAN_SCATTER`] as measured since (2026-12-06
+/// afternoon: 4.64 % and 4.18 %, four runs of each of seven rows):
+/// taken out of the same deviations (7.09 % and 5.75 % before, 5.99 %
+/// and 5.34 % with the present maps), 3.79 % and 3.32 %, −28.6 % and
+/// −26.2 % from the declared (computed from the run's printed figures,
+/// not run again). On the safe side: the declared window scatter is
+/// larger than this implies; the long means' scatter comes from seven
+/// rows chosen among those whose windows moved most, and may overstate
+/// the 18 rows' (`section_model::NS_WINDOW_SCATTER`'s docs).
 #[test]
-#[ignore = "heavy (about 90 min: 18 four-stroke and 18 twelve-stroke runs, two at a time, \
-            a round of two rows 10-13 min): \
+#[ignore = "fails since NS_LONG_MEAN_SCATTER was measured on four runs a row (2026-12-06: \
+            3.79 % and 3.32 % against the declared 5.3 % and 4.5 %, outside the 17.1 %, on the safe side; \
+            computed from the last run's figures), and heavy (about 90 min: 18 four-stroke and \
+            18 twelve-stroke runs, two at a time, a round of two rows 10-13 min): \
             `cargo test --release -p fwav --test integration -- --ignored --nocapture \
             discipline_ns_scatter::the_declared_scatter_agrees_with_the_rows_error_against_their_long_means`"]
 fn the_declared_scatter_agrees_with_the_rows_error_against_their_long_means() {
@@ -438,4 +451,114 @@ fn stroke_means(case: &SectionCase, design: &FlappingKinematics) -> Vec<(f64, f6
 /// The root mean square of `values`.
 fn root_mean_square(values: &[f64]) -> f64 {
     (mean(&values.iter().map(|x| x * x).collect::<Vec<_>>())).sqrt()
+}
+
+/// The issue's convergence figure asked of the twelve-stroke scores
+/// (`[design] section_cycles = 12`, the mean over strokes 3–12): each of
+/// the seven rows of [`NS_LONG_MEAN_SCATTER`] (L18 rows 2, 4, 6, 7, 11,
+/// 14 and 18, the default section deforming as the built-in design's
+/// first system analysis found) run at the default resolution, at a
+/// shorter step (Courant 2 against 3) and on a grid refined both ways
+/// (480 nodes round against 384, 320 rings against 256, the far
+/// stretch scaled with them), its CT and efficiency to change by less
+/// than 3 % under each refinement. `FWAV_NS_DESIGNS`
+/// ("9,20,0,90;11,40,-10,90": Hz and degrees) runs other designs.
+///
+/// Fails (2026-12-06, each run one thread, two at a time, as separate
+/// runs of [`ns_deforming_window_scatter_benchmark`] with
+/// `FWAV_NS_COURANT=2`, and with `FWAV_NS_AROUND=480 FWAV_NS_RADIAL=320`;
+/// the default's runs those of `NS_LONG_MEAN_SCATTER`'s table;
+/// `docs/ns-design/long-means-refined-384x256-moved.txt`): the shorter
+/// step moved CT by −2.8 %, −1.4 %, −6.6 %, −14.5 %, −0.5 %, +4.5 %
+/// and +0.0 % (rows 2 to 18; 6.4 % RMS, mean −3.0 %) and the efficiency
+/// by 5.2 % RMS (mean −2.3 %); the refined grid moved CT by +1.1 %,
+/// +4.0 %, −11.7 %, −0.0 %, −1.0 %, −8.1 % and −1.8 % (5.7 % RMS, mean
+/// −2.5 %) and the efficiency by 6.0 % RMS (mean −2.4 %). Three rows
+/// of seven change by less than 3 % both ways (2, 11 and 18). The
+/// flows do not converge to one mean; they scatter: row 6's long mean
+/// at Courant 3 (0.1650) lies above its Courant 4, Courant 2 and
+/// refined grid's (0.1526, 0.1541, 0.1457); row 7's Courant 2 run
+/// climbs through its five windows (0.0415 to 0.0512) where its three
+/// other runs hold at 0.054–0.058. On the refined grid the initial
+/// design's flow repeats (its windows within 0.19 %, against 1.45 %
+/// at the default and 4.6 % at Courant 2), as the rigid section's does from 320 rings
+/// (`ns2d/README.md`, "The long mean"); row 18's within 0.84 %.
+/// The runs took 582–1,057 s at Courant 2 and 721–1,112 s on the
+/// refined grid (398–839 s at the default).
+#[test]
+#[ignore = "fails (the step refined to Courant 2: row 7's CT -14.5 %, row 6's -6.6 %, 6.4 % RMS over \
+            the seven rows; the grid refined to 480 x 320: row 6's -11.7 %, row 14's -8.1 %, 5.7 % RMS; \
+            docs/ns-design/long-means-refined-384x256-moved.txt), and heavy (about 3 hours: 21 \
+            twelve-stroke runs, two at a time): `cargo test --release -p fwav --test integration -- --ignored --nocapture \
+            discipline_ns_scatter::the_long_means_change_less_than_3_percent_when_the_step_and_the_grid_are_refined`"]
+fn the_long_means_change_less_than_3_percent_when_the_step_and_the_grid_are_refined() {
+    use rayon::prelude::*;
+    let designs: Vec<FlappingKinematics> = std::env::var("FWAV_NS_DESIGNS").map_or_else(
+        |_| {
+            [
+                [11.0, 30.0, 0.0, 90.0],
+                [9.0, 20.0, 0.0, 90.0],
+                [13.0, 40.0, -10.0, 70.0],
+                [9.0, 30.0, -10.0, 110.0],
+                [11.0, 20.0, -10.0, 110.0],
+                [11.0, 40.0, -10.0, 90.0],
+                [13.0, 30.0, -10.0, 90.0],
+            ]
+            .map(FlappingKinematics::from_degrees)
+            .to_vec()
+        },
+        |v| v.split(';').map(parse_design).collect(),
+    );
+    let plate = default_plate();
+    let long = |plate: ViscousPlate| SectionCase {
+        cycles: 12,
+        ..deforming_case(plate)
+    };
+    let cases = [
+        ("default", long(plate)),
+        (
+            "Courant 2",
+            long(ViscousPlate {
+                courant: 2.0,
+                ..plate
+            }),
+        ),
+        (
+            "480 x 320",
+            long(ViscousPlate {
+                around: 480,
+                radial: 320,
+                far: plate.far.map(|f| f.scaled(plate.radial, 320)),
+                ..plate
+            }),
+        ),
+    ];
+    let runs: Vec<(usize, usize)> = (0..designs.len())
+        .flat_map(|d| (0..cases.len()).map(move |c| (d, c)))
+        .collect();
+    let means: Vec<(f64, f64)> = runs
+        .par_iter()
+        .map(|&(d, c)| window_of(&stroke_means(&cases[c].1, &designs[d])[2..]))
+        .collect();
+    let mut worst: f64 = 0.0;
+    for (d, design) in designs.iter().enumerate() {
+        let at = |c: usize| means[d * cases.len() + c];
+        let default = at(0);
+        for (c, (name, _)) in cases.iter().enumerate().skip(1) {
+            let refined = at(c);
+            let change = (refined.0 / default.0 - 1.0, refined.1 / default.1 - 1.0);
+            println!(
+                "{:?}: default CT {:.4} efficiency {:.4}; {name} {:.4} {:.4} ({:+.1} %, {:+.1} %)",
+                design.degrees(),
+                default.0,
+                default.1,
+                refined.0,
+                refined.1,
+                100.0 * change.0,
+                100.0 * change.1
+            );
+            worst = worst.max(change.0.abs()).max(change.1.abs());
+        }
+    }
+    assert!(worst < 0.03, "the largest change {:.1} %", 100.0 * worst);
 }
