@@ -233,8 +233,8 @@ pub const NS_LONG_MEAN_STROKES: usize = 10;
 /// 0.054–0.058 (`discipline_ns_scatter::the_long_means_change_less_than_3_percent_when_the_step_and_the_grid_are_refined`
 /// fails). The seven rows were chosen among those whose two-stroke
 /// windows moved most with the step, so the figure may overstate the
-/// average row's: it is the one to carry for the designs a discipline
-/// ends on (rows 6 and 14, 13 and 11 Hz at ±40°, scatter by 5–6 %).
+/// average row's; the rows that score best scatter as much (row 6, the
+/// first cycle's best row, by 5.2 % in CT).
 ///
 /// Until the Courant 2 and refined-grid runs (the same afternoon) the
 /// figure was the Courant 3 runs against the Courant 4 runs alone, the

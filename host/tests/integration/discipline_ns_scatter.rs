@@ -481,8 +481,10 @@ fn root_mean_square(values: &[f64]) -> f64 {
 /// climbs through its five windows (0.0415 to 0.0512) where its three
 /// other runs hold at 0.054–0.058. On the refined grid the initial
 /// design's flow repeats (its windows within 0.19 %, against 1.45 %
-/// at the default and 4.6 % at Courant 2), as the rigid section's does from 320 rings
-/// (`ns2d/README.md`, "The long mean"); row 18's within 0.84 %.
+/// at the default and 4.6 % at Courant 2), as the rigid section's does
+/// from 320 rings (`ns2d/README.md`, "The long mean"); row 18's within
+/// 0.84 %. The three changes' means (about −3 %) share the default's
+/// runs, so they are not three independent shifts.
 /// The runs took 582–1,057 s at Courant 2 and 721–1,112 s on the
 /// refined grid (398–839 s at the default).
 #[test]
