@@ -327,6 +327,18 @@ impl ViscousPlate {
         }
     }
 
+    /// This plate with `radial` rings, the grid refined or coarsened as a
+    /// whole: its far stretch, if any, scaled with the rings
+    /// ([`ViscousSection::with_radial`]'s).
+    #[must_use]
+    pub fn with_radial(&self, radial: usize) -> Self {
+        Self {
+            radial,
+            far: self.far.map(|f| f.scaled(self.radial, radial)),
+            ..*self
+        }
+    }
+
     /// What the reports add for the spin-up: `"; the two strokes before
     /// the scored ones spun up on 256 x 214 nodes"`, or nothing.
     fn spin_up_clause(&self) -> String {

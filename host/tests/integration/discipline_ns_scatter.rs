@@ -17,7 +17,7 @@ use fwav::discipline::section_model::{
 };
 
 use crate::discipline_ns_scores::{
-    default_plate, deforming_case, env_design, env_plate, l18_rows, parse_design,
+    default_plate, deforming_case, env_design, env_designs, env_plate, l18_rows, parse_designs,
 };
 use crate::viscous_default_section::{mean, standard_deviation, window_of};
 
@@ -208,10 +208,7 @@ fn ns_window_time_step_benchmark() {
         cycles: std::env::var("FWAV_NS_CYCLES").map_or(4, |v| v.parse().unwrap()),
         ..deforming_case(plate)
     };
-    let designs: Vec<FlappingKinematics> = std::env::var("FWAV_NS_DESIGNS").map_or_else(
-        |_| vec![FlappingKinematics::INITIAL],
-        |v| v.split(';').map(parse_design).collect(),
-    );
+    let designs = env_designs(|| vec![FlappingKinematics::INITIAL]);
     let clock = std::time::Instant::now();
     let results: Vec<_> = designs.par_iter().map(|d| case.evaluate(d)).collect();
     for (design, result) in designs.iter().zip(&results) {
@@ -272,9 +269,7 @@ fn a_three_stroke_evaluation_keeps_the_rows_scores() {
         ..deforming_case(plate)
     };
     let listed = std::env::var("FWAV_NS_DESIGNS").ok();
-    let designs: Vec<FlappingKinematics> = listed
-        .as_deref()
-        .map_or_else(l18_rows, |v| v.split(';').map(parse_design).collect());
+    let designs: Vec<FlappingKinematics> = listed.as_deref().map_or_else(l18_rows, parse_designs);
     let clock = std::time::Instant::now();
     let strokes: Vec<Vec<(f64, f64)>> =
         designs.par_iter().map(|d| stroke_means(&case, d)).collect();
@@ -495,22 +490,19 @@ fn root_mean_square(values: &[f64]) -> f64 {
             discipline_ns_scatter::the_long_means_change_less_than_3_percent_when_the_step_and_the_grid_are_refined`"]
 fn the_long_means_change_less_than_3_percent_when_the_step_and_the_grid_are_refined() {
     use rayon::prelude::*;
-    let designs: Vec<FlappingKinematics> = std::env::var("FWAV_NS_DESIGNS").map_or_else(
-        |_| {
-            [
-                [11.0, 30.0, 0.0, 90.0],
-                [9.0, 20.0, 0.0, 90.0],
-                [13.0, 40.0, -10.0, 70.0],
-                [9.0, 30.0, -10.0, 110.0],
-                [11.0, 20.0, -10.0, 110.0],
-                [11.0, 40.0, -10.0, 90.0],
-                [13.0, 30.0, -10.0, 90.0],
-            ]
-            .map(FlappingKinematics::from_degrees)
-            .to_vec()
-        },
-        |v| v.split(';').map(parse_design).collect(),
-    );
+    let designs = env_designs(|| {
+        [
+            [11.0, 30.0, 0.0, 90.0],
+            [9.0, 20.0, 0.0, 90.0],
+            [13.0, 40.0, -10.0, 70.0],
+            [9.0, 30.0, -10.0, 110.0],
+            [11.0, 20.0, -10.0, 110.0],
+            [11.0, 40.0, -10.0, 90.0],
+            [13.0, 30.0, -10.0, 90.0],
+        ]
+        .map(FlappingKinematics::from_degrees)
+        .to_vec()
+    });
     let plate = default_plate();
     let long = |plate: ViscousPlate| SectionCase {
         cycles: 12,
@@ -529,9 +521,7 @@ fn the_long_means_change_less_than_3_percent_when_the_step_and_the_grid_are_refi
             "480 x 320",
             long(ViscousPlate {
                 around: 480,
-                radial: 320,
-                far: plate.far.map(|f| f.scaled(plate.radial, 320)),
-                ..plate
+                ..plate.with_radial(320)
             }),
         ),
     ];

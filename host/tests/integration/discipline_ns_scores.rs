@@ -45,6 +45,20 @@ pub(crate) fn env_design() -> FlappingKinematics {
     std::env::var("FWAV_NS_DESIGN").map_or(FlappingKinematics::INITIAL, |v| parse_design(&v))
 }
 
+/// The designs of `FWAV_NS_DESIGNS` ([`parse_designs`]), or
+/// `otherwise`'s.
+pub(crate) fn env_designs(
+    otherwise: impl FnOnce() -> Vec<FlappingKinematics>,
+) -> Vec<FlappingKinematics> {
+    std::env::var("FWAV_NS_DESIGNS").map_or_else(|_| otherwise(), |v| parse_designs(&v))
+}
+
+/// Designs written "9,20,0,90;11,40,-10,90" ([`parse_design`]'s, apart
+/// by `;`).
+pub(crate) fn parse_designs(text: &str) -> Vec<FlappingKinematics> {
+    text.split(';').map(parse_design).collect()
+}
+
 /// A design written "13,20,0,110" (Hz and degrees).
 pub(crate) fn parse_design(text: &str) -> FlappingKinematics {
     let x: Vec<f64> = text.split(',').map(|x| x.trim().parse().unwrap()).collect();
@@ -61,16 +75,16 @@ pub(crate) fn parse_design(text: &str) -> FlappingKinematics {
 pub(crate) fn env_plate() -> ViscousPlate {
     let default = ViscousPlate::new(env_thickness());
     let radial = std::env::var("FWAV_NS_RADIAL").map_or(default.radial, |v| v.parse().unwrap());
+    let resized = default.with_radial(radial);
     let far = match std::env::var("FWAV_NS_FAR").as_deref() {
         Ok("none") => None,
-        _ => default.far.map(|f| f.scaled(default.radial, radial)),
+        _ => resized.far,
     };
     ViscousPlate {
-        radial,
         far,
         around: std::env::var("FWAV_NS_AROUND").map_or(default.around, |v| v.parse().unwrap()),
         courant: std::env::var("FWAV_NS_COURANT").map_or(default.courant, |v| v.parse().unwrap()),
-        ..default
+        ..resized
     }
 }
 
