@@ -23,8 +23,12 @@ pub struct GridSpec {
     /// The outer boundary's radius over the map scale `|a|` (about the
     /// section's half-length).
     pub outer_radius: f64,
-    /// The first radial cell at the wall, in `ξ` (physical height about
-    /// this times the local `|∂z/∂ξ|`).
+    /// The first radial cell at the wall, in `ξ`: the stretching's slope
+    /// at the wall times `Δη`, `g'(0) Δη` (the first ring itself lies at
+    /// `g(Δη)`, about half a cell's growth further out: 2.4 % on 48 cells
+    /// out to 40 map radii); physical height about this times the local
+    /// `|∂z/∂ξ|`. Halved with `Δη`, it keeps `g`: the finer grid's every
+    /// other ring is the coarser's (`tests/grid_order.rs`).
     pub first_cell: f64,
     /// The far field coarsened ([`FarStretch`]), or `None` for the
     /// exponential stretching throughout ([`crate::RadialStretch`]).

@@ -31,8 +31,8 @@ pub struct RadialStretch {
 
 impl RadialStretch {
     /// The stretching with `g(1) = xi_max` and a first cell of `first_cell`
-    /// in `ξ` on `cells` uniform `η` intervals (Newton on
-    /// `(e^s - 1)/s = xi_max cells / first_cell`).
+    /// in `ξ`, `g'(0) Δη`, on `cells` uniform `η` intervals (Newton on
+    /// `(e^s - 1)/s = xi_max / (cells first_cell)`).
     ///
     /// # Errors
     /// [`NsError::NoStretching`] when the first cell is not finer than a
