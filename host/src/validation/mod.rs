@@ -16,7 +16,10 @@
 //! reference value, error, pass. A solver error (or panic) fails the case
 //! with its text instead of stopping the run. Reference values are the
 //! cited publications' numbers, or analytic solutions evaluated
-//! independently of the solver under test (each case says which).
+//! independently of the solver under test (each case says which); the
+//! Navier–Stokes convergence cases (`ns2d::convergence`) compare a change,
+//! the result refined against the result, with 0 (a verification that
+//! issue 23 asks for, not a comparison with published data).
 //!
 //! Some cases share one expensive computation (the three Leissa modes come
 //! from one modal analysis, the NAFEMS 21T numbers from one transient run):
@@ -24,8 +27,10 @@
 //! remembered (the inputs are fixed, the results deterministic).
 //!
 //! Imports: the solver rooms it checks ([`crate::aero2d`], [`crate::uvlm`],
-//! [`crate::shell`], [`crate::optimize`]); nothing imports it but the
-//! program.
+//! [`crate::shell`], [`crate::optimize`]), and for the convergence cases
+//! the discipline's section evaluation ([`crate::discipline::section`])
+//! and the system analysis's section file it reads; nothing imports it
+//! but the program.
 
 use std::sync::{Arc, OnceLock};
 use std::time::Instant;

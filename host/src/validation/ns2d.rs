@@ -7,9 +7,13 @@
 //! Wang, Birch & Dickinson (2004) at Re 75. The curves are the authors'
 //! as distributed with PetIBM (`ns2d/tests/data`, each file names its
 //! source). These cases take minutes each (the wakes need 150 shedding
-//! times); the crate's tests run the quick ones.
+//! times); the crate's tests run the quick ones. Then the issue's
+//! convergence of the default FWAV section's evaluation (`ns2d/convergence.rs`:
+//! the change when the step or the grid is refined, against 0).
 
 use std::sync::Arc;
+
+mod convergence;
 
 use fwav_ns2d::cases::{CylinderWake, HoveringEllipse, ImpulsiveCylinder};
 use fwav_ns2d::{NsError, ReferenceCurve, WakeStatistics};
@@ -44,6 +48,9 @@ pub fn cases() -> Vec<Validation> {
         case1_mean_lift(),
         case1_peak_lift(),
     ]
+    .into_iter()
+    .chain(convergence::cases())
+    .collect()
 }
 
 /// What a wake case reads.
