@@ -466,5 +466,5 @@ fn the_default_evaluation_converges_with_the_step_and_the_grid() {
             failed.push(case.name);
         }
     }
-    assert!(failed.is_empty(), "over 3 %: {failed:?}");
+    assert!(failed.is_empty(), "not within 3 %, or failed: {failed:?}");
 }
