@@ -28,7 +28,8 @@ pub struct GridSpec {
     /// `g(Δη)`, about half a cell's growth further out: 2.4 % on 48 cells
     /// out to 40 map radii); physical height about this times the local
     /// `|∂z/∂ξ|`. Halved with `Δη`, it keeps `g`: the finer grid's every
-    /// other ring is the coarser's (`tests/grid_order.rs`).
+    /// other ring is the coarser's (`tests/deforming_sections.rs`,
+    /// `the_grids_are_nested`).
     pub first_cell: f64,
     /// The far field coarsened ([`FarStretch`]), or `None` for the
     /// exponential stretching throughout ([`crate::RadialStretch`]).
