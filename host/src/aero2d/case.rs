@@ -20,7 +20,9 @@ use super::naca::{read_points, Naca4, NacaError, TrailingEdge};
 use super::panel::DEFAULT_PANELS;
 use super::panel::{PanelSettings, PanelSolver, SectionShape, ShapeHistory};
 use super::theory::garrick_plunge;
-use super::viscous::{SectionPath, SurfaceLoads, ViscousSection, ViscousShape, STILL_KICK_RATE};
+use super::viscous::{
+    FlowField, SectionPath, SurfaceLoads, ViscousSection, ViscousShape, STILL_KICK_RATE,
+};
 use super::window::WindowStatistics;
 
 mod error;
@@ -256,6 +258,9 @@ pub struct CaseRun {
     /// The wall's pressure and skin friction at the end (the viscous
     /// model's; `None` for the inviscid ones).
     pub surface: Option<SurfaceLoads>,
+    /// The flow at the end on every node of the grid (the viscous
+    /// model's; `None` for the inviscid ones).
+    pub field: Option<FlowField>,
 }
 
 impl Case {
@@ -440,6 +445,7 @@ impl Case {
                 .collect(),
             body: solver.section_points(),
             surface: None,
+            field: None,
         })
     }
 
@@ -468,6 +474,7 @@ impl Case {
             vortices: solver.wake().to_vec(),
             body: self.body_at(settings.duration, solver.surface_pressure().0),
             surface: None,
+            field: None,
         })
     }
 
@@ -500,6 +507,7 @@ impl Case {
             vortices: run.vorticity,
             body: run.body,
             surface: Some(run.surface),
+            field: Some(run.field),
         })
     }
 

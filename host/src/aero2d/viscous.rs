@@ -63,6 +63,7 @@ use fwav_ns2d::{Complex64, Contour, FarStretch, Flow, GridSpec, SectionMap, MAX_
 mod deflection;
 mod deforming;
 mod error;
+mod field;
 mod march;
 mod path;
 mod surface;
@@ -71,6 +72,7 @@ use super::history::History;
 use super::ldvm::FreeVortex;
 pub use deflection::{DeflectionState, RigidDeflection, MAX_DEFLECTION_SAMPLES};
 pub use error::ViscousError;
+pub use field::FlowField;
 use march::March;
 pub use path::{SectionPath, STILL_KICK_CHORDS, STILL_KICK_RATE};
 pub use surface::SurfaceLoads;
@@ -480,6 +482,8 @@ pub struct ViscousRun {
     pub body: Vec<(f64, f64)>,
     /// The wall's pressure and skin friction at the end.
     pub surface: SurfaceLoads,
+    /// The flow at the end on every node (for ParaView).
+    pub field: FlowField,
 }
 
 impl ViscousSection {
@@ -557,6 +561,7 @@ impl ViscousSection {
         march.to(&mut flow, duration)?;
         let (vorticity, body) = picture(&flow, &path);
         let surface = SurfaceLoads::of(&flow, &path, 1.0 / reynolds);
+        let field = FlowField::of(&flow, &path);
         Ok(ViscousRun {
             history: march.history,
             sample: march.sample,
@@ -566,6 +571,7 @@ impl ViscousSection {
             vorticity,
             body,
             surface,
+            field,
         })
     }
 

@@ -10,6 +10,7 @@ use fwav::aero2d::motion::Motion;
 use fwav::aero2d::viscous::ViscousSection;
 use fwav::aero2d::window::MIN_SHEDDING_PERIODS;
 use fwav::aeroelastic::handoff::SectionFile;
+use fwav::output::flow_field_vtu::write_flow_field;
 use fwav::output::history_csv::write_history_csv;
 use fwav::output::section_plot::draw;
 use fwav::output::surface_csv::write_surface_csv;
@@ -112,6 +113,12 @@ pub struct Aero2dArgs {
     /// and y (a file that exists is refused).
     #[arg(long)]
     pub surface: Option<PathBuf>,
+    /// Write the flow at the run's end to this ParaView file (`.vtu`;
+    /// `--model ns` only): the grid's cells, the vorticity and the
+    /// streamfunction at its nodes, in the frame of `--plot`'s picture
+    /// (a file that exists is refused).
+    #[arg(long)]
+    pub field: Option<PathBuf>,
     /// Machine-readable output.
     #[arg(long)]
     pub json: bool,
@@ -143,11 +150,12 @@ fn check(a: &Aero2dArgs) -> Result<()> {
         || a.ns_radial.is_some()
         || a.ns_courant.is_some()
         || a.surface.is_some()
+        || a.field.is_some()
         || a.ns_thickness != ViscousSection::DEFAULT_THICKNESS;
     if a.model != FlowModel::Ns && ns_options {
         bail!(
-            "--ns-thickness, --ns-around, --ns-radial, --ns-courant and --surface apply to \
-             --model ns only"
+            "--ns-thickness, --ns-around, --ns-radial, --ns-courant, --surface and --field \
+             apply to --model ns only"
         );
     }
     if let Some(c) = a.ns_courant {
@@ -210,6 +218,32 @@ fn check(a: &Aero2dArgs) -> Result<()> {
         bail!("--reynolds {} must be in [100, 1e8]", a.reynolds);
     }
     Ok(())
+}
+
+/// Refuses, before the run, a data file to write that exists: the files
+/// are never overwritten, and a long viscous run is not lost to a name
+/// found taken at its end (the writes refuse one made meanwhile too).
+fn check_outputs(a: &Aero2dArgs) -> Result<()> {
+    for (flag, path) in [
+        ("--history", &a.history),
+        ("--surface", &a.surface),
+        ("--field", &a.field),
+    ] {
+        if let Some(path) = path.as_ref().filter(|p| p.exists()) {
+            bail!(
+                "{flag} {}: the file exists (an existing file is never overwritten); \
+                 choose a new name or remove it",
+                path.display()
+            );
+        }
+    }
+    Ok(())
+}
+
+/// The context of a data file's failed write (its cause follows it;
+/// one that exists is refused before the run: [`check_outputs`]).
+fn not_written(flag: &str, path: &std::path::Path) -> String {
+    format!("{flag} {}: not written", path.display())
 }
 
 /// The case the arguments describe.
@@ -322,6 +356,7 @@ fn print_text(a: &Aero2dArgs, case: &Case, run: &CaseRun) {
 /// Runs the command.
 pub fn run(a: &Aero2dArgs) -> Result<()> {
     check(a)?;
+    check_outputs(a)?;
     let case = case(a)?;
     case.check_work()?;
     let run = case.run().with_context(|| match &a.deformation {
@@ -335,22 +370,13 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
             .with_context(|| format!("--plot {}", png.display()))?;
     }
     if let Some(csv) = &a.history {
-        write_history_csv(&run.history, csv).with_context(|| {
-            format!(
-                "--history {}: not written (an existing file is never overwritten; \
-                 choose a new name)",
-                csv.display()
-            )
-        })?;
+        write_history_csv(&run.history, csv).with_context(|| not_written("--history", csv))?;
     }
     if let (Some(csv), Some(surface)) = (&a.surface, &run.surface) {
-        write_surface_csv(surface, csv).with_context(|| {
-            format!(
-                "--surface {}: not written (an existing file is never overwritten; \
-                 choose a new name)",
-                csv.display()
-            )
-        })?;
+        write_surface_csv(surface, csv).with_context(|| not_written("--surface", csv))?;
+    }
+    if let (Some(vtu), Some(field)) = (&a.field, &run.field) {
+        write_flow_field(field, vtu).with_context(|| not_written("--field", vtu))?;
     }
     match a.duration {
         Some(duration) => report_window(a, &case, &run, duration),

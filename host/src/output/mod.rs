@@ -5,13 +5,15 @@
 //! - [`section_plot`]: one 2D section run ([`crate::aero2d`]): the wake
 //!   and the section, and the force histories; [`history_csv`]: the
 //!   histories as CSV; [`surface_csv`]: a viscous run's wall pressure
-//!   and skin friction as CSV.
+//!   and skin friction as CSV; [`flow_field_vtu`]: a viscous run's flow
+//!   at its end (vorticity and streamfunction on the grid) for ParaView.
 //! - [`discipline_plot`]: the aerodynamic discipline
 //!   ([`crate::discipline`]): main effects and the CT–efficiency plane
 //!   with the Pareto front.
 //! - [`layout_picture`]: a carbon layout ([`crate::topology`]) as a
 //!   picture of the planform.
-//! - [`vtu`]: the ParaView writer: a shell mesh with point and cell fields.
+//! - [`vtu`]: the ParaView writer: a shell mesh, or any mesh of
+//!   quadrilaterals, with point and cell fields.
 //! - [`wing_series`]: a system analysis ([`crate::aeroelastic`]) as
 //!   ParaView time series of the deformed wing and its wake.
 //!
@@ -27,6 +29,7 @@
 
 pub mod discipline_plot;
 pub mod drawing;
+pub mod flow_field_vtu;
 pub mod history_csv;
 pub mod layout_picture;
 pub mod section_plot;

@@ -1,7 +1,10 @@
-//! ParaView output: the mesh as a VTK XML unstructured grid (`.vtu`,
-//! ASCII), with point fields (e.g. displacement) and cell fields (e.g.
-//! density, strain energy). Written to a temporary file and renamed, so a
-//! reader never sees half a file.
+//! ParaView output: a mesh of quadrilaterals (a shell mesh, or any
+//! grid given as points and cells) as a VTK XML unstructured grid
+//! (`.vtu`, ASCII), with point fields (e.g. displacement) and cell fields
+//! (e.g. density, strain energy). [`write()`] writes to a temporary file
+//! and renames it, so a reader never sees half a file (the design run's
+//! own directory); [`write_new`] refuses a file that exists (a path the
+//! user named).
 
 use std::fmt::Write as _;
 use std::io;
@@ -33,6 +36,14 @@ pub enum VtuError {
         /// Values expected.
         expected: usize,
     },
+    /// A cell names a point that is not there.
+    #[error("a cell names point {index} of {points}")]
+    Cell {
+        /// The point's index.
+        index: usize,
+        /// Points given.
+        points: usize,
+    },
     /// The file could not be written.
     #[error("writing {path}: {source}")]
     Io {
@@ -45,7 +56,18 @@ pub enum VtuError {
 
 /// The `.vtu` text of `mesh` with `fields`.
 pub fn to_string(mesh: &ShellMesh, fields: &[Field<'_>]) -> Result<String, VtuError> {
-    let (np, nc) = (mesh.nodes.len(), mesh.elements.len());
+    let points: Vec<[f64; 3]> = mesh.nodes.iter().map(|p| [p.x, p.y, p.z]).collect();
+    quads_to_string(&points, &mesh.elements, fields)
+}
+
+/// The `.vtu` text of the quadrilaterals `quads` (four indices into
+/// `points` each, in order round the cell) with `fields`.
+pub fn quads_to_string(
+    points: &[[f64; 3]],
+    quads: &[[usize; 4]],
+    fields: &[Field<'_>],
+) -> Result<String, VtuError> {
+    let (np, nc) = (points.len(), quads.len());
     for f in fields {
         let (name, got, expected) = match f {
             Field::PointScalar(n, v) => (n, v.len(), np),
@@ -70,12 +92,18 @@ pub fn to_string(mesh: &ShellMesh, fields: &[Field<'_>]) -> Result<String, VtuEr
     s.push_str(
         "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
     );
-    for p in &mesh.nodes {
-        let _ = writeln!(s, "{:e} {:e} {:e}", p.x, p.y, p.z);
+    for [x, y, z] in points {
+        let _ = writeln!(s, "{x:e} {y:e} {z:e}");
     }
     s.push_str("</DataArray>\n</Points>\n<Cells>\n");
     s.push_str("<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n");
-    for e in &mesh.elements {
+    for e in quads {
+        if let Some(&i) = e.iter().find(|&&i| i >= np) {
+            return Err(VtuError::Cell {
+                index: i,
+                points: np,
+            });
+        }
         let _ = writeln!(s, "{} {} {} {}", e[0], e[1], e[2], e[3]);
     }
     s.push_str("</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n");
@@ -133,6 +161,36 @@ pub fn write(path: &Path, mesh: &ShellMesh, fields: &[Field<'_>]) -> Result<(), 
     let temporary = path.with_extension("vtu.partial");
     std::fs::write(&temporary, text).map_err(io_error)?;
     std::fs::rename(&temporary, path).map_err(io_error)
+}
+
+/// Writes the quadrilaterals `quads` of `points` with `fields` to
+/// `path`, which must not exist: a file there is refused, not replaced
+/// (the error's source is then of kind `AlreadyExists`). A write that
+/// fails part way removes what it wrote.
+pub fn write_new(
+    path: &Path,
+    points: &[[f64; 3]],
+    quads: &[[usize; 4]],
+    fields: &[Field<'_>],
+) -> Result<(), VtuError> {
+    use std::io::Write as _;
+    let text = quads_to_string(points, quads, fields)?;
+    let io_error = |source| VtuError::Io {
+        path: path.display().to_string(),
+        source,
+    };
+    let mut file = std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)
+        .map_err(io_error)?;
+    file.write_all(text.as_bytes())
+        .and_then(|()| file.sync_all())
+        .map_err(|e| {
+            // The name was ours (created above): take back the part written.
+            let _ = std::fs::remove_file(path);
+            io_error(e)
+        })
 }
 
 /// Per-node translations `[u, v, w]` of a global 6-DOF vector.

@@ -30,5 +30,6 @@ mod topology;
 mod uvlm;
 mod validate;
 mod viscous_default_section;
+mod viscous_field;
 mod viscous_section;
 mod viscous_stream;

@@ -1,0 +1,96 @@
+//! The flow at a viscous run's end on the grid's nodes: what
+//! `fwav aero2d --model ns --field FILE.vtu` writes for ParaView
+//! (`crate::output::flow_field_vtu`).
+
+use fwav_ns2d::Flow;
+
+use super::SectionPath;
+
+/// The flow at a run's end on every node of the grid, in the global
+/// frame of [`crate::aero2d::case`] (chords; the picture's frame, the
+/// section pitched and plunged), in the run's units (lengths in chords,
+/// speeds in the reference speed of its Reynolds number).
+///
+/// The nodes are stored ring by ring from the wall out: node `k` of
+/// ring `j` is `j * around + k`, ring 0 the wall, the last ring the
+/// outer boundary; round each ring `k` runs the way the grid's angle
+/// does and wraps from `around - 1` to 0.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FlowField {
+    /// Nodes round each ring.
+    pub around: usize,
+    /// Rings, the wall's included.
+    pub rings: usize,
+    /// Each node's position, `(x, y)`.
+    pub points: Vec<(f64, f64)>,
+    /// The vorticity at each node (the absolute vorticity, the same in
+    /// any frame that does not turn; on the wall, the no-slip wall's).
+    pub vorticity: Vec<f64>,
+    /// The streamfunction at each node of the fluid's velocity relative
+    /// to the air at rest far away (zero on the outer ring; `u = ∂ψ/∂y`,
+    /// `v = -∂ψ/∂x` in these axes: a streamfunction does not change when
+    /// the axes turn).
+    pub streamfunction: Vec<f64>,
+}
+
+impl FlowField {
+    /// The field of `flow`, which runs `path`, at its current time.
+    /// Cost `O(N)`, a copy of the grid.
+    pub(super) fn of(flow: &Flow<SectionPath>, path: &SectionPath) -> Self {
+        let g = flow.grid();
+        let place = path.placement(flow.time());
+        Self {
+            around: g.nt,
+            rings: g.nr,
+            points: g.z.iter().map(|&z| place(z)).collect(),
+            vorticity: flow.vorticity().to_vec(),
+            streamfunction: flow.streamfunction().to_vec(),
+        }
+    }
+
+    /// The grid's cells as quadrilaterals of node indices, each in the
+    /// order ring `j` node `k`, node `k + 1`, then ring `j + 1` node
+    /// `k + 1`, node `k`: `(rings - 1) × around` cells, the last of each
+    /// ring closing it round.
+    #[must_use]
+    pub fn quads(&self) -> Vec<[usize; 4]> {
+        let n = self.around;
+        (0..self.rings.saturating_sub(1))
+            .flat_map(|j| {
+                (0..n).map(move |k| {
+                    let next = (k + 1) % n;
+                    [j * n + k, j * n + next, (j + 1) * n + next, (j + 1) * n + k]
+                })
+            })
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Three rings of four nodes: eight cells, each ring closed round, and
+    /// every node in a cell.
+    #[test]
+    fn the_cells_close_each_ring() {
+        let field = FlowField {
+            around: 4,
+            rings: 3,
+            points: vec![(0.0, 0.0); 12],
+            vorticity: vec![0.0; 12],
+            streamfunction: vec![0.0; 12],
+        };
+        let quads = field.quads();
+        assert_eq!(quads.len(), 8);
+        assert_eq!(quads[3], [3, 0, 4, 7]);
+        assert_eq!(quads[7], [7, 4, 8, 11]);
+        let mut used = [false; 12];
+        for q in &quads {
+            for &i in q {
+                used[i] = true;
+            }
+        }
+        assert!(used.iter().all(|&u| u));
+    }
+}
