@@ -263,6 +263,42 @@ fn system_analysis_writes_what_the_disciplines_take() {
     for file in ["layout.vtu", "layout.png", "cycles.csv", "topology.json"] {
         assert!(topology_dir.join(file).exists(), "{file}");
     }
+    // The ParaView files as VTK's own reader reads them: the wing's
+    // 12 x 6 shell elements as quadrilaterals (type 9) on its 13 x 7
+    // nodes, with the pressure jump on the wing (finite) and the
+    // layout's fields, fractions in [0, 1].
+    for (vtu, arrays) in [
+        (out_dir.join("wing-0000.vtu"), &["pressure_jump_pa"][..]),
+        (
+            topology_dir.join("layout.vtu"),
+            &["carbon", "simp_density", "design_domain"][..],
+        ),
+    ] {
+        let Some(grid) = crate::vtk_reader::read_vtu(&vtu) else {
+            continue;
+        };
+        assert_eq!(
+            (grid.points, grid.cells, grid.cell_types.as_slice()),
+            (13 * 7, 12 * 6, &[9][..]),
+            "{}",
+            vtu.display()
+        );
+        let names: Vec<&str> = grid.cell_arrays.iter().map(|a| a.name.as_str()).collect();
+        assert_eq!(names, arrays, "{}", vtu.display());
+        for a in &grid.cell_arrays {
+            let [lo, hi] = a.range;
+            let fraction = (0.0..=1.0).contains(&lo) && (0.0..=1.0).contains(&hi);
+            assert!(
+                if a.name == "pressure_jump_pa" {
+                    lo.is_finite() && hi.is_finite()
+                } else {
+                    fraction
+                },
+                "{}: {a:?}",
+                vtu.display()
+            );
+        }
+    }
     // A pressure history for another mesh is refused, naming the file.
     std::fs::write(
         &pressure_file,

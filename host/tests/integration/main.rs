@@ -33,3 +33,4 @@ mod viscous_default_section;
 mod viscous_field;
 mod viscous_section;
 mod viscous_stream;
+mod vtk_reader;

@@ -4,6 +4,8 @@
 
 use std::process::{Command, Output};
 
+use crate::vtk_reader::read_vtu;
+
 fn fwav(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_fwav"))
         .args(args)
@@ -32,51 +34,6 @@ fn data_array(text: &str, name: Option<&str>) -> Vec<f64> {
         .split_whitespace()
         .map(|v| v.parse().unwrap())
         .collect()
-}
-
-/// What VTK's XML reader (Python's `vtk`, the reader ParaView uses) finds
-/// in `path`: points, cells, the first cell's type, and the smallest and
-/// largest vorticity and streamfunction; `None`, saying why, where
-/// Python's `vtk` is not installed (on CI, `CI=true`, where `.ci/run`
-/// installs it, that fails the test instead).
-fn read_by_vtk(path: &std::path::Path) -> Option<Vec<f64>> {
-    let script = "import sys, vtk\n\
-        r = vtk.vtkXMLUnstructuredGridReader()\n\
-        r.SetFileName(sys.argv[1])\n\
-        r.Update()\n\
-        g = r.GetOutput()\n\
-        d = g.GetPointData()\n\
-        w = d.GetArray('vorticity').GetRange()\n\
-        p = d.GetArray('streamfunction').GetRange()\n\
-        print(g.GetNumberOfPoints(), g.GetNumberOfCells(), g.GetCellType(0), \
-        repr(w[0]), repr(w[1]), repr(p[0]), repr(p[1]))\n";
-    let out = Command::new("python3")
-        .args(["-c", script, path.to_str().unwrap()])
-        .output();
-    match out {
-        Ok(out) if out.status.success() => Some(
-            String::from_utf8_lossy(&out.stdout)
-                .split_whitespace()
-                .map(|v| v.parse().unwrap())
-                .collect(),
-        ),
-        Ok(out) if !String::from_utf8_lossy(&out.stderr).contains("No module named 'vtk'") => {
-            panic!(
-                "VTK's reader failed: {}",
-                String::from_utf8_lossy(&out.stderr)
-            )
-        }
-        _ if std::env::var("CI").is_ok_and(|v| v == "true") => {
-            panic!("Python's vtk is not installed on CI: .ci/run installs it (pip install vtk)")
-        }
-        _ => {
-            println!(
-                "skipped VTK's reader: Python's vtk not found; install it (pip install vtk) \
-                 to read the file as ParaView does"
-            );
-            None
-        }
-    }
 }
 
 /// The flat plate at 10° started in a stream (Re 200, 0.3 chords, 128 ×
@@ -156,24 +113,26 @@ fn aero2d_writes_the_flow_field_for_paraview() {
         rise > 0.15 && rise < 0.25,
         "the leading edge's end {rise} above the trailing edge's"
     );
-    if let Some(read) = read_by_vtk(&path) {
+    if let Some(read) = read_vtu(&path) {
         let range = |v: &[f64]| {
-            (
+            [
                 v.iter().copied().fold(f64::MAX, f64::min),
                 v.iter().copied().fold(f64::MIN, f64::max),
-            )
+            ]
         };
-        let (w, p) = (range(&omega), range(&psi));
-        let expected = [
-            (around * rings) as f64,
-            (around * (rings - 1)) as f64,
-            9.0,
-            w.0,
-            w.1,
-            p.0,
-            p.1,
-        ];
-        assert_eq!(read, expected, "VTK's reader against the text");
+        assert_eq!(
+            (read.points, read.cells, read.cell_types.as_slice()),
+            (around * rings, around * (rings - 1), &[9][..]),
+            "VTK's reader: quadrilaterals"
+        );
+        for (name, values) in [("vorticity", &omega), ("streamfunction", &psi)] {
+            let array = read.point_array(name).expect(name);
+            assert_eq!(
+                (array.components, array.range),
+                (1, range(values)),
+                "{name}"
+            );
+        }
     }
     let again = fwav(&args);
     let e = String::from_utf8_lossy(&again.stderr);
