@@ -221,6 +221,14 @@ mod tests {
             text.matches("<DataArray").count(),
             text.matches("</DataArray>").count()
         );
+        let outside = quads_to_string(&[[0.0; 3]; 3], &[[0, 1, 2, 3]], &[]);
+        assert!(matches!(
+            outside,
+            Err(VtuError::Cell {
+                index: 3,
+                points: 3
+            })
+        ));
         let bad = to_string(&mesh, &[Field::CellScalar("density", &[1.0])]);
         assert!(matches!(
             bad,
