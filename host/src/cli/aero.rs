@@ -223,7 +223,21 @@ fn check(a: &Aero2dArgs) -> Result<()> {
 /// Refuses, before the run, a data file to write that exists: the files
 /// are never overwritten, and a long viscous run is not lost to a name
 /// found taken at its end (the writes refuse one made meanwhile too).
+/// And a `--field` not named `.vtu`, which ParaView would open with
+/// another reader.
 fn check_outputs(a: &Aero2dArgs) -> Result<()> {
+    if let Some(path) = &a.field {
+        let vtu = path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("vtu"));
+        if !vtu {
+            bail!(
+                "--field {}: name it FILE.vtu (a VTK XML unstructured grid, which ParaView \
+                 opens by that extension)",
+                path.display()
+            );
+        }
+    }
     for (flag, path) in [
         ("--history", &a.history),
         ("--surface", &a.surface),

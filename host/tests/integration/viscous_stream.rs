@@ -181,7 +181,8 @@ fn the_wall_friction_of_a_thin_plate_in_the_stream_is_blasius() {
 ///   step was chosen on the FWAV plate's thrust;
 /// - `--surface` writes the wall's loads at the end, a row a node;
 /// - `--duration` is refused for the inviscid models, out of range, and
-///   with `--cycles`; `--surface` and `--field` for the inviscid models.
+///   with `--cycles`; `--surface` and `--field` for the inviscid models,
+///   and a `--field` not named `.vtu`.
 #[test]
 fn aero2d_runs_a_body_at_rest_for_a_duration() {
     let dir = std::env::temp_dir().join(format!("fwav-ns-duration-{}", std::process::id()));
@@ -295,6 +296,10 @@ fn aero2d_runs_a_body_at_rest_for_a_duration() {
         (
             &["aero2d", "--model", "ns", "--duration", "-1"][..],
             "(0, 1000]",
+        ),
+        (
+            &["aero2d", "--model", "ns", "--field", "flow.vtk"][..],
+            "name it FILE.vtu",
         ),
         (
             &[
