@@ -6,6 +6,10 @@
 //! threads take the tests of every module, so a long test of one module
 //! no longer leaves a core idle while the next file waits (CI's time).
 //!
+//! One module is not a group but a helper the groups share:
+//! `vtk_reader`, which reads the ParaView files the programs write with
+//! VTK's own reader.
+//!
 //! The modules share one process: their scratch files carry the module's
 //! own prefix besides the process id, and none sets an environment
 //! variable, changes the current directory or installs a global
