@@ -263,12 +263,33 @@ fn system_analysis_writes_what_the_disciplines_take() {
     for file in ["layout.vtu", "layout.png", "cycles.csv", "topology.json"] {
         assert!(topology_dir.join(file).exists(), "{file}");
     }
+    // The wing's time series as ParaView opens it: `wing.pvd` lists its
+    // steps' files, each there, at times that increase.
+    let pvd = std::fs::read_to_string(out_dir.join("wing.pvd")).unwrap();
+    let steps: Vec<(f64, String)> = pvd
+        .lines()
+        .filter_map(|l| {
+            let field = |key: &str| {
+                let start = l.find(&format!("{key}=\""))? + key.len() + 2;
+                Some(l[start..start + l[start..].find('"')?].to_string())
+            };
+            Some((field("timestep")?.parse().ok()?, field("file")?))
+        })
+        .collect();
+    assert!(steps.len() > 1, "{pvd}");
+    assert!(steps.windows(2).all(|w| w[0].0 < w[1].0), "{pvd}");
+    assert!(
+        steps.iter().all(|(_, f)| out_dir.join(f).is_file()),
+        "{pvd}"
+    );
+    let last = out_dir.join(&steps.last().unwrap().1);
     // The ParaView files as VTK's own reader reads them: the wing's
     // 12 x 6 shell elements as quadrilaterals (type 9) on its 13 x 7
-    // nodes, with the pressure jump on the wing (finite) and the
-    // layout's fields, fractions in [0, 1].
+    // nodes at its first and last steps, with the pressure jump on the
+    // wing (finite) and the layout's fields, fractions in [0, 1].
     for (vtu, arrays) in [
-        (out_dir.join("wing-0000.vtu"), &["pressure_jump_pa"][..]),
+        (out_dir.join(&steps[0].1), &["pressure_jump_pa"][..]),
+        (last, &["pressure_jump_pa"][..]),
         (
             topology_dir.join("layout.vtu"),
             &["carbon", "simp_density", "design_domain"][..],
