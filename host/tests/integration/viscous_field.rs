@@ -2,16 +2,8 @@
 //! as a file ParaView opens, checked against the wall condition the
 //! solver imposes and read back by VTK's own reader.
 
-use std::process::{Command, Output};
-
+use crate::viscous_section::fwav;
 use crate::vtk_reader::read_vtu;
-
-fn fwav(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_fwav"))
-        .args(args)
-        .output()
-        .expect("the fwav binary runs")
-}
 
 /// The values of the `.vtu` array named `name` (the points' when
 /// `None`: three a point), as written.
