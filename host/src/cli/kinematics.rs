@@ -43,7 +43,7 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
         case.deformation = SectionFile::read(path)?.samples;
     }
     let cache = match &a.cache {
-        Some(path) => EvaluationCache::load(path)?,
+        Some(path) => EvaluationCache::kept_in(path)?,
         None => EvaluationCache::new(),
     };
     let reused = cache.len();

@@ -11,9 +11,16 @@
 //! before the model was chosen, so older cache files still match; a
 //! Navier–Stokes case carries the revision of that model's results
 //! ([`NS_RESULTS_REVISION`]), so results it no longer gives are not served.
+//!
+//! A cache kept in a file ([`EvaluationCache::kept_in`], as `fwav design`
+//! and `fwav kinematics --cache` keep theirs) writes the file again at
+//! every new result, so a run killed in the middle of a discipline loses
+//! only the evaluations still running: a Navier–Stokes discipline is some
+//! twenty evaluations of two to three minutes each, and before, a kill
+//! lost them all.
 
 use std::collections::HashMap;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
 use serde::{Deserialize, Serialize};
@@ -48,6 +55,11 @@ pub enum CacheError {
 #[derive(Debug, Default)]
 pub struct EvaluationCache {
     entries: Mutex<HashMap<String, SectionResult>>,
+    /// The file every new result is written to at once ([`Self::kept_in`]).
+    file: Option<PathBuf>,
+    /// Held while a file is written, so that writes never interleave and
+    /// the last one holds every result.
+    writing: Mutex<()>,
 }
 
 #[derive(Serialize, Deserialize)]
@@ -91,27 +103,55 @@ impl EvaluationCache {
         }
         Ok(Self {
             entries: Mutex::new(file.entries),
+            ..Self::default()
         })
     }
 
-    /// Writes the cache to `path` atomically.
+    /// Loads `path` as [`Self::load`] does, and keeps the cache in it:
+    /// every [`Self::insert`] writes the file again (atomically, a few
+    /// milliseconds for the hundreds of results of a design run), so the
+    /// results survive a kill.
+    pub fn kept_in(path: &Path) -> Result<Self, CacheError> {
+        Ok(Self {
+            file: Some(path.to_path_buf()),
+            ..Self::load(path)?
+        })
+    }
+
+    /// Writes the cache to `path` atomically. For a cache kept in a file
+    /// this is the check that every result reached it: an insert's failed
+    /// write is not an error until here.
     pub fn save(&self, path: &Path) -> Result<(), CacheError> {
-        let io = |source| CacheError::Io {
-            path: path.display().to_string(),
-            source,
-        };
-        let entries = self.lock().clone();
+        let _writing = self
+            .writing
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        self.write(path)
+    }
+
+    /// Writes every result to `path` (atomically); the caller holds
+    /// `writing`.
+    fn write(&self, path: &Path) -> Result<(), CacheError> {
         let text = serde_json::to_string(&CacheFile {
             format: FORMAT.to_string(),
-            entries,
+            entries: self.lock().clone(),
         })
         .map_err(|e| CacheError::Format {
             path: path.display().to_string(),
             message: e.to_string(),
         })?;
-        let temporary = path.with_extension("partial");
-        std::fs::write(&temporary, text).map_err(io)?;
-        std::fs::rename(&temporary, path).map_err(io)
+        let name = path.file_name().map_or_else(
+            || std::ffi::OsString::from("evaluations.json"),
+            std::ffi::OsStr::to_os_string,
+        );
+        let dir = path.parent().unwrap_or_else(|| Path::new(""));
+        crate::files::write_atomic(dir, &name.to_string_lossy(), text).map_err(|e| {
+            CacheError::Io {
+                path: path.display().to_string(),
+                source: e.source,
+            }
+        })?;
+        Ok(())
     }
 
     /// Number of stored evaluations.
@@ -129,9 +169,21 @@ impl EvaluationCache {
         self.lock().get(&key(case, design)).copied()
     }
 
-    /// Stores a result.
+    /// Stores a result, and for a cache kept in a file writes the file.
+    /// A failed write does not lose the result: it stays in memory, the
+    /// next insert writes it again, and [`Self::save`] reports the failure
+    /// if it persists.
     pub fn insert(&self, case: &SectionCase, design: &FlappingKinematics, result: SectionResult) {
         self.lock().insert(key(case, design), result);
+        if let Some(path) = &self.file {
+            let _writing = self
+                .writing
+                .lock()
+                .unwrap_or_else(std::sync::PoisonError::into_inner);
+            // Not lost on failure: kept in memory, written by the next
+            // insert, and reported by `save` if the file stays unwritable.
+            let _ = self.write(path);
+        }
     }
 
     fn lock(&self) -> std::sync::MutexGuard<'_, HashMap<String, SectionResult>> {
@@ -190,5 +242,70 @@ mod tests {
         };
         assert_eq!(key(&ldvm, &design), unrevised(&ldvm));
         assert_ne!(key(&ns, &design), unrevised(&ns));
+    }
+
+    fn result(ct: f64) -> SectionResult {
+        SectionResult {
+            reduced_frequency: 0.69,
+            ct,
+            ct_net: ct,
+            cp: 2.6,
+            efficiency: ct / 2.6,
+            efficiency_net: ct / 2.6,
+            ct_change: 0.0,
+        }
+    }
+
+    /// A cache kept in a file has every result on disk the moment it is
+    /// inserted (what a killed design run finds when resumed), and a
+    /// fresh load serves them; `load` alone keeps the file untouched.
+    #[test]
+    fn a_kept_cache_writes_each_result_at_once() {
+        let dir = std::env::temp_dir().join(format!("fwav-cache-kept-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("evaluations.json");
+        let case = SectionCase::fwav_mid_span();
+        let designs = [
+            FlappingKinematics::from_degrees([11.0, 30.0, 0.0, 90.0]),
+            FlappingKinematics::from_degrees([9.0, 20.0, -10.0, 70.0]),
+        ];
+        let kept = EvaluationCache::kept_in(&path).unwrap();
+        assert!(kept.is_empty() && !path.exists());
+        kept.insert(&case, &designs[0], result(0.09));
+        let on_disk = EvaluationCache::load(&path).unwrap();
+        assert_eq!(on_disk.get(&case, &designs[0]), Some(result(0.09)));
+        kept.insert(&case, &designs[1], result(0.03));
+        let on_disk = EvaluationCache::load(&path).unwrap();
+        assert_eq!(on_disk.len(), 2);
+        assert_eq!(on_disk.get(&case, &designs[1]), Some(result(0.03)));
+        assert!(!dir.join("evaluations.json.partial").exists());
+        // Loaded without keeping: inserts stay in memory.
+        let before = std::fs::read_to_string(&path).unwrap();
+        let loaded = EvaluationCache::load(&path).unwrap();
+        loaded.insert(
+            &case,
+            &FlappingKinematics::from_degrees([13.0, 40.0, 10.0, 110.0]),
+            result(0.15),
+        );
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), before);
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    /// A kept cache whose file cannot be written keeps the result in
+    /// memory (the evaluation is not lost, nor the run stopped), and
+    /// `save`, the run's last write, reports the file.
+    #[test]
+    fn a_kept_cache_that_cannot_write_reports_at_save() {
+        let path = std::env::temp_dir()
+            .join(format!("fwav-cache-missing-{}", std::process::id()))
+            .join("evaluations.json");
+        let kept = EvaluationCache::kept_in(&path).unwrap();
+        let case = SectionCase::fwav_mid_span();
+        let design = FlappingKinematics::from_degrees([11.0, 30.0, 0.0, 90.0]);
+        kept.insert(&case, &design, result(0.09));
+        assert_eq!(kept.get(&case, &design), Some(result(0.09)));
+        let e = kept.save(&path).unwrap_err();
+        assert!(matches!(e, CacheError::Io { .. }), "{e:?}");
+        assert!(e.to_string().contains("evaluations.json"), "{e}");
     }
 }

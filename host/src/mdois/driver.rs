@@ -241,7 +241,7 @@ fn drive(
     state.save(dir)?;
     let base = config.wing_model()?;
     let problem = DesignProblem::wing(&base.wing, Layer::CARBON, Layer::MYLAR);
-    let cache = EvaluationCache::load(&dir.join(CACHE_FILE))?;
+    let cache = EvaluationCache::kept_in(&dir.join(CACHE_FILE))?;
     let ctx = Context {
         dir: dir.to_path_buf(),
         config,

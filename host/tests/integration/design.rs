@@ -324,12 +324,16 @@ fn coarse_design_converges_writes_everything_and_resumes() {
     println!("whole test: {:.1} s", clock.elapsed().as_secs_f64());
 }
 
-/// `fwav design` killed (SIGKILL) once cycle 1's system analysis is
-/// finished, a stage file of the interrupted stage left half-written and
-/// an unrecorded one left complete-looking, then `fwav design --resume`:
-/// the finished stage is not redone (invocation 1 computed it), the rest
-/// is, and the answer is the uninterrupted run's (`reference`, from the
-/// caller's run: one coarse design fewer in CI than a run of its own).
+/// `fwav design` killed (SIGKILL) in cycle 1's aerodynamic discipline,
+/// once its system analysis is finished and the discipline has evaluated
+/// a row, a stage file of the interrupted stage left half-written and an
+/// unrecorded one left complete-looking, then `fwav design --resume`: the
+/// finished stage is not redone (invocation 1 computed it), the
+/// discipline's evaluations done before the kill are reused from
+/// `evaluations.json` (written at each result, not at the stage's end),
+/// the rest is computed, and the answer is the uninterrupted run's
+/// (`reference`, from the caller's run: one coarse design fewer in CI
+/// than a run of its own).
 fn killed_design_resumes_with_the_same_answer(reference: &[f64]) {
     let dir = temp("killed");
     std::fs::create_dir_all(&dir).unwrap();
@@ -345,11 +349,14 @@ fn killed_design_resumes_with_the_same_answer(reference: &[f64]) {
         .spawn()
         .unwrap();
     let clock = Instant::now();
+    // The cache file appears at the discipline's first result (about 0.6 s
+    // an evaluation here, some twenty in the stage).
+    let evaluations = out.join("evaluations.json");
     loop {
         let finished = RunState::load(&out)
             .ok()
             .is_some_and(|s| s.stage(1, Stage::System).is_some());
-        if finished {
+        if finished && evaluations.exists() {
             break;
         }
         assert!(clock.elapsed() < Duration::from_secs(120), "no progress");
@@ -359,6 +366,12 @@ fn killed_design_resumes_with_the_same_answer(reference: &[f64]) {
     child.wait().unwrap();
     let before = RunState::load(&out).unwrap();
     assert_eq!(before.outcome, None, "killed after the end");
+    assert!(
+        before.stage(1, Stage::Kinematics).is_none(),
+        "the kill came after the discipline's end: no mid-stage evaluations to reuse"
+    );
+    let kept = json(&evaluations)["entries"].as_object().unwrap().len();
+    assert!(kept >= 1, "no evaluation kept");
     // What a kill mid-stage leaves: the interrupted stage's file half
     // written beside its final name, and (had the kill come between a
     // stage's files and the state) a finished-looking file the state does
@@ -381,6 +394,13 @@ fn killed_design_resumes_with_the_same_answer(reference: &[f64]) {
     );
     let summary: serde_json::Value = serde_json::from_slice(&resumed.stdout).unwrap();
     assert_eq!(summary["outcome"], "converged");
+    let reused = summary["cycles"][0]["aerodynamic"]["evaluations_reused"]
+        .as_u64()
+        .unwrap();
+    assert!(
+        reused >= kept as u64,
+        "{kept} evaluations were on disk at the kill, {reused} reused"
+    );
     // Resumed again, the finished run says so instead of "0 stage(s)
     // computed, 0 reused", and its lock is gone.
     let finished = fwav(&["design", "--resume", out.to_str().unwrap()]);
