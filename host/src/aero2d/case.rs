@@ -261,6 +261,9 @@ pub struct CaseRun {
     /// The flow at the end on every node of the grid (the viscous
     /// model's; `None` for the inviscid ones).
     pub field: Option<FlowField>,
+    /// The flows the viscous model kept through the run
+    /// ([`ViscousSection::field_frames`]; empty for the inviscid ones).
+    pub frames: Vec<FlowField>,
 }
 
 impl Case {
@@ -446,6 +449,7 @@ impl Case {
             body: solver.section_points(),
             surface: None,
             field: None,
+            frames: Vec::new(),
         })
     }
 
@@ -475,6 +479,7 @@ impl Case {
             body: self.body_at(settings.duration, solver.surface_pressure().0),
             surface: None,
             field: None,
+            frames: Vec::new(),
         })
     }
 
@@ -508,6 +513,7 @@ impl Case {
             body: run.body,
             surface: Some(run.surface),
             field: Some(run.field),
+            frames: run.frames,
         })
     }
 

@@ -212,6 +212,13 @@ pub struct ViscousSection {
     /// [`Self::new`]; module docs: it does not keep the default FWAV
     /// section's scores).
     pub spin_up_periods: f64,
+    /// Flows kept as the run steps, for a ParaView series
+    /// ([`ViscousRun::frames`]): at `i / field_frames` of the run's
+    /// length for `i` = 1 to `field_frames` (each at the first step's end
+    /// that reaches it, the last at the run's end), the spin-up's on its
+    /// own grid. 0 (the default) for none. Each costs a copy of the grid
+    /// (about 3 MB on the default FWAV section).
+    pub field_frames: usize,
 }
 
 /// Thickness, chords, to which a sharp trailing edge (a NACA section's, a
@@ -337,6 +344,7 @@ impl ViscousSection {
             first_cell_layers: 0.1,
             courant: Self::DEFAULT_COURANT,
             spin_up_periods: 0.0,
+            field_frames: 0,
         }
     }
 
@@ -484,6 +492,9 @@ pub struct ViscousRun {
     pub surface: SurfaceLoads,
     /// The flow at the end on every node (for ParaView).
     pub field: FlowField,
+    /// The flows kept as the run stepped ([`ViscousSection::field_frames`]),
+    /// in time order; the last is `field`.
+    pub frames: Vec<FlowField>,
 }
 
 impl ViscousSection {
@@ -546,6 +557,7 @@ impl ViscousSection {
     ) -> Result<ViscousRun, ViscousError> {
         self.far_growth_kept()?;
         let mut march = March::new(path.clone(), duration, self.courant);
+        march.keep_frames(self.field_frames);
         let spin_up = self.spin_up_time(&path, duration)?;
         let mut flow = match spin_up {
             Some(until) => {
@@ -562,6 +574,7 @@ impl ViscousSection {
         let (vorticity, body) = picture(&flow, &path);
         let surface = SurfaceLoads::of(&flow, &path, 1.0 / reynolds);
         let field = FlowField::of(&flow, &path);
+        let frames = march.frames_ending_with(&field);
         Ok(ViscousRun {
             history: march.history,
             sample: march.sample,
@@ -572,6 +585,7 @@ impl ViscousSection {
             body,
             surface,
             field,
+            frames,
         })
     }
 

@@ -381,6 +381,7 @@ impl ViscousPlate {
             } else {
                 0.0
             },
+            field_frames: 0,
         }
     }
 }

@@ -1,9 +1,11 @@
-//! A viscous run's flow at its end ([`FlowField`]) as a ParaView file:
-//! the grid's cells as quadrilaterals in the plane `z = 0`, the
-//! vorticity and the streamfunction at the nodes (`fwav aero2d --model
-//! ns --field FILE.vtu`).
+//! A viscous run's flow ([`FlowField`]) as ParaView files: the grid's
+//! cells as quadrilaterals in the plane `z = 0`, the vorticity and the
+//! streamfunction at the nodes; at the run's end (`fwav aero2d --model
+//! ns --field FILE.vtu`, ASCII, double precision) or as a series through
+//! the run (`--field-series DIR`: binary, single precision, and a `.pvd`
+//! that ParaView plays).
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use super::vtu::{self, Field, VtuError};
 use crate::aero2d::viscous::FlowField;
@@ -27,6 +29,48 @@ pub fn write_flow_field(field: &FlowField, path: &Path) -> Result<(), VtuError> 
     )
 }
 
+/// The file name of frame `k` of a series ([`write_flow_series`]).
+pub fn series_file(k: usize) -> String {
+    format!("flow-{k:04}.vtu")
+}
+
+/// The series' time collection, `dir/flow.pvd`.
+pub const SERIES_COLLECTION: &str = "flow.pvd";
+
+/// Writes `frames` into `dir` (created if missing) as binary `.vtu`s
+/// ([`series_file`]; [`vtu::quads_to_binary`]: about 4 MB a frame on the
+/// default FWAV section's grid, a third of the ASCII file) and
+/// [`SERIES_COLLECTION`], the collection ParaView plays, each frame at
+/// its time in chords travelled. A file that exists is refused, not
+/// replaced. Returns the collection's path.
+///
+/// # Errors
+/// [`VtuError`]: a file exists or could not be written.
+pub fn write_flow_series(frames: &[FlowField], dir: &Path) -> Result<PathBuf, VtuError> {
+    std::fs::create_dir_all(dir).map_err(|source| VtuError::Io {
+        path: dir.display().to_string(),
+        source,
+    })?;
+    let mut entries = Vec::with_capacity(frames.len());
+    for (k, frame) in frames.iter().enumerate() {
+        let points: Vec<[f64; 3]> = frame.points.iter().map(|&(x, y)| [x, y, 0.0]).collect();
+        let bytes = vtu::quads_to_binary(
+            &points,
+            &frame.quads(),
+            &[
+                Field::PointScalar("vorticity", &frame.vorticity),
+                Field::PointScalar("streamfunction", &frame.streamfunction),
+            ],
+        )?;
+        let name = series_file(k);
+        vtu::write_new_bytes(&dir.join(&name), &bytes)?;
+        entries.push((frame.time, name));
+    }
+    let path = dir.join(SERIES_COLLECTION);
+    vtu::write_new_bytes(&path, vtu::collection(&entries).as_bytes())?;
+    Ok(path)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -36,6 +80,7 @@ mod tests {
     #[test]
     fn a_field_is_written_once() {
         let field = FlowField {
+            time: 0.0,
             around: 3,
             rings: 2,
             points: (0..6).map(|i| (f64::from(i), 0.5)).collect(),

@@ -3,7 +3,6 @@
 //! kept snapshots, as `.vtu` files and one `.pvd` time collection each, so
 //! ParaView plays the cycle.
 
-use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use crate::aeroelastic::analysis::Snapshot;
@@ -51,7 +50,7 @@ pub fn write_series(
     let wake_pvd = dir.join("wake.pvd");
     for (path, entries) in [(&wing_pvd, &wing_entries), (&wake_pvd, &wake_entries)] {
         let temporary = path.with_extension("pvd.partial");
-        std::fs::write(&temporary, collection(entries)).map_err(|e| io(path, e))?;
+        std::fs::write(&temporary, vtu::collection(entries)).map_err(|e| io(path, e))?;
         std::fs::rename(&temporary, path).map_err(|e| io(path, e))?;
     }
     Ok([wing_pvd, wake_pvd])
@@ -85,18 +84,4 @@ fn wake_mesh(s: &Snapshot) -> (ShellMesh, Vec<f64>) {
         }
     }
     (ShellMesh { nodes, elements }, strength)
-}
-
-fn collection(entries: &[(f64, String)]) -> String {
-    let mut s = String::from(
-        "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n",
-    );
-    for (t, file) in entries {
-        let _ = writeln!(
-            s,
-            "<DataSet timestep=\"{t:e}\" part=\"0\" file=\"{file}\"/>"
-        );
-    }
-    s.push_str("</Collection>\n</VTKFile>\n");
-    s
 }

@@ -5,6 +5,33 @@
 use crate::viscous_section::fwav;
 use crate::vtk_reader::read_vtu;
 
+/// `fwav aero2d` with `extra` on the flat plate at 10° started in a
+/// stream, NS, Re 200, 0.3 chords travelled, 128 × 96 nodes (about a
+/// second).
+fn plate_at_ten_degrees(extra: &[&str]) -> std::process::Output {
+    let mut args = vec![
+        "aero2d",
+        "--model",
+        "ns",
+        "--section",
+        "flat",
+        "--plunge-amplitude",
+        "0",
+        "--mean-pitch-deg",
+        "10",
+        "--reynolds",
+        "200",
+        "--duration",
+        "0.3",
+        "--ns-around",
+        "128",
+        "--ns-radial",
+        "96",
+    ];
+    args.extend_from_slice(extra);
+    fwav(&args)
+}
+
 /// The values of the `.vtu` array named `name` (the points' when
 /// `None`: three a point), as written.
 fn data_array(text: &str, name: Option<&str>) -> Vec<f64> {
@@ -53,28 +80,8 @@ fn aero2d_writes_the_flow_field_for_paraview() {
     std::fs::remove_dir_all(&dir).ok();
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("flow.vtu");
-    let args = [
-        "aero2d",
-        "--model",
-        "ns",
-        "--section",
-        "flat",
-        "--plunge-amplitude",
-        "0",
-        "--mean-pitch-deg",
-        "10",
-        "--reynolds",
-        "200",
-        "--duration",
-        "0.3",
-        "--ns-around",
-        "128",
-        "--ns-radial",
-        "96",
-        "--field",
-        path.to_str().unwrap(),
-    ];
-    let out = fwav(&args);
+    let field = ["--field", path.to_str().unwrap()];
+    let out = plate_at_ten_degrees(&field);
     assert!(
         out.status.success(),
         "{}",
@@ -132,12 +139,213 @@ fn aero2d_writes_the_flow_field_for_paraview() {
             );
         }
     }
-    let again = fwav(&args);
+    let again = plate_at_ten_degrees(&field);
     let e = String::from_utf8_lossy(&again.stderr);
     assert!(
         !again.status.success() && e.contains("--field") && e.contains("exists"),
         "{e}"
     );
     assert_eq!(std::fs::read_to_string(&path).unwrap(), text);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The arrays of a binary `.vtu` with an appended raw section (as
+/// `--field-series` writes them: a 64-bit length before each array),
+/// by name (the points' as `Points`), as `f64`, read by this test
+/// itself from the offsets its XML gives.
+fn binary_arrays(bytes: &[u8]) -> std::collections::HashMap<String, Vec<f64>> {
+    let marker = b"<AppendedData encoding=\"raw\">\n_";
+    let start = bytes
+        .windows(marker.len())
+        .position(|w| w == marker)
+        .expect("an appended section")
+        + marker.len();
+    let xml = std::str::from_utf8(&bytes[..start]).unwrap();
+    assert!(xml.contains("header_type=\"UInt64\"") && xml.contains("byte_order=\"LittleEndian\""));
+    let attribute = |tag: &str, key: &str| {
+        tag.split(&format!("{key}=\""))
+            .nth(1)
+            .map(|rest| rest[..rest.find('"').unwrap()].to_string())
+    };
+    let mut arrays = std::collections::HashMap::new();
+    for tag in xml.split("<DataArray").skip(1) {
+        let tag = &tag[..tag.find("/>").unwrap()];
+        let name = attribute(tag, "Name").unwrap_or_else(|| "Points".to_string());
+        let offset: usize = attribute(tag, "offset").unwrap().parse().unwrap();
+        let at = start + offset;
+        let length = u64::from_le_bytes(bytes[at..at + 8].try_into().unwrap()) as usize;
+        let data = &bytes[at + 8..at + 8 + length];
+        let values: Vec<f64> = match attribute(tag, "type").unwrap().as_str() {
+            "Float32" => data
+                .chunks_exact(4)
+                .map(|c| f64::from(f32::from_le_bytes(c.try_into().unwrap())))
+                .collect(),
+            "Int32" => data
+                .chunks_exact(4)
+                .map(|c| f64::from(i32::from_le_bytes(c.try_into().unwrap())))
+                .collect(),
+            "UInt8" => data.iter().map(|&b| f64::from(b)).collect(),
+            other => panic!("unexpected type {other}"),
+        };
+        arrays.insert(name, values);
+    }
+    arrays
+}
+
+/// The same run as [`aero2d_writes_the_flow_field_for_paraview`] with
+/// `--field-series DIR --field-frames 3` and `--field`: `flow.pvd` lists
+/// three binary `.vtu`s at 0.1, 0.2 and 0.3 chords travelled (each at
+/// the end of the first step that reaches it: within one load sample,
+/// 0.3/2000, after), the last at the run's end. Each frame, read by this
+/// test from its offsets, has the grid's counts and quadrilaterals and
+/// the wall condition `ψ + y` constant round the wall (to single
+/// precision, a few units of its last place: held to 1e-7, measured
+/// 1.5e-8, against `ψ - y`'s 0.41); the last frame is `--field`'s flow
+/// to single precision (within `2^-24` of the largest value: held to
+/// 1e-7 of it). VTK's reader reads every frame with the same counts and
+/// ranges.
+///
+/// Refused before the run: the same directory again (it holds the
+/// series, left as it was), `--field-frames` without `--field-series`
+/// or out of its range, `--field-series` for an inviscid model.
+#[test]
+fn aero2d_writes_the_flow_as_a_series_paraview_plays() {
+    let dir = std::env::temp_dir().join(format!("fwav-viscous-series-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::create_dir_all(&dir).unwrap();
+    let series = dir.join("series");
+    let last = dir.join("last.vtu");
+    let (around, rings) = (128, 96);
+    let run = plate_at_ten_degrees;
+    let series_args = [
+        "--field-series",
+        series.to_str().unwrap(),
+        "--field-frames",
+        "3",
+    ];
+    let mut args = series_args.to_vec();
+    args.extend(["--field", last.to_str().unwrap()]);
+    let out = run(&args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let pvd = std::fs::read_to_string(series.join("flow.pvd")).unwrap();
+    let entries: Vec<(f64, String)> = pvd
+        .lines()
+        .filter(|l| l.starts_with("<DataSet"))
+        .map(|l| {
+            let value = |key: &str| {
+                let rest = l.split(&format!("{key}=\"")).nth(1).unwrap();
+                rest[..rest.find('"').unwrap()].to_string()
+            };
+            (value("timestep").parse().unwrap(), value("file"))
+        })
+        .collect();
+    assert_eq!(entries.len(), 3, "{pvd}");
+    let sample = 0.3 / 2000.0;
+    for (i, (t, file)) in entries.iter().enumerate() {
+        let due = 0.1 * (i + 1) as f64;
+        assert!(
+            *t >= due - 1e-9 && *t <= due + sample,
+            "frame {i} at {t}, due at {due}"
+        );
+        assert_eq!(file, &format!("flow-{i:04}.vtu"));
+    }
+    let final_text = std::fs::read_to_string(&last).unwrap();
+    for (i, (_, file)) in entries.iter().enumerate() {
+        let path = series.join(file);
+        let arrays = binary_arrays(&std::fs::read(&path).unwrap());
+        let (points, psi, omega) = (
+            &arrays["Points"],
+            &arrays["streamfunction"],
+            &arrays["vorticity"],
+        );
+        assert_eq!(points.len(), 3 * around * rings);
+        assert_eq!((psi.len(), omega.len()), (around * rings, around * rings));
+        assert_eq!(arrays["connectivity"].len(), 4 * around * (rings - 1));
+        assert_eq!(arrays["connectivity"][..4], [0.0, 1.0, 129.0, 128.0]);
+        assert!(arrays["types"].iter().all(|&t| t == 9.0));
+        assert!(omega.iter().chain(psi).all(|v| v.is_finite()));
+        let wall: Vec<f64> = (0..around).map(|k| psi[k] + points[3 * k + 1]).collect();
+        let spread = wall.iter().copied().fold(f64::MIN, f64::max)
+            - wall.iter().copied().fold(f64::MAX, f64::min);
+        assert!(spread < 1e-7, "frame {i}: psi + y spreads by {spread:e}");
+        if i == entries.len() - 1 {
+            for (name, values) in [("vorticity", omega), ("streamfunction", psi)] {
+                let exact = data_array(&final_text, Some(name));
+                let largest = exact.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+                let off = exact
+                    .iter()
+                    .zip(values)
+                    .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
+                assert!(
+                    off <= 1e-7 * largest,
+                    "{name}: the last frame {off:e} from --field's (largest {largest:e})"
+                );
+            }
+        }
+        if let Some(read) = read_vtu(&path) {
+            assert_eq!(
+                (read.points, read.cells, read.cell_types.as_slice()),
+                (around * rings, around * (rings - 1), &[9][..]),
+                "VTK's reader on {file}"
+            );
+            for (name, values) in [("vorticity", omega), ("streamfunction", psi)] {
+                let range = [
+                    values.iter().copied().fold(f64::MAX, f64::min),
+                    values.iter().copied().fold(f64::MIN, f64::max),
+                ];
+                let array = read.point_array(name).expect(name);
+                assert_eq!(
+                    (array.components, array.range),
+                    (1, range),
+                    "{file}: {name}"
+                );
+            }
+        }
+    }
+    // Refused before the run, nothing written.
+    let again = run(&series_args);
+    let e = String::from_utf8_lossy(&again.stderr);
+    assert!(
+        !again.status.success() && e.contains("--field-series") && e.contains("not an empty"),
+        "{e}"
+    );
+    assert_eq!(
+        std::fs::read_to_string(series.join("flow.pvd")).unwrap(),
+        pvd
+    );
+    let fresh = dir.join("fresh");
+    for (extra, says) in [
+        (vec!["--field-frames", "3"], "give that too"),
+        (
+            vec![
+                "--field-series",
+                fresh.to_str().unwrap(),
+                "--field-frames",
+                "0",
+            ],
+            "between 1 and",
+        ),
+    ] {
+        let refused = run(&extra);
+        let e = String::from_utf8_lossy(&refused.stderr);
+        assert!(!refused.status.success() && e.contains(says), "{e}");
+    }
+    let inviscid = fwav(&[
+        "aero2d",
+        "--section",
+        "flat",
+        "--field-series",
+        fresh.to_str().unwrap(),
+    ]);
+    let e = String::from_utf8_lossy(&inviscid.stderr);
+    assert!(
+        !inviscid.status.success() && e.contains("--model ns only"),
+        "{e}"
+    );
+    assert!(!fresh.exists());
     std::fs::remove_dir_all(&dir).ok();
 }

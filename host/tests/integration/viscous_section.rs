@@ -27,6 +27,7 @@ pub(crate) fn coarse_plate() -> ViscousSection {
         first_cell_layers: 0.2,
         courant: ViscousSection::DEFAULT_COURANT,
         spin_up_periods: 0.0,
+        field_frames: 0,
     }
 }
 

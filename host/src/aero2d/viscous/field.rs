@@ -1,12 +1,13 @@
-//! The flow at a viscous run's end on the grid's nodes: what
-//! `fwav aero2d --model ns --field FILE.vtu` writes for ParaView
+//! The flow of a viscous run at one instant on the grid's nodes: what
+//! `fwav aero2d --model ns --field FILE.vtu` (the run's end) and
+//! `--field-series DIR` (instants through the run) write for ParaView
 //! (`crate::output::flow_field_vtu`).
 
 use fwav_ns2d::Flow;
 
 use super::SectionPath;
 
-/// The flow at a run's end on every node of the grid, in the global
+/// The flow at one instant on every node of the grid, in the global
 /// frame of [`crate::aero2d::case`] (chords; the picture's frame, the
 /// section pitched and plunged), in the run's units (lengths in chords,
 /// speeds in the reference speed of its Reynolds number).
@@ -17,6 +18,8 @@ use super::SectionPath;
 /// does and wraps from `around - 1` to 0.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FlowField {
+    /// The time, chords travelled from the run's start.
+    pub time: f64,
     /// Nodes round each ring.
     pub around: usize,
     /// Rings, the wall's included.
@@ -40,6 +43,7 @@ impl FlowField {
         let g = flow.grid();
         let place = path.placement(flow.time());
         Self {
+            time: flow.time(),
             around: g.nt,
             rings: g.nr,
             points: g.z.iter().map(|&z| place(z)).collect(),
@@ -75,6 +79,7 @@ mod tests {
     #[test]
     fn the_cells_close_each_ring() {
         let field = FlowField {
+            time: 0.0,
             around: 4,
             rings: 3,
             points: vec![(0.0, 0.0); 12],

@@ -5,7 +5,7 @@
 
 use fwav_ns2d::Flow;
 
-use super::{History, SectionPath, ViscousError, MAX_VISCOUS_STEPS};
+use super::{FlowField, History, SectionPath, ViscousError, MAX_VISCOUS_STEPS};
 
 /// Steps between checks of the stable time step (a check costs about a
 /// tenth of a step).
@@ -124,6 +124,12 @@ pub(super) struct March {
     pub(super) spin_up_steps: usize,
     /// The smallest step (or first step chosen), chords travelled.
     pub(super) smallest: f64,
+    /// The flows kept for a series ([`Self::keep_frames`]): how many, at
+    /// what interval, the next one's time, and those kept so far.
+    frames_wanted: usize,
+    frame_every: f64,
+    next_frame: f64,
+    frames: Vec<FlowField>,
 }
 
 impl March {
@@ -147,6 +153,46 @@ impl March {
             steps: 0,
             spin_up_steps: 0,
             smallest: f64::INFINITY,
+            frames_wanted: 0,
+            frame_every: f64::INFINITY,
+            next_frame: f64::INFINITY,
+            frames: Vec::new(),
+        }
+    }
+
+    /// Keep `count` flows, at `i / count` of the run's length for `i` = 1
+    /// to `count`, each at the end of the first step that reaches it (a
+    /// step that reaches several keeps one: at most `count`).
+    pub(super) fn keep_frames(&mut self, count: usize) {
+        if count > 0 {
+            self.frames_wanted = count;
+            self.frame_every = self.duration / count as f64;
+            self.next_frame = self.frame_every;
+        }
+    }
+
+    /// The flows kept, ending with the run's last flow `end` (kept anew
+    /// if the last step did not reach the last frame's time by rounding);
+    /// none if none were asked for.
+    pub(super) fn frames_ending_with(&mut self, end: &FlowField) -> Vec<FlowField> {
+        if self.frames_wanted == 0 {
+            return Vec::new();
+        }
+        let mut frames = std::mem::take(&mut self.frames);
+        if frames.last().is_none_or(|f| f.time < end.time) {
+            frames.push(end.clone());
+        }
+        frames
+    }
+
+    /// Keeps `flow` if it has reached the next frame's time.
+    fn frame(&mut self, flow: &Flow<SectionPath>) {
+        let reached = flow.time() + 1e-9 * self.sample;
+        if self.frames.len() < self.frames_wanted && reached >= self.next_frame {
+            self.frames.push(FlowField::of(flow, &self.path));
+            while self.next_frame <= reached {
+                self.next_frame += self.frame_every;
+            }
         }
     }
 
@@ -183,6 +229,7 @@ impl March {
             flow.step(dt)?;
             self.steps += 1;
             taken += 1;
+            self.frame(flow);
             let Some(before) = before else { continue };
             let now = (flow.time(), coefficients(flow));
             let history = &mut self.history;
