@@ -1,14 +1,6 @@
 //! The `fwav` program as a user runs it (the README's main command among them).
 
-use std::process::Command;
-
-fn fwav(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_fwav"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-        .output()
-        .expect("the fwav binary runs")
-}
+use crate::program::fwav;
 
 #[test]
 fn readme_main_command_checks_the_initial_design() {

@@ -9,13 +9,7 @@ use std::os::unix::process::ExitStatusExt as _;
 use std::path::PathBuf;
 use std::process::{Command, ExitStatus, Output, Stdio};
 
-fn fwav(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_fwav"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-        .output()
-        .expect("the fwav binary runs")
-}
+use crate::program::fwav;
 
 /// Runs fwav with its standard output (and, with `stderr_too`, its
 /// standard error) a pipe whose reading end is already closed, as in

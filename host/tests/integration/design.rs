@@ -13,6 +13,8 @@ use fwav::mdois::state::RunState;
 use fwav::mdois::summary::Summary;
 use fwav::mdois::{resume, start, DesignError, Outcome, RunOptions, Stage};
 
+use crate::program::fwav;
+
 /// The coarse design of the tests and the README (documented in the file).
 const COARSE: &str = include_str!("../../../configs/coarse.toml");
 
@@ -24,13 +26,6 @@ fn temp(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("fwav-design-{name}-{}", std::process::id()));
     std::fs::remove_dir_all(&dir).ok();
     dir
-}
-
-fn fwav(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_fwav"))
-        .args(args)
-        .output()
-        .expect("the fwav binary runs")
 }
 
 fn json(path: &Path) -> serde_json::Value {

@@ -3,16 +3,10 @@
 //! real files, and what they print and leave behind checked.
 
 use std::path::PathBuf;
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-fn fwav(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_fwav"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-        .output()
-        .expect("the fwav binary runs")
-}
+use crate::program::fwav;
 
 /// A fresh scratch directory for one test.
 fn scratch(name: &str) -> PathBuf {

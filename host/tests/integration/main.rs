@@ -6,9 +6,9 @@
 //! threads take the tests of every module, so a long test of one module
 //! no longer leaves a core idle while the next file waits (CI's time).
 //!
-//! One module is not a group but a helper the groups share:
-//! `vtk_reader`, which reads the ParaView files the programs write with
-//! VTK's own reader.
+//! Two modules are not groups but helpers the groups share: `program`,
+//! which runs the `fwav` program as a user does, and `vtk_reader`, which
+//! reads the ParaView files the programs write with VTK's own reader.
 //!
 //! The modules share one process: their scratch files carry the module's
 //! own prefix besides the process id, and none sets an environment
@@ -28,6 +28,7 @@ mod discipline_ns_scatter;
 mod discipline_ns_scores;
 mod input_checks;
 mod optimize;
+mod program;
 mod shell;
 mod study;
 mod topology;

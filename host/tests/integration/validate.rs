@@ -2,14 +2,7 @@
 //! cases (the shell family, about a second) as JSON, the table, the case
 //! list and a filter that matches nothing.
 
-use std::process::Command;
-
-fn fwav(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_fwav"))
-        .args(args)
-        .output()
-        .expect("the fwav binary runs")
-}
+use crate::program::fwav;
 
 /// The JSON array of the shell cases: every case has the documented keys,
 /// passes, and its error is what its value and reference say.

@@ -2,7 +2,7 @@
 //! as a file ParaView opens, checked against the wall condition the
 //! solver imposes and read back by VTK's own reader.
 
-use crate::viscous_section::fwav;
+use crate::program::fwav;
 use crate::vtk_reader::read_vtu;
 
 /// `fwav aero2d` with `extra` on the flat plate at 10° started in a

@@ -15,6 +15,8 @@ use fwav::aero2d::motion::Motion;
 use fwav::aero2d::viscous::{SectionPath, ViscousError, ViscousSection, ViscousShape};
 use fwav::validation::aero2d::{ldvm_case1_cfd, window_mean};
 
+use crate::program::fwav;
+
 /// A 12 % plate with semicircular ends on 64 x 64 nodes out to 15 chords
 /// (exponential stretching).
 pub(crate) fn coarse_plate() -> ViscousSection {
@@ -425,13 +427,6 @@ fn a_heave_given_as_deformation_is_the_rigid_plunge() {
     );
     assert!((ct.1 / ct.0 - 1.0).abs() < 0.01, "{ct:?}");
     assert!((cp.1 / cp.0 - 1.0).abs() < 0.01, "{cp:?}");
-}
-
-pub(crate) fn fwav(args: &[&str]) -> std::process::Output {
-    std::process::Command::new(env!("CARGO_BIN_EXE_fwav"))
-        .args(args)
-        .output()
-        .expect("the fwav binary runs")
 }
 
 /// `fwav aero2d --model ns` on a coarse grid: JSON names the model, the

@@ -11,7 +11,8 @@ use fwav::aero2d::case::{Case, SectionModel};
 use fwav::aero2d::motion::Motion;
 use fwav::aero2d::viscous::{ViscousSection, ViscousShape};
 
-use crate::viscous_section::{case, coarse_plate, fwav};
+use crate::program::fwav;
+use crate::viscous_section::{case, coarse_plate};
 
 /// A circle of unit diameter as a point file (`dir/circle.dat`, 200
 /// points from the right, counter-clockwise): chord and diameter are one.
