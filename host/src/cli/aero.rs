@@ -127,8 +127,9 @@ pub struct Aero2dArgs {
     #[arg(long)]
     pub field_series: Option<PathBuf>,
     /// Frames of `--field-series`, evenly spaced in time over the run, the
-    /// last at its end: 1 to 2000 (default 50; about 4 MB each on the
-    /// default 384 × 256 grid).
+    /// last at its end: 1 to 500 (default 50; on the default 384 × 256
+    /// grid about 4 MB each on disk, and 3 MB each in memory until the
+    /// run ends).
     #[arg(long)]
     pub field_frames: Option<usize>,
     /// Machine-readable output.
@@ -148,8 +149,9 @@ pub enum FlowModel {
 /// Frames of `--field-series` when `--field-frames` is not given.
 const DEFAULT_FIELD_FRAMES: usize = 50;
 
-/// The most frames `--field-frames` takes.
-const MAX_FIELD_FRAMES: usize = 2000;
+/// The most frames `--field-frames` takes: the frames are kept in memory
+/// until the run ends, 1.5 GB of them on the default grid.
+const MAX_FIELD_FRAMES: usize = 500;
 
 /// The efficiency of a section that does no work.
 const UNDEFINED_EFFICIENCY: &str = "undefined (no input power)";

@@ -207,7 +207,8 @@ fn binary_arrays(bytes: &[u8]) -> std::collections::HashMap<String, Vec<f64>> {
 ///
 /// Refused before the run: the same directory again (it holds the
 /// series, left as it was), `--field-frames` without `--field-series`
-/// or out of its range, `--field-series` for an inviscid model.
+/// or out of its range (1 to 500: the frames are kept in memory until
+/// the run ends), `--field-series` for an inviscid model.
 #[test]
 fn aero2d_writes_the_flow_as_a_series_paraview_plays() {
     let dir = std::env::temp_dir().join(format!("fwav-viscous-series-{}", std::process::id()));
@@ -327,7 +328,16 @@ fn aero2d_writes_the_flow_as_a_series_paraview_plays() {
                 "--field-frames",
                 "0",
             ],
-            "between 1 and",
+            "between 1 and 500",
+        ),
+        (
+            vec![
+                "--field-series",
+                fresh.to_str().unwrap(),
+                "--field-frames",
+                "501",
+            ],
+            "between 1 and 500",
         ),
     ] {
         let refused = run(&extra);
