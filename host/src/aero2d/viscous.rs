@@ -217,7 +217,7 @@ pub struct ViscousSection {
     /// length for `i` = 1 to `field_frames` (each at the first step's end
     /// that reaches it, the last at the run's end), the spin-up's on its
     /// own grid. 0 (the default) for none. Each costs a copy of the grid
-    /// (about 3 MB on the default FWAV section).
+    /// (4.7 MB on the default FWAV section).
     pub field_frames: usize,
 }
 

@@ -114,21 +114,21 @@ pub struct Aero2dArgs {
     #[arg(long)]
     pub surface: Option<PathBuf>,
     /// Write the flow at the run's end to this ParaView file (`.vtu`;
-    /// `--model ns` only): the grid's cells, the vorticity and the
-    /// streamfunction at its nodes, in the frame of `--plot`'s picture
-    /// (a file that exists is refused).
+    /// `--model ns` only): the grid's cells, the vorticity, the
+    /// streamfunction and the velocity at its nodes, in the frame of
+    /// `--plot`'s picture (a file that exists is refused).
     #[arg(long)]
     pub field: Option<PathBuf>,
     /// Write the flow through the run to this directory (`--model ns`
     /// only; it must be new or empty): `--field-frames` binary `.vtu`s
-    /// (`flow-0000.vtu`, ...; the grid, the vorticity and the
-    /// streamfunction in single precision) and `flow.pvd`, the series
+    /// (`flow-0000.vtu`, ...; the grid, the vorticity, the streamfunction
+    /// and the velocity in single precision) and `flow.pvd`, the series
     /// ParaView plays, each frame at its time in chords travelled.
     #[arg(long)]
     pub field_series: Option<PathBuf>,
     /// Frames of `--field-series`, evenly spaced in time over the run, the
     /// last at its end: 1 to 500 (default 50; on the default 384 × 256
-    /// grid about 4 MB each on disk, and 3 MB each in memory until the
+    /// grid 5.2 MB each on disk, and 4.7 MB each in memory until the
     /// run ends).
     #[arg(long)]
     pub field_frames: Option<usize>,
@@ -150,7 +150,7 @@ pub enum FlowModel {
 const DEFAULT_FIELD_FRAMES: usize = 50;
 
 /// The most frames `--field-frames` takes: the frames are kept in memory
-/// until the run ends, 1.5 GB of them on the default grid.
+/// until the run ends, 2.4 GB of them on the default grid.
 const MAX_FIELD_FRAMES: usize = 500;
 
 /// The efficiency of a section that does no work.

@@ -1,6 +1,6 @@
 //! A viscous run's flow ([`FlowField`]) as ParaView files: the grid's
-//! cells as quadrilaterals in the plane `z = 0`, the vorticity and the
-//! streamfunction at the nodes; at the run's end (`fwav aero2d --model
+//! cells as quadrilaterals in the plane `z = 0`, the vorticity, the
+//! streamfunction and the velocity at the nodes; at the run's end (`fwav aero2d --model
 //! ns --field FILE.vtu`, ASCII, double precision) or as a series through
 //! the run (`--field-series DIR`: binary, single precision, and a `.pvd`
 //! that ParaView plays).
@@ -10,14 +10,15 @@ use std::path::{Path, PathBuf};
 use super::vtu::{self, Field, VtuError};
 use crate::aero2d::viscous::FlowField;
 
-/// Writes `field` to `path` as a `.vtu` (point fields `vorticity` and
-/// `streamfunction`, [`FlowField`]'s units). A file that exists is
+/// Writes `field` to `path` as a `.vtu` (point fields `vorticity`,
+/// `streamfunction` and the vector `velocity`, [`FlowField`]'s units). A file that exists is
 /// refused ([`vtu::write_new`]).
 ///
 /// # Errors
 /// [`VtuError`]: the file exists or could not be written.
 pub fn write_flow_field(field: &FlowField, path: &Path) -> Result<(), VtuError> {
     let points: Vec<[f64; 3]> = field.points.iter().map(|&(x, y)| [x, y, 0.0]).collect();
+    let velocity = velocity_vectors(field);
     vtu::write_new(
         path,
         &points,
@@ -25,8 +26,14 @@ pub fn write_flow_field(field: &FlowField, path: &Path) -> Result<(), VtuError> 
         &[
             Field::PointScalar("vorticity", &field.vorticity),
             Field::PointScalar("streamfunction", &field.streamfunction),
+            Field::PointVector("velocity", &velocity),
         ],
     )
+}
+
+/// [`FlowField::velocity`] as ParaView's vectors (`z` = 0).
+fn velocity_vectors(field: &FlowField) -> Vec<[f64; 3]> {
+    field.velocity.iter().map(|&(u, v)| [u, v, 0.0]).collect()
 }
 
 /// The file name of frame `k` of a series ([`write_flow_series`]).
@@ -38,8 +45,8 @@ pub fn series_file(k: usize) -> String {
 pub const SERIES_COLLECTION: &str = "flow.pvd";
 
 /// Writes `frames` into `dir` (created if missing) as binary `.vtu`s
-/// ([`series_file`]; [`vtu::quads_to_binary`]: about 4 MB a frame on the
-/// default FWAV section's grid, a third of the ASCII file) and
+/// ([`series_file`]; [`vtu::quads_to_binary`]: 5.2 MB a frame on the
+/// default FWAV section's grid, under a third of the ASCII file) and
 /// [`SERIES_COLLECTION`], the collection ParaView plays, each frame at
 /// its time in chords travelled. A file that exists is refused, not
 /// replaced. Returns the collection's path.
@@ -54,12 +61,14 @@ pub fn write_flow_series(frames: &[FlowField], dir: &Path) -> Result<PathBuf, Vt
     let mut entries = Vec::with_capacity(frames.len());
     for (k, frame) in frames.iter().enumerate() {
         let points: Vec<[f64; 3]> = frame.points.iter().map(|&(x, y)| [x, y, 0.0]).collect();
+        let velocity = velocity_vectors(frame);
         let bytes = vtu::quads_to_binary(
             &points,
             &frame.quads(),
             &[
                 Field::PointScalar("vorticity", &frame.vorticity),
                 Field::PointScalar("streamfunction", &frame.streamfunction),
+                Field::PointVector("velocity", &velocity),
             ],
         )?;
         let name = series_file(k);
@@ -86,6 +95,7 @@ mod tests {
             points: (0..6).map(|i| (f64::from(i), 0.5)).collect(),
             vorticity: vec![1.5; 6],
             streamfunction: vec![-2.0; 6],
+            velocity: vec![(0.25, -0.5); 6],
         };
         let dir = std::env::temp_dir().join(format!("fwav-field-vtu-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();

@@ -16,7 +16,7 @@ use crate::viscous_section::{case, coarse_plate};
 
 /// A circle of unit diameter as a point file (`dir/circle.dat`, 200
 /// points from the right, counter-clockwise): chord and diameter are one.
-fn circle_file(dir: &std::path::Path) -> std::path::PathBuf {
+pub(crate) fn circle_file(dir: &std::path::Path) -> std::path::PathBuf {
     let text: String = (0..200)
         .map(|i| {
             let t = 2.0 * PI * f64::from(i) / 200.0;

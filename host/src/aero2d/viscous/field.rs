@@ -3,7 +3,7 @@
 //! `--field-series DIR` (instants through the run) write for ParaView
 //! (`crate::output::flow_field_vtu`).
 
-use fwav_ns2d::Flow;
+use fwav_ns2d::{Complex64, Flow, OGrid};
 
 use super::SectionPath;
 
@@ -34,6 +34,13 @@ pub struct FlowField {
     /// `v = -∂ψ/∂x` in these axes: a streamfunction does not change when
     /// the axes turn).
     pub streamfunction: Vec<f64>,
+    /// The fluid's velocity at each node relative to the air at rest far
+    /// away, `(u, v)` in these axes: `u + iv = -i (ψ_ξ + i ψ_θ) /
+    /// conj(∂z/∂ξ)` on the grid's conformal map, `ψ_θ` central round the
+    /// ring, `ψ_ξ` central in the grid's uniform radial coordinate (one
+    /// sided, second order, on the wall and outer rings), then turned
+    /// from the solver's axes into these.
+    pub velocity: Vec<(f64, f64)>,
 }
 
 impl FlowField {
@@ -49,6 +56,7 @@ impl FlowField {
             points: g.z.iter().map(|&z| place(z)).collect(),
             vorticity: flow.vorticity().to_vec(),
             streamfunction: flow.streamfunction().to_vec(),
+            velocity: velocity(g, flow.streamfunction(), &place),
         }
     }
 
@@ -70,6 +78,46 @@ impl FlowField {
     }
 }
 
+/// The velocity at every node of `grid` of the streamfunction `psi`
+/// ([`FlowField::velocity`]), turned as `place` turns the grid into the
+/// field's axes. Cost `O(N)`.
+fn velocity(
+    grid: &OGrid,
+    psi: &[f64],
+    place: &impl Fn(Complex64) -> (f64, f64),
+) -> Vec<(f64, f64)> {
+    let (nt, nr) = (grid.nt, grid.nr);
+    // Where the solver's unit vectors point in the field's axes.
+    let origin = place(Complex64::new(0.0, 0.0));
+    let along = |z: Complex64| {
+        let p = place(z);
+        (p.0 - origin.0, p.1 - origin.1)
+    };
+    let (ex, ey) = (
+        along(Complex64::new(1.0, 0.0)),
+        along(Complex64::new(0.0, 1.0)),
+    );
+    let at = |j: usize, k: usize| psi[grid.at(j, k)];
+    let mut out = Vec::with_capacity(nt * nr);
+    for j in 0..nr {
+        for k in 0..nt {
+            let psi_eta = if j == 0 {
+                (-3.0 * at(0, k) + 4.0 * at(1, k) - at(2, k)) / (2.0 * grid.d_eta)
+            } else if j == nr - 1 {
+                (3.0 * at(j, k) - 4.0 * at(j - 1, k) + at(j - 2, k)) / (2.0 * grid.d_eta)
+            } else {
+                (at(j + 1, k) - at(j - 1, k)) / (2.0 * grid.d_eta)
+            };
+            let (before, after) = ((k + nt - 1) % nt, (k + 1) % nt);
+            let psi_theta = (at(j, after) - at(j, before)) / (2.0 * grid.d_theta);
+            let w = -Complex64::new(0.0, 1.0) * Complex64::new(psi_eta / grid.slope[j], psi_theta)
+                / grid.dz_dxi[grid.at(j, k)].conj();
+            out.push((w.re * ex.0 + w.im * ey.0, w.re * ex.1 + w.im * ey.1));
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -85,6 +133,7 @@ mod tests {
             points: vec![(0.0, 0.0); 12],
             vorticity: vec![0.0; 12],
             streamfunction: vec![0.0; 12],
+            velocity: vec![(0.0, 0.0); 12],
         };
         let quads = field.quads();
         assert_eq!(quads.len(), 8);
