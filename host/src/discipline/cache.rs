@@ -108,9 +108,9 @@ impl EvaluationCache {
     }
 
     /// Loads `path` as [`Self::load`] does, and keeps the cache in it:
-    /// every [`Self::insert`] writes the file again (atomically, a few
-    /// milliseconds for the hundreds of results of a design run), so the
-    /// results survive a kill.
+    /// every [`Self::insert`] writes the file again (atomically; a design
+    /// run's few hundred results are tens of kilobytes), so the results
+    /// survive a kill.
     pub fn kept_in(path: &Path) -> Result<Self, CacheError> {
         Ok(Self {
             file: Some(path.to_path_buf()),

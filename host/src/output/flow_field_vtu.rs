@@ -1,9 +1,9 @@
 //! A viscous run's flow ([`FlowField`]) as ParaView files: the grid's
 //! cells as quadrilaterals in the plane `z = 0`, the vorticity, the
-//! streamfunction and the velocity at the nodes; at the run's end (`fwav aero2d --model
-//! ns --field FILE.vtu`, ASCII, double precision) or as a series through
-//! the run (`--field-series DIR`: binary, single precision, and a `.pvd`
-//! that ParaView plays).
+//! streamfunction and the velocity at the nodes; at the run's end
+//! (`fwav aero2d --model ns --field FILE.vtu`, ASCII, double precision)
+//! or as a series through the run (`--field-series DIR`: binary, single
+//! precision, and a `.pvd` that ParaView plays).
 
 use std::path::{Path, PathBuf};
 
@@ -11,8 +11,8 @@ use super::vtu::{self, Field, VtuError};
 use crate::aero2d::viscous::FlowField;
 
 /// Writes `field` to `path` as a `.vtu` (point fields `vorticity`,
-/// `streamfunction` and the vector `velocity`, [`FlowField`]'s units). A file that exists is
-/// refused ([`vtu::write_new`]).
+/// `streamfunction` and the vector `velocity`, [`FlowField`]'s units).
+/// A file that exists is refused ([`vtu::write_new`]).
 ///
 /// # Errors
 /// [`VtuError`]: the file exists or could not be written.

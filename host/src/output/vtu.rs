@@ -3,7 +3,7 @@
 //! (`.vtu`), with point fields (e.g. displacement) and cell fields
 //! (e.g. density, strain energy): ASCII in double precision
 //! ([`quads_to_string`]), or binary in single precision
-//! ([`quads_to_binary`]: a third of the size, for series of large
+//! ([`quads_to_binary`]: under a third of the size, for series of large
 //! grids). [`write()`] writes to a temporary file and renames it, so a
 //! reader never sees half a file (the design run's own directory);
 //! [`write_new`] and [`write_new_bytes`] refuse a file that exists (a
@@ -47,11 +47,16 @@ pub enum VtuError {
         /// Points given.
         points: usize,
     },
-    /// A binary file's cells index points by 32-bit integers.
-    #[error("{points} points are more than a binary .vtu's 32-bit cells can index")]
+    /// A binary file's cells index points, and count their corners, by
+    /// 32-bit integers.
+    #[error(
+        "{points} points and {cells} cells are more than a binary .vtu's 32-bit cells can hold"
+    )]
     TooManyPoints {
         /// Points given.
         points: usize,
+        /// Cells given.
+        cells: usize,
     },
     /// The file could not be written.
     #[error("writing {path}: {source}")]
@@ -150,7 +155,10 @@ pub fn quads_to_binary(
     let (np, nc) = (points.len(), quads.len());
     check_lengths(np, nc, fields)?;
     if i32::try_from(np).is_err() || i32::try_from(4 * nc).is_err() {
-        return Err(VtuError::TooManyPoints { points: np });
+        return Err(VtuError::TooManyPoints {
+            points: np,
+            cells: nc,
+        });
     }
     let mut appended = Appended::default();
     let mut xml = String::new();
