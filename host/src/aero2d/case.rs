@@ -21,7 +21,7 @@ use super::panel::DEFAULT_PANELS;
 use super::panel::{PanelSettings, PanelSolver, SectionShape, ShapeHistory};
 use super::theory::garrick_plunge;
 use super::viscous::{
-    FlowField, SectionPath, SurfaceLoads, ViscousSection, ViscousShape, STILL_KICK_RATE,
+    FlowField, FrameSink, SectionPath, SurfaceLoads, ViscousSection, ViscousShape, STILL_KICK_RATE,
 };
 use super::window::WindowStatistics;
 
@@ -261,9 +261,6 @@ pub struct CaseRun {
     /// The flow at the end on every node of the grid (the viscous
     /// model's; `None` for the inviscid ones).
     pub field: Option<FlowField>,
-    /// The flows the viscous model kept through the run
-    /// ([`ViscousSection::field_frames`]; empty for the inviscid ones).
-    pub frames: Vec<FlowField>,
 }
 
 impl Case {
@@ -322,11 +319,21 @@ impl Case {
     /// finite or whose wake left the domain of validity
     /// ([`WAKE_REACH_CHORDS`]) is an error, never a result.
     pub fn run(&self) -> Result<CaseRun, CaseError> {
+        self.run_into(&mut Vec::new())
+    }
+
+    /// [`Self::run`], handing `frames` the viscous model's flows as the
+    /// run reaches them ([`ViscousSection::field_frames`]; the inviscid
+    /// models hand on none).
+    ///
+    /// # Errors
+    /// As [`Self::run`].
+    pub fn run_into(&self, frames: &mut dyn FrameSink) -> Result<CaseRun, CaseError> {
         self.check_work()?;
         let run = match &self.section {
             SectionModel::Flat => self.run_thin(),
             SectionModel::Thick(shape) => self.run_thick(shape),
-            SectionModel::Viscous(section) => self.run_viscous(section),
+            SectionModel::Viscous(section) => self.run_viscous(section, frames),
         }?;
         self.check_result(&run)?;
         Ok(run)
@@ -449,7 +456,6 @@ impl Case {
             body: solver.section_points(),
             surface: None,
             field: None,
-            frames: Vec::new(),
         })
     }
 
@@ -479,11 +485,14 @@ impl Case {
             body: self.body_at(settings.duration, solver.surface_pressure().0),
             surface: None,
             field: None,
-            frames: Vec::new(),
         })
     }
 
-    fn run_viscous(&self, section: &ViscousSection) -> Result<CaseRun, CaseError> {
+    fn run_viscous(
+        &self,
+        section: &ViscousSection,
+        frames: &mut dyn FrameSink,
+    ) -> Result<CaseRun, CaseError> {
         if self.lesp_critical.is_some() {
             return Err(CaseError::LespOnThick);
         }
@@ -500,8 +509,10 @@ impl Case {
             SectionPath::Harmonic(self.motion)
         };
         let run = match &self.deformation {
-            Some(samples) => section.run_deforming(path, self.reynolds, duration, samples)?,
-            None => section.run(path, self.reynolds, duration)?,
+            Some(samples) => {
+                section.run_deforming_into(path, self.reynolds, duration, samples, frames)?
+            }
+            None => section.run_into(path, self.reynolds, duration, frames)?,
         };
         Ok(CaseRun {
             history: run.history,
@@ -513,7 +524,6 @@ impl Case {
             body: run.body,
             surface: Some(run.surface),
             field: Some(run.field),
-            frames: run.frames,
         })
     }
 

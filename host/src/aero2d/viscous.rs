@@ -212,12 +212,13 @@ pub struct ViscousSection {
     /// [`Self::new`]; module docs: it does not keep the default FWAV
     /// section's scores).
     pub spin_up_periods: f64,
-    /// Flows kept as the run steps, for a ParaView series
-    /// ([`ViscousRun::frames`]): at `i / field_frames` of the run's
-    /// length for `i` = 1 to `field_frames` (each at the first step's end
-    /// that reaches it, the last at the run's end), the spin-up's on its
-    /// own grid. 0 (the default) for none. Each costs a copy of the grid
-    /// (4.7 MB on the default FWAV section).
+    /// Flows handed to a [`FrameSink`] as the run steps
+    /// ([`Self::run_into`]), for a ParaView series: at `i / field_frames`
+    /// of the run's length for `i` = 1 to `field_frames` (each at the
+    /// first step's end that reaches it, the last at the run's end), the
+    /// spin-up's on its own grid. 0 (the default) for none. Each is a copy
+    /// of the grid (4.7 MB on the default FWAV section), the sink's until
+    /// it lets it go.
     pub field_frames: usize,
 }
 
@@ -492,9 +493,26 @@ pub struct ViscousRun {
     pub surface: SurfaceLoads,
     /// The flow at the end on every node (for ParaView).
     pub field: FlowField,
-    /// The flows kept as the run stepped ([`ViscousSection::field_frames`]),
-    /// in time order; the last is `field`.
-    pub frames: Vec<FlowField>,
+}
+
+/// What takes a run's flows as it steps ([`ViscousSection::field_frames`],
+/// [`ViscousSection::run_into`]): each in time order, the last at the
+/// run's end. A sink that writes each to disk at once keeps the memory
+/// to one flow, and a run that fails keeps the flows it had.
+pub trait FrameSink {
+    /// Takes the flow at one instant.
+    ///
+    /// # Errors
+    /// Any: the run stops with [`ViscousError::Frame`].
+    fn take(&mut self, frame: &FlowField) -> Result<(), Box<dyn std::error::Error + Send + Sync>>;
+}
+
+/// The flows kept in memory.
+impl FrameSink for Vec<FlowField> {
+    fn take(&mut self, frame: &FlowField) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
+        self.push(frame.clone());
+        Ok(())
+    }
 }
 
 impl ViscousSection {
@@ -521,13 +539,28 @@ impl ViscousSection {
         reynolds: f64,
         duration: f64,
     ) -> Result<ViscousRun, ViscousError> {
+        self.run_into(path, reynolds, duration, &mut Vec::new())
+    }
+
+    /// [`Self::run`], handing `frames` the flows [`Self::field_frames`]
+    /// asks for as the run reaches them.
+    ///
+    /// # Errors
+    /// As [`Self::run`], and [`ViscousError::Frame`] when `frames` fails.
+    pub fn run_into(
+        &self,
+        path: SectionPath,
+        reynolds: f64,
+        duration: f64,
+        frames: &mut dyn FrameSink,
+    ) -> Result<ViscousRun, ViscousError> {
         let build =
             |section: &Self, path: SectionPath| -> Result<Flow<SectionPath>, ViscousError> {
                 let map = section.map(path.pivot())?;
                 let spec = section.grid(&map, reynolds)?;
                 Ok(Flow::new(&map, spec, path, 1.0 / reynolds)?)
             };
-        self.run_flows(build, path, reynolds, duration)
+        self.run_flows(build, path, reynolds, duration, frames)
     }
 
     /// The grid of the spin-up ([`Self::spin_up_periods`]): its cells
@@ -547,13 +580,15 @@ impl ViscousSection {
 
     /// Steps the flows `build` makes of this section (and of its
     /// spin-up grid first, when it has one) through `path` to
-    /// `duration` at `reynolds`, sampling their loads.
+    /// `duration` at `reynolds`, sampling their loads and handing
+    /// `frames` the flows [`Self::field_frames`] asks for.
     fn run_flows(
         &self,
         build: impl Fn(&Self, SectionPath) -> Result<Flow<SectionPath>, ViscousError>,
         path: SectionPath,
         reynolds: f64,
         duration: f64,
+        frames: &mut dyn FrameSink,
     ) -> Result<ViscousRun, ViscousError> {
         self.far_growth_kept()?;
         let mut march = March::new(path.clone(), duration, self.courant);
@@ -562,7 +597,7 @@ impl ViscousSection {
         let mut flow = match spin_up {
             Some(until) => {
                 let mut coarse = build(&self.spin_up_grid(), path.clone())?;
-                march.to(&mut coarse, until)?;
+                march.to(&mut coarse, until, frames)?;
                 march.spin_up_steps = march.steps;
                 let mut fine = build(self, path.clone())?;
                 fine.continue_from(&coarse)?;
@@ -570,11 +605,11 @@ impl ViscousSection {
             }
             None => build(self, path.clone())?,
         };
-        march.to(&mut flow, duration)?;
+        march.to(&mut flow, duration, frames)?;
         let (vorticity, body) = picture(&flow, &path);
         let surface = SurfaceLoads::of(&flow, &path, 1.0 / reynolds);
         let field = FlowField::of(&flow, &path);
-        let frames = march.frames_ending_with(&field);
+        march.last_frame(&field, frames)?;
         Ok(ViscousRun {
             history: march.history,
             sample: march.sample,
@@ -585,7 +620,6 @@ impl ViscousSection {
             body,
             surface,
             field,
-            frames,
         })
     }
 

@@ -10,7 +10,7 @@ use fwav::aero2d::motion::Motion;
 use fwav::aero2d::viscous::ViscousSection;
 use fwav::aero2d::window::MIN_SHEDDING_PERIODS;
 use fwav::aeroelastic::handoff::SectionFile;
-use fwav::output::flow_field_vtu::{write_flow_field, write_flow_series};
+use fwav::output::flow_field_vtu::{write_flow_field, FlowSeries};
 use fwav::output::history_csv::write_history_csv;
 use fwav::output::section_plot::draw;
 use fwav::output::surface_csv::write_surface_csv;
@@ -127,9 +127,8 @@ pub struct Aero2dArgs {
     #[arg(long)]
     pub field_series: Option<PathBuf>,
     /// Frames of `--field-series`, evenly spaced in time over the run, the
-    /// last at its end: 1 to 500 (default 50; on the default 384 × 256
-    /// grid 5.2 MB each on disk, and 4.7 MB each in memory until the
-    /// run ends).
+    /// last at its end, each written as the run reaches it: 1 to 500
+    /// (default 50; 5.2 MB each on the default 384 × 256 grid).
     #[arg(long)]
     pub field_frames: Option<usize>,
     /// Machine-readable output.
@@ -149,8 +148,8 @@ pub enum FlowModel {
 /// Frames of `--field-series` when `--field-frames` is not given.
 const DEFAULT_FIELD_FRAMES: usize = 50;
 
-/// The most frames `--field-frames` takes: the frames are kept in memory
-/// until the run ends, 2.4 GB of them on the default grid.
+/// The most frames `--field-frames` takes: 2.6 GB of files on the
+/// default grid (a slip of the keyboard should not fill the disk).
 const MAX_FIELD_FRAMES: usize = 500;
 
 /// The efficiency of a section that does no work.
@@ -417,9 +416,30 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
     check_outputs(a)?;
     let case = case(a)?;
     case.check_work()?;
-    let run = case.run().with_context(|| match &a.deformation {
-        Some(path) => format!("--section {} --deformation {}", a.section, path.display()),
-        None => format!("--section {}", a.section),
+    // The series is written as the run reaches each frame.
+    let mut series = match &a.field_series {
+        Some(dir) => {
+            Some(FlowSeries::create(dir).with_context(|| not_written("--field-series", dir))?)
+        }
+        None => None,
+    };
+    let run = match series.as_mut() {
+        Some(series) => case.run_into(series),
+        None => case.run(),
+    };
+    let run = run.with_context(|| {
+        let case = match &a.deformation {
+            Some(path) => format!("--section {} --deformation {}", a.section, path.display()),
+            None => format!("--section {}", a.section),
+        };
+        match &series {
+            Some(s) if !s.is_empty() => format!(
+                "{case} (the --field-series frames written so far, {}, are in {})",
+                s.len(),
+                s.collection().display()
+            ),
+            _ => case,
+        }
     })?;
     if let Some(png) = &a.plot {
         // A run of a given duration has no periods to mark.
@@ -435,9 +455,6 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
     }
     if let (Some(vtu), Some(field)) = (&a.field, &run.field) {
         write_flow_field(field, vtu).with_context(|| not_written("--field", vtu))?;
-    }
-    if let Some(dir) = &a.field_series {
-        write_flow_series(&run.frames, dir).with_context(|| not_written("--field-series", dir))?;
     }
     match a.duration {
         Some(duration) => report_window(a, &case, &run, duration),

@@ -8,7 +8,7 @@
 use std::path::{Path, PathBuf};
 
 use super::vtu::{self, Field, VtuError};
-use crate::aero2d::viscous::FlowField;
+use crate::aero2d::viscous::{FlowField, FrameSink};
 
 /// Writes `field` to `path` as a `.vtu` (point fields `vorticity`,
 /// `streamfunction` and the vector `velocity`, [`FlowField`]'s units).
@@ -36,7 +36,7 @@ fn velocity_vectors(field: &FlowField) -> Vec<[f64; 3]> {
     field.velocity.iter().map(|&(u, v)| [u, v, 0.0]).collect()
 }
 
-/// The file name of frame `k` of a series ([`write_flow_series`]).
+/// The file name of frame `k` of a series ([`FlowSeries`]).
 pub fn series_file(k: usize) -> String {
     format!("flow-{k:04}.vtu")
 }
@@ -44,22 +44,42 @@ pub fn series_file(k: usize) -> String {
 /// The series' time collection, `dir/flow.pvd`.
 pub const SERIES_COLLECTION: &str = "flow.pvd";
 
-/// Writes `frames` into `dir` (created if missing) as binary `.vtu`s
-/// ([`series_file`]; [`vtu::quads_to_binary`]: 5.2 MB a frame on the
-/// default FWAV section's grid, under a third of the ASCII file) and
-/// [`SERIES_COLLECTION`], the collection ParaView plays, each frame at
-/// its time in chords travelled. A file that exists is refused, not
-/// replaced. Returns the collection's path.
-///
-/// # Errors
-/// [`VtuError`]: a file exists or could not be written.
-pub fn write_flow_series(frames: &[FlowField], dir: &Path) -> Result<PathBuf, VtuError> {
-    std::fs::create_dir_all(dir).map_err(|source| VtuError::Io {
-        path: dir.display().to_string(),
-        source,
-    })?;
-    let mut entries = Vec::with_capacity(frames.len());
-    for (k, frame) in frames.iter().enumerate() {
+/// A series of flows being written into a directory, one binary `.vtu`
+/// a flow as it comes ([`series_file`]; [`vtu::quads_to_binary`]: 5.2 MB
+/// a frame on the default FWAV section's grid, under a third of the
+/// ASCII file) and [`SERIES_COLLECTION`], the collection ParaView plays,
+/// written again after each frame: a run that stops part way leaves a
+/// series ParaView opens, up to its last frame. A file that exists is
+/// refused, not replaced (the collection is the series' own).
+#[derive(Debug)]
+pub struct FlowSeries {
+    dir: PathBuf,
+    entries: Vec<(f64, String)>,
+}
+
+impl FlowSeries {
+    /// A series into `dir`, created if missing.
+    ///
+    /// # Errors
+    /// [`VtuError::Io`]: the directory could not be made.
+    pub fn create(dir: &Path) -> Result<Self, VtuError> {
+        std::fs::create_dir_all(dir).map_err(|source| VtuError::Io {
+            path: dir.display().to_string(),
+            source,
+        })?;
+        Ok(Self {
+            dir: dir.to_path_buf(),
+            entries: Vec::new(),
+        })
+    }
+
+    /// Writes `frame` as the series' next `.vtu`, at its time in chords
+    /// travelled, and the collection with it.
+    ///
+    /// # Errors
+    /// [`VtuError`]: the frame's file exists or a file could not be
+    /// written.
+    pub fn write(&mut self, frame: &FlowField) -> Result<(), VtuError> {
         let points: Vec<[f64; 3]> = frame.points.iter().map(|&(x, y)| [x, y, 0.0]).collect();
         let velocity = velocity_vectors(frame);
         let bytes = vtu::quads_to_binary(
@@ -71,13 +91,40 @@ pub fn write_flow_series(frames: &[FlowField], dir: &Path) -> Result<PathBuf, Vt
                 Field::PointVector("velocity", &velocity),
             ],
         )?;
-        let name = series_file(k);
-        vtu::write_new_bytes(&dir.join(&name), &bytes)?;
-        entries.push((frame.time, name));
+        let name = series_file(self.entries.len());
+        vtu::write_new_bytes(&self.dir.join(&name), &bytes)?;
+        self.entries.push((frame.time, name));
+        crate::files::write_atomic(&self.dir, SERIES_COLLECTION, vtu::collection(&self.entries))
+            .map_err(|e| VtuError::Io {
+                path: e.path.display().to_string(),
+                source: e.source,
+            })?;
+        Ok(())
     }
-    let path = dir.join(SERIES_COLLECTION);
-    vtu::write_new_bytes(&path, vtu::collection(&entries).as_bytes())?;
-    Ok(path)
+
+    /// Frames written so far.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+
+    /// Whether no frame is written yet.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.entries.is_empty()
+    }
+
+    /// The collection's path.
+    #[must_use]
+    pub fn collection(&self) -> PathBuf {
+        self.dir.join(SERIES_COLLECTION)
+    }
+}
+
+impl FrameSink for FlowSeries {
+    fn take(&mut self, frame: &FlowField) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
+        Ok(self.write(frame)?)
+    }
 }
 
 #[cfg(test)]

@@ -2,7 +2,12 @@
 //! as a file ParaView opens, checked against the wall condition the
 //! solver imposes and read back by VTK's own reader.
 
+use fwav::aero2d::case::{Case, CaseError, SectionModel};
+use fwav::aero2d::motion::Motion;
+use fwav::aero2d::viscous::{FlowField, FrameSink, ViscousError, ViscousSection};
+
 use crate::program::fwav;
+use crate::viscous_section::{case, coarse_plate};
 use crate::vtk_reader::read_vtu;
 
 /// `fwav aero2d` with `extra` on the flat plate at 10° started in a
@@ -209,8 +214,8 @@ fn binary_arrays(bytes: &[u8]) -> std::collections::HashMap<String, Vec<f64>> {
 ///
 /// Refused before the run: the same directory again (it holds the
 /// series, left as it was), `--field-frames` without `--field-series`
-/// or out of its range (1 to 500: the frames are kept in memory until
-/// the run ends), `--field-series` for an inviscid model.
+/// or out of its range (1 to 500), `--field-series` for an inviscid
+/// model.
 #[test]
 fn aero2d_writes_the_flow_as_a_series_paraview_plays() {
     let dir = std::env::temp_dir().join(format!("fwav-viscous-series-{}", std::process::id()));
@@ -457,4 +462,62 @@ fn the_fields_velocity_is_the_displaced_circles_potential_flow() {
         "{bare} from the bare circle's: no displacement seen"
     );
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A sink that takes `left` frames, then fails as a full disk would.
+struct FillsUp {
+    left: usize,
+}
+
+impl FrameSink for FillsUp {
+    fn take(&mut self, _: &FlowField) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
+        if self.left == 0 {
+            return Err("no space left on the device".into());
+        }
+        self.left -= 1;
+        Ok(())
+    }
+}
+
+/// A run hands its sink each frame as it reaches it, not at its end
+/// (what lets `--field-series` write each at once and keep a failed run's
+/// frames): four frames of 0.2 chords travelled, at 0.05, 0.1, 0.15 and
+/// 0.2 (each within one load sample, 0.2/2000, after), the last the run's
+/// end flow itself; and a sink that fails on the third frame stops the
+/// run there with the frame's time and the sink's reason (`FillsUp`).
+#[test]
+fn a_run_hands_its_frames_on_as_it_goes() {
+    let section = ViscousSection {
+        field_frames: 4,
+        ..coarse_plate()
+    };
+    let still = Motion {
+        mean_pitch: 10f64.to_radians(),
+        ..Motion::plunge(1.0, 0.0)
+    };
+    let case = Case {
+        duration: Some(0.2),
+        ..case(SectionModel::Viscous(section), still, 200.0)
+    };
+    let mut frames: Vec<FlowField> = Vec::new();
+    let run = case.run_into(&mut frames).unwrap();
+    let times: Vec<f64> = frames.iter().map(|f| f.time).collect();
+    assert_eq!(frames.len(), 4, "{times:?}");
+    for (i, t) in times.iter().enumerate() {
+        let due = 0.05 * (i + 1) as f64;
+        assert!(*t >= due - 1e-9 && *t <= due + 0.2 / 2000.0, "{times:?}");
+    }
+    assert_eq!(frames.last(), run.field.as_ref());
+    let e = case.run_into(&mut FillsUp { left: 2 }).unwrap_err();
+    match &e {
+        CaseError::Viscous(ViscousError::Frame { time, .. }) => {
+            assert!((time - times[2]).abs() < 1e-12, "stopped at {time}");
+        }
+        other => panic!("{other:?}"),
+    }
+    let message = e.to_string();
+    assert!(
+        message.contains("could not be kept") && message.contains("no space left"),
+        "{message}"
+    );
 }

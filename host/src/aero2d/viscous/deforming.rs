@@ -38,6 +38,23 @@ impl ViscousSection {
         duration: f64,
         samples: &[Vec<(f64, f64)>],
     ) -> Result<ViscousRun, ViscousError> {
+        self.run_deforming_into(path, reynolds, duration, samples, &mut Vec::new())
+    }
+
+    /// [`Self::run_deforming`], handing `frames` the flows
+    /// [`Self::field_frames`] asks for as the run reaches them.
+    ///
+    /// # Errors
+    /// As [`Self::run_deforming`], and [`ViscousError::Frame`] when
+    /// `frames` fails.
+    pub fn run_deforming_into(
+        &self,
+        path: SectionPath,
+        reynolds: f64,
+        duration: f64,
+        samples: &[Vec<(f64, f64)>],
+        frames: &mut dyn super::FrameSink,
+    ) -> Result<ViscousRun, ViscousError> {
         if matches!(self.shape, ViscousShape::Plate(_)) {
             check_midlines(samples)?;
         }
@@ -52,7 +69,7 @@ impl ViscousSection {
                 let spec = section.grid(&deformation.map_at(0.0), reynolds)?;
                 Ok(Flow::deforming(deformation, spec, path, 1.0 / reynolds)?)
             };
-        self.run_flows(build, path, reynolds, duration)
+        self.run_flows(build, path, reynolds, duration, frames)
     }
 
     /// A flapping section deforming by `samples` (as

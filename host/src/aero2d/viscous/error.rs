@@ -15,6 +15,15 @@ pub enum ViscousError {
     /// The solver refused the case or diverged.
     #[error(transparent)]
     Solver(#[from] NsError),
+    /// The flow at `time` could not be handed on
+    /// ([`super::FrameSink::take`]); the run stopped there.
+    #[error("the flow at {time:.4} chords travelled could not be kept: {source}")]
+    Frame {
+        /// The flow's time, chords travelled.
+        time: f64,
+        /// The sink's reason.
+        source: Box<dyn std::error::Error + Send + Sync>,
+    },
     /// A plate thickness out of range.
     #[error(
         "plate thickness {0} chords: the Navier–Stokes model takes 0.005 to 0.3 chords \

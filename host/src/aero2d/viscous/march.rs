@@ -5,7 +5,7 @@
 
 use fwav_ns2d::Flow;
 
-use super::{FlowField, History, SectionPath, ViscousError, MAX_VISCOUS_STEPS};
+use super::{FlowField, FrameSink, History, SectionPath, ViscousError, MAX_VISCOUS_STEPS};
 
 /// Steps between checks of the stable time step (a check costs about a
 /// tenth of a step).
@@ -124,12 +124,14 @@ pub(super) struct March {
     pub(super) spin_up_steps: usize,
     /// The smallest step (or first step chosen), chords travelled.
     pub(super) smallest: f64,
-    /// The flows kept for a series ([`Self::keep_frames`]): how many, at
-    /// what interval, the next one's time, and those kept so far.
+    /// The flows handed on for a series ([`Self::keep_frames`]): how
+    /// many, at what interval, the next one's time, those handed on so
+    /// far and the last one's time.
     frames_wanted: usize,
     frame_every: f64,
     next_frame: f64,
-    frames: Vec<FlowField>,
+    frames_taken: usize,
+    last_frame_time: f64,
 }
 
 impl March {
@@ -156,13 +158,14 @@ impl March {
             frames_wanted: 0,
             frame_every: f64::INFINITY,
             next_frame: f64::INFINITY,
-            frames: Vec::new(),
+            frames_taken: 0,
+            last_frame_time: f64::NEG_INFINITY,
         }
     }
 
-    /// Keep `count` flows, at `i / count` of the run's length for `i` = 1
-    /// to `count`, each at the end of the first step that reaches it (a
-    /// step that reaches several keeps one: at most `count`).
+    /// Hand on `count` flows, at `i / count` of the run's length for `i` =
+    /// 1 to `count`, each at the end of the first step that reaches it (a
+    /// step that reaches several hands on one: at most `count`).
     pub(super) fn keep_frames(&mut self, count: usize) {
         if count > 0 {
             self.frames_wanted = count;
@@ -171,37 +174,58 @@ impl March {
         }
     }
 
-    /// The flows kept, ending with the run's last flow `end` (kept anew
-    /// if the last step did not reach the last frame's time by rounding);
-    /// none if none were asked for.
-    pub(super) fn frames_ending_with(&mut self, end: &FlowField) -> Vec<FlowField> {
-        if self.frames_wanted == 0 {
-            return Vec::new();
+    /// Hands `sink` the run's last flow `end` if frames were asked for
+    /// and the last step did not reach the last frame's time (by
+    /// rounding).
+    ///
+    /// # Errors
+    /// [`ViscousError::Frame`] when `sink` fails.
+    pub(super) fn last_frame(
+        &mut self,
+        end: &FlowField,
+        sink: &mut dyn FrameSink,
+    ) -> Result<(), ViscousError> {
+        if self.frames_wanted > 0 && self.last_frame_time < end.time {
+            self.hand_on(end, sink)?;
         }
-        let mut frames = std::mem::take(&mut self.frames);
-        if frames.last().is_none_or(|f| f.time < end.time) {
-            frames.push(end.clone());
-        }
-        frames
+        Ok(())
     }
 
-    /// Keeps `flow` if it has reached the next frame's time.
-    fn frame(&mut self, flow: &Flow<SectionPath>) {
+    /// Hands `sink` the flow of `flow` if it has reached the next frame's
+    /// time.
+    fn frame(
+        &mut self,
+        flow: &Flow<SectionPath>,
+        sink: &mut dyn FrameSink,
+    ) -> Result<(), ViscousError> {
         let reached = flow.time() + 1e-9 * self.sample;
-        if self.frames.len() < self.frames_wanted && reached >= self.next_frame {
-            self.frames.push(FlowField::of(flow, &self.path));
+        if self.frames_taken < self.frames_wanted && reached >= self.next_frame {
+            self.hand_on(&FlowField::of(flow, &self.path), sink)?;
             while self.next_frame <= reached {
                 self.next_frame += self.frame_every;
             }
         }
+        Ok(())
+    }
+
+    fn hand_on(&mut self, frame: &FlowField, sink: &mut dyn FrameSink) -> Result<(), ViscousError> {
+        sink.take(frame).map_err(|source| ViscousError::Frame {
+            time: frame.time,
+            source,
+        })?;
+        self.frames_taken += 1;
+        self.last_frame_time = frame.time;
+        Ok(())
     }
 
     /// Steps `flow` through the samples up to `until` (the step that
-    /// reaches the last of them ends it).
+    /// reaches the last of them ends it), handing `frames` the flows
+    /// asked for ([`Self::keep_frames`]).
     pub(super) fn to(
         &mut self,
         flow: &mut Flow<SectionPath>,
         until: f64,
+        frames: &mut dyn FrameSink,
     ) -> Result<(), ViscousError> {
         let (sample, courant) = (self.sample, self.courant);
         // A flow at rest: its step from the path's fastest edge; a flow
@@ -229,7 +253,7 @@ impl March {
             flow.step(dt)?;
             self.steps += 1;
             taken += 1;
-            self.frame(flow);
+            self.frame(flow, frames)?;
             let Some(before) = before else { continue };
             let now = (flow.time(), coefficients(flow));
             let history = &mut self.history;
