@@ -21,7 +21,8 @@ use super::panel::DEFAULT_PANELS;
 use super::panel::{PanelSettings, PanelSolver, SectionShape, ShapeHistory};
 use super::theory::garrick_plunge;
 use super::viscous::{
-    FlowField, FrameSink, SectionPath, SurfaceLoads, ViscousSection, ViscousShape, STILL_KICK_RATE,
+    FlowField, FrameSink, NoFrames, SectionPath, SurfaceLoads, ViscousSection, ViscousShape,
+    STILL_KICK_RATE,
 };
 use super::window::WindowStatistics;
 
@@ -319,7 +320,7 @@ impl Case {
     /// finite or whose wake left the domain of validity
     /// ([`WAKE_REACH_CHORDS`]) is an error, never a result.
     pub fn run(&self) -> Result<CaseRun, CaseError> {
-        self.run_into(&mut Vec::new())
+        self.run_into(&mut NoFrames)
     }
 
     /// [`Self::run`], handing `frames` the viscous model's flows as the

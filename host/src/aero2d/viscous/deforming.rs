@@ -38,7 +38,7 @@ impl ViscousSection {
         duration: f64,
         samples: &[Vec<(f64, f64)>],
     ) -> Result<ViscousRun, ViscousError> {
-        self.run_deforming_into(path, reynolds, duration, samples, &mut Vec::new())
+        self.run_deforming_into(path, reynolds, duration, samples, &mut super::NoFrames)
     }
 
     /// [`Self::run_deforming`], handing `frames` the flows

@@ -208,6 +208,7 @@ impl March {
         Ok(())
     }
 
+    /// Hands `frame` to `sink`, counting it.
     fn hand_on(&mut self, frame: &FlowField, sink: &mut dyn FrameSink) -> Result<(), ViscousError> {
         sink.take(frame).map_err(|source| ViscousError::Frame {
             time: frame.time,
