@@ -328,7 +328,9 @@ impl Case {
     /// models hand on none).
     ///
     /// # Errors
-    /// As [`Self::run`].
+    /// As [`Self::run`], and [`CaseError::Viscous`] with
+    /// [`crate::aero2d::viscous::ViscousError::Frame`] when `frames` fails
+    /// (the run stops at that frame).
     pub fn run_into(&self, frames: &mut dyn FrameSink) -> Result<CaseRun, CaseError> {
         self.check_work()?;
         let run = match &self.section {
