@@ -23,14 +23,21 @@ pub fn write_atomic(
     contents: impl AsRef<[u8]>,
 ) -> Result<PathBuf, WriteError> {
     let path = dir.join(name);
-    let temporary = dir.join(format!("{name}.partial"));
+    write_atomic_to(&path, contents)?;
+    Ok(path)
+}
+
+/// Writes `contents` to `path` atomically (module docs), through
+/// `path.partial` beside it.
+pub fn write_atomic_to(path: &Path, contents: impl AsRef<[u8]>) -> Result<(), WriteError> {
+    let mut temporary = path.as_os_str().to_owned();
+    temporary.push(".partial");
     let error = |source| WriteError {
-        path: path.clone(),
+        path: path.to_path_buf(),
         source,
     };
     std::fs::write(&temporary, contents).map_err(error)?;
-    std::fs::rename(&temporary, &path).map_err(error)?;
-    Ok(path)
+    std::fs::rename(&temporary, path).map_err(error)
 }
 
 #[cfg(test)]

@@ -140,18 +140,10 @@ impl EvaluationCache {
             path: path.display().to_string(),
             message: e.to_string(),
         })?;
-        let name = path.file_name().map_or_else(
-            || std::ffi::OsString::from("evaluations.json"),
-            std::ffi::OsStr::to_os_string,
-        );
-        let dir = path.parent().unwrap_or_else(|| Path::new(""));
-        crate::files::write_atomic(dir, &name.to_string_lossy(), text).map_err(|e| {
-            CacheError::Io {
-                path: path.display().to_string(),
-                source: e.source,
-            }
-        })?;
-        Ok(())
+        crate::files::write_atomic_to(path, text).map_err(|e| CacheError::Io {
+            path: path.display().to_string(),
+            source: e.source,
+        })
     }
 
     /// Number of stored evaluations.

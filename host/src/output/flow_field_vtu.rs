@@ -94,11 +94,7 @@ impl FlowSeries {
         let name = series_file(self.entries.len());
         vtu::write_new_bytes(&self.dir.join(&name), &bytes)?;
         self.entries.push((frame.time, name));
-        crate::files::write_atomic(&self.dir, SERIES_COLLECTION, vtu::collection(&self.entries))
-            .map_err(|e| VtuError::Io {
-                path: e.path.display().to_string(),
-                source: e.source,
-            })?;
+        crate::files::write_atomic(&self.dir, SERIES_COLLECTION, vtu::collection(&self.entries))?;
         Ok(())
     }
 

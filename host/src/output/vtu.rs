@@ -68,6 +68,15 @@ pub enum VtuError {
     },
 }
 
+impl From<crate::files::WriteError> for VtuError {
+    fn from(e: crate::files::WriteError) -> Self {
+        Self::Io {
+            path: e.path.display().to_string(),
+            source: e.source,
+        }
+    }
+}
+
 /// The `.vtu` text of `mesh` with `fields`.
 pub fn to_string(mesh: &ShellMesh, fields: &[Field<'_>]) -> Result<String, VtuError> {
     let points: Vec<[f64; 3]> = mesh.nodes.iter().map(|p| [p.x, p.y, p.z]).collect();
@@ -281,16 +290,13 @@ fn scalar_array(s: &mut String, name: &str, v: &[f64]) {
     s.push_str("\n</DataArray>\n");
 }
 
-/// Writes `mesh` with `fields` to `path` atomically.
+/// Writes `mesh` with `fields` to `path` atomically
+/// ([`crate::files::write_atomic_to`]).
 pub fn write(path: &Path, mesh: &ShellMesh, fields: &[Field<'_>]) -> Result<(), VtuError> {
-    let text = to_string(mesh, fields)?;
-    let io_error = |source| VtuError::Io {
-        path: path.display().to_string(),
-        source,
-    };
-    let temporary = path.with_extension("vtu.partial");
-    std::fs::write(&temporary, text).map_err(io_error)?;
-    std::fs::rename(&temporary, path).map_err(io_error)
+    Ok(crate::files::write_atomic_to(
+        path,
+        to_string(mesh, fields)?,
+    )?)
 }
 
 /// Writes the quadrilaterals `quads` of `points` with `fields` to

@@ -49,9 +49,7 @@ pub fn write_series(
     let wing_pvd = dir.join("wing.pvd");
     let wake_pvd = dir.join("wake.pvd");
     for (path, entries) in [(&wing_pvd, &wing_entries), (&wake_pvd, &wake_entries)] {
-        let temporary = path.with_extension("pvd.partial");
-        std::fs::write(&temporary, vtu::collection(entries)).map_err(|e| io(path, e))?;
-        std::fs::rename(&temporary, path).map_err(|e| io(path, e))?;
+        crate::files::write_atomic_to(path, vtu::collection(entries))?;
     }
     Ok([wing_pvd, wake_pvd])
 }
