@@ -72,7 +72,7 @@ use super::history::History;
 use super::ldvm::FreeVortex;
 pub use deflection::{DeflectionState, RigidDeflection, MAX_DEFLECTION_SAMPLES};
 pub use error::ViscousError;
-pub use field::FlowField;
+pub use field::{FlowField, FrameSink, NoFrames};
 use march::March;
 pub use path::{SectionPath, STILL_KICK_CHORDS, STILL_KICK_RATE};
 pub use surface::SurfaceLoads;
@@ -493,37 +493,6 @@ pub struct ViscousRun {
     pub surface: SurfaceLoads,
     /// The flow at the end on every node (for ParaView).
     pub field: FlowField,
-}
-
-/// What takes a run's flows as it steps ([`ViscousSection::field_frames`],
-/// [`ViscousSection::run_into`]): each in time order, the last at the
-/// run's end. A sink that writes each to disk at once keeps the memory
-/// to one flow, and a run that fails keeps the flows it had.
-pub trait FrameSink {
-    /// Takes the flow at one instant.
-    ///
-    /// # Errors
-    /// Any: the run stops with [`ViscousError::Frame`].
-    fn take(&mut self, frame: &FlowField) -> Result<(), Box<dyn std::error::Error + Send + Sync>>;
-}
-
-/// The flows let go as they come: what [`ViscousSection::run`] and the
-/// runs without a sink hand theirs to.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct NoFrames;
-
-impl FrameSink for NoFrames {
-    fn take(&mut self, _: &FlowField) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
-        Ok(())
-    }
-}
-
-/// The flows kept in memory.
-impl FrameSink for Vec<FlowField> {
-    fn take(&mut self, frame: &FlowField) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
-        self.push(frame.clone());
-        Ok(())
-    }
 }
 
 impl ViscousSection {

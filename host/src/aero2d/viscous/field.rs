@@ -1,7 +1,8 @@
 //! The flow of a viscous run at one instant on the grid's nodes: what
 //! `fwav aero2d --model ns --field FILE.vtu` (the run's end) and
 //! `--field-series DIR` (instants through the run) write for ParaView
-//! (`crate::output::flow_field_vtu`).
+//! (`crate::output::flow_field_vtu`); and what takes a run's flows as it
+//! reaches them ([`FrameSink`]).
 
 use fwav_ns2d::{Complex64, Flow, OGrid};
 
@@ -75,6 +76,38 @@ impl FlowField {
                 })
             })
             .collect()
+    }
+}
+
+/// What takes a run's flows as it steps
+/// ([`super::ViscousSection::field_frames`],
+/// [`super::ViscousSection::run_into`]): each in time order, the last at
+/// the run's end. A sink that writes each to disk at once keeps the
+/// memory to one flow, and a run that fails keeps the flows it had.
+pub trait FrameSink {
+    /// Takes the flow at one instant.
+    ///
+    /// # Errors
+    /// Any: the run stops with [`super::ViscousError::Frame`].
+    fn take(&mut self, frame: &FlowField) -> Result<(), Box<dyn std::error::Error + Send + Sync>>;
+}
+
+/// The flows let go as they come: what [`super::ViscousSection::run`]
+/// and the runs without a sink hand theirs to.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct NoFrames;
+
+impl FrameSink for NoFrames {
+    fn take(&mut self, _: &FlowField) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
+        Ok(())
+    }
+}
+
+/// The flows kept in memory.
+impl FrameSink for Vec<FlowField> {
+    fn take(&mut self, frame: &FlowField) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
+        self.push(frame.clone());
+        Ok(())
     }
 }
 
