@@ -2,6 +2,8 @@
 //! as a file ParaView opens, checked against the wall condition the
 //! solver imposes and read back by VTK's own reader.
 
+use std::path::Path;
+
 use fwav::aero2d::case::{Case, CaseError, SectionModel};
 use fwav::aero2d::motion::Motion;
 use fwav::aero2d::viscous::{FlowField, FrameSink, ViscousError, ViscousSection};
@@ -9,6 +11,35 @@ use fwav::aero2d::viscous::{FlowField, FrameSink, ViscousError, ViscousSection};
 use crate::program::fwav;
 use crate::viscous_section::{case, coarse_plate};
 use crate::vtk_reader::read_vtu;
+
+/// VTK's reader (where Python's `vtk` is installed: [`read_vtu`]) finds
+/// in the flow field `path` the grid's `around × rings` nodes and its
+/// quadrilaterals (type 9), the vorticity and the streamfunction with
+/// one component each and the ranges of `omega` and `psi` (as this test
+/// read them from the file), and a three-component velocity.
+fn vtk_reads_the_field(path: &Path, (around, rings): (usize, usize), omega: &[f64], psi: &[f64]) {
+    let Some(read) = read_vtu(path) else { return };
+    let file = path.display();
+    assert_eq!(
+        (read.points, read.cells, read.cell_types.as_slice()),
+        (around * rings, around * (rings - 1), &[9][..]),
+        "VTK's reader on {file}: quadrilaterals"
+    );
+    for (name, values) in [("vorticity", omega), ("streamfunction", psi)] {
+        let range = [
+            values.iter().copied().fold(f64::MAX, f64::min),
+            values.iter().copied().fold(f64::MIN, f64::max),
+        ];
+        let array = read.point_array(name).expect(name);
+        assert_eq!(
+            (array.components, array.range),
+            (1, range),
+            "{file}: {name}"
+        );
+    }
+    let velocity = read.point_array("velocity").expect("velocity");
+    assert_eq!(velocity.components, 3, "{file}: velocity (u, v, 0)");
+}
 
 /// `fwav aero2d` with `extra` on the flat plate at 10° started in a
 /// stream, NS, Re 200, 0.3 chords travelled, 128 × 96 nodes (about a
@@ -123,29 +154,7 @@ fn aero2d_writes_the_flow_field_for_paraview() {
         (rise - centres).abs() < 0.002,
         "the leading edge's end {rise} above the trailing edge's, not {centres}"
     );
-    if let Some(read) = read_vtu(&path) {
-        let range = |v: &[f64]| {
-            [
-                v.iter().copied().fold(f64::MAX, f64::min),
-                v.iter().copied().fold(f64::MIN, f64::max),
-            ]
-        };
-        assert_eq!(
-            (read.points, read.cells, read.cell_types.as_slice()),
-            (around * rings, around * (rings - 1), &[9][..]),
-            "VTK's reader: quadrilaterals"
-        );
-        for (name, values) in [("vorticity", &omega), ("streamfunction", &psi)] {
-            let array = read.point_array(name).expect(name);
-            assert_eq!(
-                (array.components, array.range),
-                (1, range(values)),
-                "{name}"
-            );
-        }
-        let velocity = read.point_array("velocity").expect("velocity");
-        assert_eq!(velocity.components, 3, "velocity: (u, v, 0)");
-    }
+    vtk_reads_the_field(&path, (around, rings), &omega, &psi);
     let again = plate_at_ten_degrees(&field);
     let e = String::from_utf8_lossy(&again.stderr);
     assert!(
@@ -298,27 +307,7 @@ fn aero2d_writes_the_flow_as_a_series_paraview_plays() {
                 );
             }
         }
-        if let Some(read) = read_vtu(&path) {
-            assert_eq!(
-                (read.points, read.cells, read.cell_types.as_slice()),
-                (around * rings, around * (rings - 1), &[9][..]),
-                "VTK's reader on {file}"
-            );
-            for (name, values) in [("vorticity", omega), ("streamfunction", psi)] {
-                let range = [
-                    values.iter().copied().fold(f64::MAX, f64::min),
-                    values.iter().copied().fold(f64::MIN, f64::max),
-                ];
-                let array = read.point_array(name).expect(name);
-                assert_eq!(
-                    (array.components, array.range),
-                    (1, range),
-                    "{file}: {name}"
-                );
-            }
-            let velocity = read.point_array("velocity").expect("velocity");
-            assert_eq!(velocity.components, 3, "{file}: velocity");
-        }
+        vtk_reads_the_field(&path, (around, rings), omega, psi);
     }
     // Refused before the run, nothing written.
     let again = run(&series_args);
