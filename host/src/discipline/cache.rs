@@ -18,6 +18,11 @@
 //! only the evaluations still running: a Navier–Stokes discipline is some
 //! twenty evaluations of two to three minutes each, and before, a kill
 //! lost them all.
+//!
+//! Several processes may keep their caches in one file (two `fwav
+//! kinematics --cache` runs at once, say): each write, under a lock of the
+//! file, adds the results the file already holds, so none is lost and the
+//! file is never a mix of two writes ([`EvaluationCache::save`]).
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -78,31 +83,8 @@ impl EvaluationCache {
 
     /// Loads `path`; a missing file is an empty cache.
     pub fn load(path: &Path) -> Result<Self, CacheError> {
-        let text = match std::fs::read_to_string(path) {
-            Ok(t) => t,
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Self::new()),
-            Err(source) => {
-                return Err(CacheError::Io {
-                    path: path.display().to_string(),
-                    source,
-                })
-            }
-        };
-        let file: CacheFile = serde_json::from_str(&text).map_err(|e| CacheError::Format {
-            path: path.display().to_string(),
-            message: e.to_string(),
-        })?;
-        if file.format != FORMAT {
-            return Err(CacheError::Format {
-                path: path.display().to_string(),
-                message: format!(
-                    "format {:?}, expected {FORMAT:?} (results of an older version: delete the file to recompute)",
-                    file.format
-                ),
-            });
-        }
         Ok(Self {
-            entries: Mutex::new(file.entries),
+            entries: Mutex::new(read_entries(path)?),
             ..Self::default()
         })
     }
@@ -110,7 +92,8 @@ impl EvaluationCache {
     /// Loads `path` as [`Self::load`] does, and keeps the cache in it:
     /// every [`Self::insert`] writes the file again (atomically; a design
     /// run's few hundred results are tens of kilobytes), so the results
-    /// survive a kill.
+    /// survive a kill, with the results other processes wrote to it in
+    /// the meantime added ([`Self::save`]).
     pub fn kept_in(path: &Path) -> Result<Self, CacheError> {
         Ok(Self {
             file: Some(path.to_path_buf()),
@@ -118,9 +101,20 @@ impl EvaluationCache {
         })
     }
 
-    /// Writes the cache to `path` atomically. For a cache kept in a file
-    /// this is the check that every result reached it: an insert's failed
-    /// write is not an error until here.
+    /// Writes the cache to `path` atomically, with the results already in
+    /// the file added. For a cache kept in a file this is the check that
+    /// every result reached it: an insert's failed write is not an error
+    /// until here.
+    ///
+    /// Other processes may keep their caches in the same file (two `fwav
+    /// kinematics --cache` runs, say): under an exclusive lock of
+    /// `path.lock` the results the file holds are first added to this
+    /// cache's, so that each write keeps every process's results, and no
+    /// two writes interleave. (Before, the last writer's results replaced
+    /// the others', and two writes at once could leave a file mixed of
+    /// both.) A file that is no longer a cache is not overwritten: the
+    /// write fails, naming it. Cost: reading and parsing the file, tens of
+    /// kilobytes, at each write.
     pub fn save(&self, path: &Path) -> Result<(), CacheError> {
         let _writing = self
             .writing
@@ -129,13 +123,21 @@ impl EvaluationCache {
         self.write(path)
     }
 
-    /// Writes every result to `path` (atomically); the caller holds
-    /// `writing`.
+    /// Writes every result to `path` as [`Self::save`] says; the caller
+    /// holds `writing`.
     fn write(&self, path: &Path) -> Result<(), CacheError> {
-        let text = serde_json::to_string(&CacheFile {
-            format: FORMAT.to_string(),
-            entries: self.lock().clone(),
-        })
+        let _lock = lock_file(path)?;
+        let on_disk = read_entries(path)?;
+        let text = {
+            let mut entries = self.lock();
+            for (key, result) in on_disk {
+                entries.entry(key).or_insert(result);
+            }
+            serde_json::to_string(&CacheFile {
+                format: FORMAT.to_string(),
+                entries: entries.clone(),
+            })
+        }
         .map_err(|e| CacheError::Format {
             path: path.display().to_string(),
             message: e.to_string(),
@@ -183,6 +185,59 @@ impl EvaluationCache {
         // written (single inserts), so a poisoned lock is still usable.
         self.entries.lock().unwrap_or_else(|e| e.into_inner())
     }
+}
+
+/// The results in the cache file `path`; a missing file has none.
+fn read_entries(path: &Path) -> Result<HashMap<String, SectionResult>, CacheError> {
+    let text = match std::fs::read_to_string(path) {
+        Ok(t) => t,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(HashMap::new()),
+        Err(source) => {
+            return Err(CacheError::Io {
+                path: path.display().to_string(),
+                source,
+            })
+        }
+    };
+    let file: CacheFile = serde_json::from_str(&text).map_err(|e| CacheError::Format {
+        path: path.display().to_string(),
+        message: e.to_string(),
+    })?;
+    if file.format != FORMAT {
+        return Err(CacheError::Format {
+            path: path.display().to_string(),
+            message: format!(
+                "format {:?}, expected {FORMAT:?} (results of an older version: delete the file to recompute)",
+                file.format
+            ),
+        });
+    }
+    Ok(file.entries)
+}
+
+/// The exclusive lock of the cache file `path`: an advisory `flock` of the
+/// empty file `path.lock` beside it, created if missing and left in place
+/// (removing it while another process waits on it would let two writers
+/// in). The kernel releases the lock when the returned file is dropped, or
+/// its process ends however it ends. Blocks while another writer holds it:
+/// a write takes milliseconds.
+fn lock_file(path: &Path) -> Result<std::fs::File, CacheError> {
+    let mut name = path.as_os_str().to_owned();
+    name.push(".lock");
+    let lock_path = PathBuf::from(name);
+    let error = |source| CacheError::Io {
+        path: lock_path.display().to_string(),
+        source,
+    };
+    let file = std::fs::OpenOptions::new()
+        .create(true)
+        .truncate(false)
+        .write(true)
+        .open(&lock_path)
+        .map_err(error)?;
+    rustix::fs::flock(&file, rustix::fs::FlockOperation::LockExclusive)
+        .map_err(|e| error(e.into()))?;
+    Ok(file)
 }
 
 /// The revision of the Navier–Stokes model's results, part of its keys:
@@ -280,6 +335,73 @@ mod tests {
             result(0.15),
         );
         assert_eq!(std::fs::read_to_string(&path).unwrap(), before);
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    /// Two caches kept in one file, as two processes keep theirs (each
+    /// its own open file, so the lock between them is the kernel's, as
+    /// between processes), inserting at once: the file ends with every
+    /// result of both, and each cache has gathered the other's after its
+    /// save. Before the writes merged, the last writer's results replaced
+    /// the other's.
+    #[test]
+    fn caches_kept_in_one_file_keep_each_others_results() {
+        let dir = std::env::temp_dir().join(format!("fwav-cache-shared-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("evaluations.json");
+        let case = SectionCase::fwav_mid_span();
+        let design = |run: usize, i: usize| {
+            FlappingKinematics::from_degrees([5.0 + run as f64, 10.0 + i as f64, 0.0, 90.0])
+        };
+        let caches: Vec<EvaluationCache> = (0..2)
+            .map(|_| EvaluationCache::kept_in(&path).unwrap())
+            .collect();
+        std::thread::scope(|s| {
+            for (run, cache) in caches.iter().enumerate() {
+                let case = &case;
+                s.spawn(move || {
+                    for i in 0..40 {
+                        cache.insert(case, &design(run, i), result(0.001 * i as f64));
+                    }
+                });
+            }
+        });
+        let on_disk = EvaluationCache::load(&path).unwrap();
+        assert_eq!(on_disk.len(), 80);
+        for run in 0..2 {
+            for i in [0, 17, 39] {
+                assert_eq!(
+                    on_disk.get(&case, &design(run, i)),
+                    Some(result(0.001 * i as f64))
+                );
+            }
+        }
+        for cache in &caches {
+            cache.save(&path).unwrap();
+            assert_eq!(cache.len(), 80);
+        }
+        assert!(!dir.join("evaluations.json.partial").exists());
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    /// A file that is no longer a cache (a person's file put in its place)
+    /// is not overwritten by a kept cache's writes: the result stays in
+    /// memory and `save` names the file and what is wrong with it.
+    #[test]
+    fn a_kept_cache_leaves_a_file_that_is_not_a_cache() {
+        let dir = std::env::temp_dir().join(format!("fwav-cache-replaced-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("evaluations.json");
+        let kept = EvaluationCache::kept_in(&path).unwrap();
+        std::fs::write(&path, "my notes").unwrap();
+        let case = SectionCase::fwav_mid_span();
+        let design = FlappingKinematics::from_degrees([11.0, 30.0, 0.0, 90.0]);
+        kept.insert(&case, &design, result(0.09));
+        assert_eq!(std::fs::read_to_string(&path).unwrap(), "my notes");
+        assert_eq!(kept.get(&case, &design), Some(result(0.09)));
+        let e = kept.save(&path).unwrap_err();
+        assert!(matches!(e, CacheError::Format { .. }), "{e:?}");
+        assert!(e.to_string().contains("evaluations.json"), "{e}");
         std::fs::remove_dir_all(&dir).ok();
     }
 

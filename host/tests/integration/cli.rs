@@ -404,6 +404,73 @@ fn kinematics_runs_the_discipline_and_reuses_its_evaluations() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// Two `fwav kinematics` runs at once keeping their evaluations in one
+/// cache file, on different frequency levels (so neither can serve the
+/// other's rows): the file ends with every evaluation of both, so a rerun
+/// of each finds all it evaluates there, adds nothing and answers as
+/// before. Before the cache's writes merged under a
+/// lock, the run that wrote last replaced the other's results (and two
+/// writes at once could leave a file mixed of both).
+#[test]
+fn kinematics_runs_sharing_a_cache_keep_each_others_evaluations() {
+    let dir = std::env::temp_dir().join(format!("fwav-kinematics-shared-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let cache = dir.join("evaluations.json");
+    let configs: Vec<_> = [[9.0, 11.0, 13.0], [8.0, 10.0, 12.0]]
+        .iter()
+        .enumerate()
+        .map(|(i, levels)| {
+            let path = dir.join(format!("run{i}.toml"));
+            std::fs::write(
+                &path,
+                format!(
+                    "[design]\nsection_cycles = 3\nfrequency_hz = [{}, {}, {}]\n",
+                    levels[0], levels[1], levels[2]
+                ),
+            )
+            .unwrap();
+            path
+        })
+        .collect();
+    let run = |config: &std::path::Path, cache: &std::path::Path| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_fwav"))
+            .args(["kinematics", "--json", "--config"])
+            .arg(config)
+            .arg("--cache")
+            .arg(cache)
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .expect("the fwav binary runs")
+    };
+    let answer = |child: std::process::Child| {
+        let out = child.wait_with_output().unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice::<serde_json::Value>(&out.stdout).unwrap()
+    };
+    let entries = |path: &std::path::Path| {
+        let text = std::fs::read_to_string(path).unwrap();
+        let file: serde_json::Value = serde_json::from_str(&text).unwrap();
+        file["entries"].clone()
+    };
+    let together: Vec<_> = configs.iter().map(|c| run(c, &cache)).collect();
+    let answers: Vec<_> = together.into_iter().map(answer).collect();
+    let kept = entries(&cache);
+    assert!(kept.as_object().unwrap().len() >= 36, "{kept}");
+    // Each run again: all it evaluates is in the file (nothing is added),
+    // and it answers as before.
+    for (config, first) in configs.iter().zip(&answers) {
+        let again = answer(run(config, &cache));
+        assert_eq!(again["result"]["chosen"], first["result"]["chosen"]);
+        assert_eq!(entries(&cache), kept);
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 /// `fwav actuator` on a design file and on a plant file: the margins are
 /// `1 - value / limit`, the limiting one is the smallest, the verdict is
 /// "every margin at least the reserve"; on the design file's wing with no
