@@ -58,6 +58,12 @@ pub enum VtuError {
         /// Cells given.
         cells: usize,
     },
+    /// A file is where a new one was to be written: it is left as it is.
+    #[error("{} exists, and is left as it is: move it away, or write elsewhere", .path.display())]
+    Exists {
+        /// The file found there.
+        path: std::path::PathBuf,
+    },
     /// The file could not be written.
     #[error("writing {path}: {source}")]
     Io {
@@ -301,8 +307,8 @@ pub fn write(path: &Path, mesh: &ShellMesh, fields: &[Field<'_>]) -> Result<(), 
 
 /// Writes the quadrilaterals `quads` of `points` with `fields` to
 /// `path`, which must not exist: a file there is refused, not replaced
-/// (the error's source is then of kind `AlreadyExists`). A write that
-/// fails part way removes what it wrote.
+/// ([`VtuError::Exists`]). A write that fails part way removes what it
+/// wrote.
 pub fn write_new(
     path: &Path,
     points: &[[f64; 3]],
@@ -313,9 +319,8 @@ pub fn write_new(
 }
 
 /// Writes `bytes` (a file's whole contents) to `path`, which must not
-/// exist: a file there is refused, not replaced (the error's source is
-/// then of kind `AlreadyExists`). A write that fails part way removes
-/// what it wrote.
+/// exist: a file there is refused, not replaced ([`VtuError::Exists`]).
+/// A write that fails part way removes what it wrote.
 pub fn write_new_bytes(path: &Path, bytes: &[u8]) -> Result<(), VtuError> {
     use std::io::Write as _;
     let io_error = |source| VtuError::Io {
@@ -326,7 +331,12 @@ pub fn write_new_bytes(path: &Path, bytes: &[u8]) -> Result<(), VtuError> {
         .write(true)
         .create_new(true)
         .open(path)
-        .map_err(io_error)?;
+        .map_err(|e| match e.kind() {
+            std::io::ErrorKind::AlreadyExists => VtuError::Exists {
+                path: path.to_path_buf(),
+            },
+            _ => io_error(e),
+        })?;
     file.write_all(bytes)
         .and_then(|()| file.sync_all())
         .map_err(|e| {

@@ -8,7 +8,7 @@ use fwav::aero2d::case::{Case, CaseError, SectionModel};
 use fwav::aero2d::motion::Motion;
 use fwav::aero2d::viscous::{FlowField, FrameSink, ViscousError, ViscousSection};
 
-use crate::program::fwav;
+use crate::program::{fwav, fwav_command};
 use crate::viscous_section::{case, coarse_plate};
 use crate::vtk_reader::read_vtu;
 
@@ -45,6 +45,11 @@ fn vtk_reads_the_field(path: &Path, (around, rings): (usize, usize), omega: &[f6
 /// stream, NS, Re 200, 0.3 chords travelled, 128 × 96 nodes (about a
 /// second).
 fn plate_at_ten_degrees(extra: &[&str]) -> std::process::Output {
+    fwav(&plate_at_ten_degrees_for("0.3", extra))
+}
+
+/// The arguments of [`plate_at_ten_degrees`], run for `duration` chords.
+fn plate_at_ten_degrees_for<'a>(duration: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
     let mut args = vec![
         "aero2d",
         "--model",
@@ -58,14 +63,14 @@ fn plate_at_ten_degrees(extra: &[&str]) -> std::process::Output {
         "--reynolds",
         "200",
         "--duration",
-        "0.3",
+        duration,
         "--ns-around",
         "128",
         "--ns-radial",
         "96",
     ];
     args.extend_from_slice(extra);
-    fwav(&args)
+    args
 }
 
 /// The values of the `.vtu` array named `name` (the points' when
@@ -509,4 +514,65 @@ fn a_run_hands_its_frames_on_as_it_goes() {
         message.contains("could not be kept") && message.contains("no space left"),
         "{message}"
     );
+}
+
+/// A run that fails after writing frames keeps them, leaves alone what it
+/// did not write, and says where its frames are. The plate of
+/// [`plate_at_ten_degrees`] is run for 6 chords with two frames (at 3 and
+/// 6 chords, about a second and a half apart here); as soon as the first
+/// is on disk the test puts a file where the second goes, as a person or
+/// another run might. The run stops there with an error naming that file
+/// and the series of the one frame written, and the file is as it was.
+#[test]
+fn a_run_stopped_after_its_first_frame_says_where_the_frames_are() {
+    let dir = std::env::temp_dir().join(format!("fwav-series-stopped-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::create_dir_all(&dir).unwrap();
+    let series = dir.join("series");
+    let series_arg = series.to_str().unwrap();
+    let mut child = fwav_command(&plate_at_ten_degrees_for(
+        "6",
+        &["--field-series", series_arg, "--field-frames", "2"],
+    ))
+    .stdout(std::process::Stdio::piped())
+    .stderr(std::process::Stdio::piped())
+    .spawn()
+    .expect("the fwav binary runs");
+    let first = series.join("flow-0000.vtu");
+    let second = series.join("flow-0001.vtu");
+    let started = std::time::Instant::now();
+    while !first.exists() {
+        if let Some(status) = child.try_wait().unwrap() {
+            panic!("the run ended ({status}) before its first frame");
+        }
+        assert!(started.elapsed().as_secs() < 300, "no first frame");
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    std::fs::write(&second, "not the run's").unwrap();
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{stderr}");
+    let pvd = series.join("flow.pvd");
+    assert!(
+        stderr.contains(&format!(
+            "the --field-series frames written so far, 1, are in {}",
+            pvd.display()
+        )),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains(&format!(
+            "{} exists, and is left as it is",
+            second.display()
+        )),
+        "{stderr}"
+    );
+    assert_eq!(std::fs::read_to_string(&second).unwrap(), "not the run's");
+    let collection = std::fs::read_to_string(&pvd).unwrap();
+    assert!(
+        collection.contains("flow-0000.vtu") && !collection.contains("flow-0001.vtu"),
+        "{collection}"
+    );
+    assert!(std::fs::metadata(&first).unwrap().len() > 100_000);
+    std::fs::remove_dir_all(&dir).ok();
 }
