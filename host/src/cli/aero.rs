@@ -1,19 +1,22 @@
 //! `fwav aero2d`: one 2D unsteady analysis of a plunging/pitching,
 //! optionally deforming section.
 
+use std::io::IsTerminal as _;
 use std::path::PathBuf;
+use std::time::Duration;
 
 use anyhow::{bail, Context, Result};
 use fwav::aero2d::case::{Case, CaseRun, SectionModel, MAX_DURATION_CHORDS, PERIODIC_CHANGE};
 use fwav::aero2d::friction::FWAV_REYNOLDS;
 use fwav::aero2d::motion::Motion;
-use fwav::aero2d::viscous::ViscousSection;
+use fwav::aero2d::viscous::{FlowField, FrameSink, ViscousSection};
 use fwav::aero2d::window::MIN_SHEDDING_PERIODS;
 use fwav::aeroelastic::handoff::SectionFile;
 use fwav::output::flow_field_vtu::{write_flow_field, FlowSeries};
 use fwav::output::history_csv::write_history_csv;
 use fwav::output::section_plot::draw;
 use fwav::output::surface_csv::write_surface_csv;
+use indicatif::{ProgressBar, ProgressStyle};
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -410,6 +413,45 @@ fn print_text(a: &Aero2dArgs, case: &Case, run: &CaseRun) {
     }
 }
 
+/// What a run hands on as it goes: the `--field-series` frames, and how
+/// far it has come, shown on a terminal for the Navier–Stokes model (a
+/// default run of it takes a minute or more, and printed nothing until
+/// its end).
+struct RunOutputs {
+    series: Option<FlowSeries>,
+    bar: Option<ProgressBar>,
+}
+
+impl FrameSink for RunOutputs {
+    fn take(&mut self, frame: &FlowField) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
+        match &mut self.series {
+            Some(series) => series.take(frame),
+            None => Ok(()),
+        }
+    }
+
+    fn reached(&mut self, time: f64, duration: f64) {
+        if let Some(bar) = &self.bar {
+            bar.set_position((RUN_BAR_LENGTH as f64 * time / duration) as u64);
+            bar.set_message(format!("{time:.2} of {duration:.2} chords travelled"));
+        }
+    }
+}
+
+/// The run's progress bar's length: its position is the share of the run
+/// done, in thousandths.
+const RUN_BAR_LENGTH: u64 = 1000;
+
+/// The progress bar of a Navier–Stokes run, redrawn every half second.
+fn run_bar() -> ProgressBar {
+    let bar = ProgressBar::new(RUN_BAR_LENGTH);
+    let style = ProgressStyle::with_template("[{elapsed_precise}] {bar:30} {msg}")
+        .unwrap_or_else(|_| ProgressStyle::default_bar());
+    bar.set_style(style);
+    bar.enable_steady_tick(Duration::from_millis(500));
+    bar
+}
+
 /// Runs the command.
 pub fn run(a: &Aero2dArgs) -> Result<()> {
     check(a)?;
@@ -417,16 +459,22 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
     let case = case(a)?;
     case.check_work()?;
     // The series is written as the run reaches each frame.
-    let mut series = match &a.field_series {
+    let series = match &a.field_series {
         Some(dir) => {
             Some(FlowSeries::create(dir).with_context(|| not_written("--field-series", dir))?)
         }
         None => None,
     };
-    let run = match series.as_mut() {
-        Some(series) => case.run_into(series),
-        None => case.run(),
+    let live = a.model == FlowModel::Ns && std::io::stderr().is_terminal();
+    let mut outputs = RunOutputs {
+        series,
+        bar: live.then(run_bar),
     };
+    let run = case.run_into(&mut outputs);
+    if let Some(bar) = &outputs.bar {
+        bar.finish_and_clear();
+    }
+    let series = outputs.series;
     let run = run.with_context(|| {
         let case = match &a.deformation {
             Some(path) => format!("--section {} --deformation {}", a.section, path.display()),

@@ -1,15 +1,17 @@
 //! `fwav kinematics`: the aerodynamic discipline alone — the flapping
 //! kinematics chosen on 2D analyses of the mid-span section.
 
+use std::io::IsTerminal as _;
 use std::path::PathBuf;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result};
 use fwav::aeroelastic::handoff::SectionFile;
 use fwav::aeroelastic::kinematics::FlappingKinematics;
 use fwav::discipline::cache::EvaluationCache;
-use fwav::discipline::kinematic::{optimize, KinematicResult, Weights};
+use fwav::discipline::kinematic::{optimize_reporting, unconstrained, KinematicResult, Weights};
 use fwav::optimize::nsga2::Nsga2Config;
+use indicatif::{ProgressBar, ProgressStyle};
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -57,14 +59,27 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
         ..Nsga2Config::default()
     };
     let started = Instant::now();
-    let result = optimize(
+    let bar = evaluation_bar(std::io::stderr().is_terminal());
+    let result = optimize_reporting(
         &case,
         &config.design_space(),
         initial,
         weights,
         &nsga,
+        None,
         &cache,
-    )?;
+        &unconstrained,
+        &|done, total| {
+            if let Some(bar) = &bar {
+                bar.set_length(total as u64);
+                bar.set_position(done as u64);
+            }
+        },
+    );
+    if let Some(bar) = &bar {
+        bar.finish_and_clear();
+    }
+    let result = result?;
     let seconds = started.elapsed().as_secs_f64();
     if let Some(path) = &a.cache {
         cache.save(path)?;
@@ -99,6 +114,23 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     print_result(&result);
     println!("{seconds:.1} s, {reused} evaluations reused");
     Ok(())
+}
+
+/// The discipline's progress on a terminal (`live`): a bar of the 2D
+/// evaluations done (those the cache served count) and the time since the
+/// start, redrawn every half second. With `section_model = "ns"` a run is
+/// some twenty evaluations of two to three minutes each, and printed
+/// nothing until its end.
+fn evaluation_bar(live: bool) -> Option<ProgressBar> {
+    live.then(|| {
+        let bar = ProgressBar::new(fwav::discipline::kinematic::EVALUATIONS as u64);
+        let style =
+            ProgressStyle::with_template("[{elapsed_precise}] {bar:30} 2D evaluation {pos}/{len}")
+                .unwrap_or_else(|_| ProgressStyle::default_bar());
+        bar.set_style(style);
+        bar.enable_steady_tick(Duration::from_millis(500));
+        bar
+    })
 }
 
 /// The discipline's run as a person reads it: the initial design, each

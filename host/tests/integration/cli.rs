@@ -1,6 +1,6 @@
 //! The `fwav` program as a user runs it (the README's main command among them).
 
-use crate::program::fwav;
+use crate::program::{fwav, fwav_on_terminal};
 
 #[test]
 fn readme_main_command_checks_the_initial_design() {
@@ -467,6 +467,72 @@ fn kinematics_runs_sharing_a_cache_keep_each_others_evaluations() {
         let again = answer(run(config, &cache));
         assert_eq!(again["result"]["chosen"], first["result"]["chosen"]);
         assert_eq!(entries(&cache), kept);
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The long runs show how far they have come on a terminal, and nothing
+/// off one: `fwav kinematics` a bar of its 2D evaluations (with the
+/// Navier–Stokes model a run is about half an hour), `fwav aero2d --model
+/// ns` the chords travelled. Each bar is cleared at the end, and the
+/// results on standard output are the same as off a terminal.
+#[test]
+fn long_runs_show_their_progress_on_a_terminal() {
+    let dir = std::env::temp_dir().join(format!("fwav-progress-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let config = dir.join("quick.toml");
+    std::fs::write(&config, "[design]\nsection_cycles = 3\n").unwrap();
+    let plate = crate::viscous_field::plate_at_ten_degrees_for("2", &[]);
+    let kinematics = ["kinematics", "--config", config.to_str().unwrap()];
+    // How far each redraw says the run is: the chords before " of", the
+    // evaluations before "/21".
+    let chords = |redraw: &str| -> f64 {
+        let head = &redraw[..redraw.find(" of 2.00").unwrap()];
+        head.rsplit(' ').next().unwrap().parse().unwrap()
+    };
+    let evaluations = |redraw: &str| -> f64 {
+        let head = &redraw[..redraw.find("/21").unwrap()];
+        head.rsplit(' ').next().unwrap().parse().unwrap()
+    };
+    for (args, shown, done) in [
+        (
+            &plate[..],
+            " of 2.00 chords travelled",
+            &chords as &dyn Fn(&str) -> f64,
+        ),
+        (&kinematics[..], " 2D evaluation ", &evaluations),
+    ] {
+        let (out, terminal) = fwav_on_terminal(args, 100);
+        assert!(out.status.success(), "{terminal}");
+        // Redrawn in place: each redraw starts with a carriage return,
+        // and says the run is further on (or as far).
+        let progress: Vec<f64> = terminal
+            .split('\r')
+            .filter(|piece| piece.contains(shown))
+            .map(done)
+            .collect();
+        assert!(
+            progress.len() >= 2 && progress.windows(2).all(|w| w[0] <= w[1]),
+            "{progress:?} in {terminal:?}"
+        );
+        assert!(progress[progress.len() - 1] > progress[0], "{progress:?}");
+        // Cleared at the end.
+        assert!(terminal.trim_end().ends_with("\x1b[2K"), "{terminal:?}");
+        let off = fwav(args);
+        assert!(off.status.success());
+        assert!(
+            off.stderr.is_empty(),
+            "{}",
+            String::from_utf8_lossy(&off.stderr)
+        );
+        let without_time = |text: &[u8]| {
+            String::from_utf8_lossy(text)
+                .lines()
+                .filter(|l| !l.ends_with("evaluations reused"))
+                .map(str::to_string)
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(without_time(&out.stdout), without_time(&off.stdout));
     }
     std::fs::remove_dir_all(&dir).ok();
 }

@@ -11,13 +11,15 @@
 
 use std::io::{BufRead, BufReader, Read};
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, ExitStatus, Stdio};
+use std::process::{Child, ExitStatus, Stdio};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
 use fwav::config::SystemConfig;
 use fwav::mdois::state::RunState;
 use fwav::mdois::{start, RunOptions};
+
+use crate::program::{fwav_command, terminal};
 
 /// The coarse design of the tests and the README (documented in the file).
 const COARSE: &str = include_str!("../../../configs/coarse.toml");
@@ -34,12 +36,6 @@ fn temp(name: &str) -> PathBuf {
 
 fn text(path: &Path) -> String {
     std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
-}
-
-fn fwav_command(args: &[&str]) -> Command {
-    let mut command = Command::new(env!("CARGO_BIN_EXE_fwav"));
-    command.args(args).stdin(Stdio::null());
-    command
 }
 
 /// A finished (or killed) `fwav` invocation.
@@ -442,29 +438,6 @@ fn a_corrupt_state_file_is_named_with_the_way_out() {
         assert!(stderr.contains(part), "{part}: {stderr}");
     }
     std::fs::remove_dir_all(&dir).ok();
-}
-
-/// A pseudo-terminal `columns` wide: its master side, and the slave side
-/// as a file to hand to a child.
-fn terminal(columns: u16) -> (std::fs::File, std::fs::File) {
-    use rustix::pty::{grantpt, openpt, ptsname, unlockpt, OpenptFlags};
-    let master = openpt(OpenptFlags::RDWR | OpenptFlags::NOCTTY).unwrap();
-    grantpt(&master).unwrap();
-    unlockpt(&master).unwrap();
-    let name = ptsname(&master, Vec::new()).unwrap();
-    let slave = std::fs::OpenOptions::new()
-        .read(true)
-        .write(true)
-        .open(name.to_str().unwrap())
-        .unwrap();
-    let size = rustix::termios::Winsize {
-        ws_row: 24,
-        ws_col: columns,
-        ws_xpixel: 0,
-        ws_ypixel: 0,
-    };
-    rustix::termios::tcsetwinsize(&slave, size).unwrap();
-    (std::fs::File::from(master), slave)
 }
 
 /// Item 10: on a terminal the live progress line is redrawn in place

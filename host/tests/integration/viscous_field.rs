@@ -49,7 +49,7 @@ fn plate_at_ten_degrees(extra: &[&str]) -> std::process::Output {
 }
 
 /// The arguments of [`plate_at_ten_degrees`], run for `duration` chords.
-fn plate_at_ten_degrees_for<'a>(duration: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
+pub(crate) fn plate_at_ten_degrees_for<'a>(duration: &'a str, extra: &[&'a str]) -> Vec<&'a str> {
     let mut args = vec![
         "aero2d",
         "--model",

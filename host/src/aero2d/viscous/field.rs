@@ -83,13 +83,22 @@ impl FlowField {
 /// ([`super::ViscousSection::field_frames`],
 /// [`super::ViscousSection::run_into`]): each in time order, the last at
 /// the run's end. A sink that writes each to disk at once keeps the
-/// memory to one flow, and a run that fails keeps the flows it had.
+/// memory to one flow, and a run that fails keeps the flows it had. The
+/// sink is also told how far the run has come ([`Self::reached`]), for a
+/// progress display.
 pub trait FrameSink {
     /// Takes the flow at one instant.
     ///
     /// # Errors
     /// Any: the run stops with [`super::ViscousError::Frame`].
     fn take(&mut self, frame: &FlowField) -> Result<(), Box<dyn std::error::Error + Send + Sync>>;
+
+    /// The run has reached `time` of its `duration` (chords travelled):
+    /// called at each of the run's load samples (200 a period, or 2,000
+    /// a run without one), in time order. Nothing by default.
+    fn reached(&mut self, time: f64, duration: f64) {
+        let _ = (time, duration);
+    }
 }
 
 /// The flows let go as they come: what [`super::ViscousSection::run`]

@@ -268,6 +268,7 @@ impl March {
                 history.cd_friction.push(0.0);
                 self.next += sample;
             }
+            frames.reached(now.0.min(self.duration), self.duration);
         }
         Ok(())
     }
