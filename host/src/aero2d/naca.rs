@@ -177,7 +177,7 @@ impl Naca4 {
 }
 
 /// Why a point file is refused (lines are numbered from 1).
-#[derive(Debug, thiserror::Error, PartialEq, Eq)]
+#[derive(Debug, thiserror::Error, PartialEq)]
 pub enum PointsError {
     /// A value on a line is not a number.
     #[error("line {line}: {text:?} is not a number")]
@@ -210,6 +210,19 @@ pub enum PointsError {
     /// Fewer than three points.
     #[error("{0} points; at least 3 are needed")]
     TooFewPoints(usize),
+    /// The points span far more or less than a chord: a file in other
+    /// units (millimetres, metres, inches).
+    #[error(
+        "the points span {span:.4} (the longest distance between two of them), but a section \
+         file is in chords, spanning about 1 (from {} to {}): divide the coordinates by the \
+         chord in the file's units",
+        CHORD_SPAN.start(),
+        CHORD_SPAN.end()
+    )]
+    NotInChords {
+        /// The longest distance between two points, in the file's units.
+        span: f64,
+    },
     /// The file could not be read.
     #[error("cannot read {path}: {message}")]
     Io {
@@ -284,7 +297,30 @@ pub fn parse_points(text: &str) -> Result<AirfoilPoints, PointsError> {
     if points.len() < 3 {
         return Err(PointsError::TooFewPoints(points.len()));
     }
+    let span = span(&points);
+    if !CHORD_SPAN.contains(&span) {
+        return Err(PointsError::NotInChords { span });
+    }
     Ok(AirfoilPoints { name, points })
+}
+
+/// The spans a section file's points may have, in chords: wide enough for
+/// a section turned or reaching past its chord (a circle of unit radius
+/// spans 2), narrow enough to refuse a file in other units, whose
+/// coefficients would be off by the square of the factor or worse
+/// (before, a NACA 0012 in millimetres was refused by the Navier–Stokes
+/// model for its Reynolds number, and "blew up" in the panel method).
+pub const CHORD_SPAN: std::ops::RangeInclusive<f64> = 0.5..=2.0;
+
+/// The longest distance between two of `points`. Cost `O(n²)`: a
+/// millisecond for a thousand points.
+fn span(points: &[(f64, f64)]) -> f64 {
+    points
+        .iter()
+        .enumerate()
+        .flat_map(|(i, a)| points[i + 1..].iter().map(move |b| (a, b)))
+        .map(|(a, b)| (a.0 - b.0).hypot(a.1 - b.1))
+        .fold(0.0, f64::max)
 }
 
 /// Reads and parses a point file.
@@ -364,6 +400,37 @@ mod tests {
             Err(NacaError::Panels(41))
         );
         assert_eq!(n.points(2, TrailingEdge::Closed), Err(NacaError::Panels(2)));
+    }
+
+    /// A section in millimetres (the NACA 0012 on a 75 mm chord) or
+    /// metres is refused with its span; one in chords, a circle of unit
+    /// radius too, is read.
+    #[test]
+    fn point_files_in_other_units_are_refused() {
+        let n: Naca4 = "0012".parse().unwrap();
+        let points = n.points(40, TrailingEdge::Closed).unwrap();
+        let file = |scale: f64| {
+            points
+                .iter()
+                .map(|(x, y)| format!("{} {}\n", scale * x, scale * y))
+                .collect::<String>()
+        };
+        assert_eq!(parse_points(&file(1.0)).unwrap().points.len(), 41);
+        for scale in [75.0, 0.075] {
+            let e = parse_points(&file(scale)).unwrap_err();
+            let PointsError::NotInChords { span } = e else {
+                panic!("{e:?}")
+            };
+            assert!((span - scale).abs() < 1e-9 * scale, "{span}");
+            assert!(e.to_string().contains("divide the coordinates"), "{e}");
+        }
+        let circle: String = (0..64)
+            .map(|i| {
+                let t = std::f64::consts::TAU * f64::from(i) / 64.0;
+                format!("{} {}\n", t.cos(), t.sin())
+            })
+            .collect();
+        assert!(parse_points(&circle).is_ok());
     }
 
     #[test]
