@@ -16,6 +16,7 @@ mod cli {
     pub mod design;
     pub mod fly;
     pub mod kinematics;
+    pub mod progress;
     pub mod study;
     pub mod system;
     pub mod topology;

@@ -3,7 +3,6 @@
 
 use std::io::IsTerminal as _;
 use std::path::PathBuf;
-use std::time::Duration;
 
 use anyhow::{bail, Context, Result};
 use fwav::aero2d::case::{Case, CaseRun, SectionModel, MAX_DURATION_CHORDS, PERIODIC_CHANGE};
@@ -16,7 +15,7 @@ use fwav::output::flow_field_vtu::{write_flow_field, FlowSeries};
 use fwav::output::history_csv::write_history_csv;
 use fwav::output::section_plot::draw;
 use fwav::output::surface_csv::write_surface_csv;
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::ProgressBar;
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -442,14 +441,9 @@ impl FrameSink for RunOutputs {
 /// done, in thousandths.
 const RUN_BAR_LENGTH: u64 = 1000;
 
-/// The progress bar of a Navier–Stokes run, redrawn every half second.
+/// The progress bar of a Navier–Stokes run.
 fn run_bar() -> ProgressBar {
-    let bar = ProgressBar::new(RUN_BAR_LENGTH);
-    let style = ProgressStyle::with_template("[{elapsed_precise}] {bar:30} {msg}")
-        .unwrap_or_else(|_| ProgressStyle::default_bar());
-    bar.set_style(style);
-    bar.enable_steady_tick(Duration::from_millis(500));
-    bar
+    super::progress::bar(RUN_BAR_LENGTH, "[{elapsed_precise}] {bar:30} {msg}")
 }
 
 /// Runs the command.

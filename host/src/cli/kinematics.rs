@@ -3,15 +3,17 @@
 
 use std::io::IsTerminal as _;
 use std::path::PathBuf;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use anyhow::{Context, Result};
 use fwav::aeroelastic::handoff::SectionFile;
 use fwav::aeroelastic::kinematics::FlappingKinematics;
 use fwav::discipline::cache::EvaluationCache;
-use fwav::discipline::kinematic::{optimize_reporting, unconstrained, KinematicResult, Weights};
+use fwav::discipline::kinematic::{
+    optimize_reporting, unconstrained, KinematicResult, Weights, EVALUATIONS,
+};
 use fwav::optimize::nsga2::Nsga2Config;
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::ProgressBar;
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -69,9 +71,9 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
         None,
         &cache,
         &unconstrained,
-        &|done, total| {
+        // The total is EVALUATIONS, the bar's length.
+        &|done, _| {
             if let Some(bar) = &bar {
-                bar.set_length(total as u64);
                 bar.set_position(done as u64);
             }
         },
@@ -123,13 +125,10 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
 /// nothing until its end.
 fn evaluation_bar(live: bool) -> Option<ProgressBar> {
     live.then(|| {
-        let bar = ProgressBar::new(fwav::discipline::kinematic::EVALUATIONS as u64);
-        let style =
-            ProgressStyle::with_template("[{elapsed_precise}] {bar:30} 2D evaluation {pos}/{len}")
-                .unwrap_or_else(|_| ProgressStyle::default_bar());
-        bar.set_style(style);
-        bar.enable_steady_tick(Duration::from_millis(500));
-        bar
+        super::progress::bar(
+            EVALUATIONS as u64,
+            "[{elapsed_precise}] {bar:30} 2D evaluation {pos}/{len}",
+        )
     })
 }
 

@@ -5,7 +5,6 @@ use std::collections::BTreeMap;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
-use std::time::Duration;
 
 use anyhow::{bail, Context, Result};
 use fwav::study::file::{check_slurm, LocalSettings, SlurmSettings};
@@ -15,7 +14,7 @@ use fwav::study::{
     directory, execute, prepare, reclaim, CaseStatus, Executor, ExecutorKind, Launch, SlurmOptions,
     StudyDir, StudyState,
 };
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::ProgressBar;
 
 /// `fwav study`'s subcommands.
 #[derive(clap::Subcommand)]
@@ -277,14 +276,10 @@ struct Display {
 impl Display {
     fn new(total: usize, live: bool) -> Self {
         let bar = live.then(|| {
-            let bar = ProgressBar::new(total as u64);
-            let style = ProgressStyle::with_template(
+            super::progress::bar(
+                total as u64,
                 "[{elapsed_precise}] {bar:30} {pos}/{len} ended  {wide_msg}",
             )
-            .unwrap_or_else(|_| ProgressStyle::default_bar());
-            bar.set_style(style);
-            bar.enable_steady_tick(Duration::from_millis(500));
-            bar
         });
         Self {
             bar,

@@ -21,8 +21,9 @@
 //!
 //! Several processes may keep their caches in one file (two `fwav
 //! kinematics --cache` runs at once, say): each write, under a lock of the
-//! file, adds the results the file already holds, so none is lost and the
-//! file is never a mix of two writes ([`EvaluationCache::save`]).
+//! file `FILE.lock` beside it, adds the results the file already holds, so
+//! none is lost and the file is never a mix of two writes
+//! ([`EvaluationCache::save`]).
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -128,16 +129,17 @@ impl EvaluationCache {
     fn write(&self, path: &Path) -> Result<(), CacheError> {
         let _lock = lock_file(path)?;
         let on_disk = read_entries(path)?;
-        let text = {
+        let entries = {
             let mut entries = self.lock();
             for (key, result) in on_disk {
                 entries.entry(key).or_insert(result);
             }
-            serde_json::to_string(&CacheFile {
-                format: FORMAT.to_string(),
-                entries: entries.clone(),
-            })
-        }
+            entries.clone()
+        };
+        let text = serde_json::to_string(&CacheFile {
+            format: FORMAT.to_string(),
+            entries,
+        })
         .map_err(|e| CacheError::Format {
             path: path.display().to_string(),
             message: e.to_string(),
@@ -220,7 +222,10 @@ fn read_entries(path: &Path) -> Result<HashMap<String, SectionResult>, CacheErro
 /// (removing it while another process waits on it would let two writers
 /// in). The kernel releases the lock when the returned file is dropped, or
 /// its process ends however it ends. Blocks while another writer holds it:
-/// a write takes milliseconds.
+/// a write takes milliseconds, but a writer stopped mid-write (Ctrl-Z)
+/// holds the others until it goes on. On NFS, where Linux emulates
+/// `flock` by POSIX locks, two caches of one process do not exclude each
+/// other (two processes still do).
 fn lock_file(path: &Path) -> Result<std::fs::File, CacheError> {
     let mut name = path.as_os_str().to_owned();
     name.push(".lock");
@@ -347,6 +352,7 @@ mod tests {
     #[test]
     fn caches_kept_in_one_file_keep_each_others_results() {
         let dir = std::env::temp_dir().join(format!("fwav-cache-shared-{}", std::process::id()));
+        std::fs::remove_dir_all(&dir).ok();
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("evaluations.json");
         let case = SectionCase::fwav_mid_span();
@@ -390,6 +396,7 @@ mod tests {
     #[test]
     fn a_kept_cache_leaves_a_file_that_is_not_a_cache() {
         let dir = std::env::temp_dir().join(format!("fwav-cache-replaced-{}", std::process::id()));
+        std::fs::remove_dir_all(&dir).ok();
         std::fs::create_dir_all(&dir).unwrap();
         let path = dir.join("evaluations.json");
         let kept = EvaluationCache::kept_in(&path).unwrap();

@@ -52,7 +52,7 @@
 //! evaluation runs in parallel (rayon); a failed
 //! one is recorded with its reason and counts as the worst response seen.
 
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Mutex, PoisonError};
 
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -281,7 +281,7 @@ pub fn optimize_reporting(
         case,
         cache,
         progress,
-        done: AtomicUsize::new(0),
+        done: Mutex::new(0),
     };
     let initial_violation = violation(&initial);
     let initial = evaluations.run(initial);
@@ -428,7 +428,11 @@ struct Evaluations<'a> {
     case: &'a SectionCase,
     cache: &'a EvaluationCache,
     progress: &'a (dyn Fn(usize, usize) + Sync),
-    done: AtomicUsize,
+    /// Evaluations done, held while `progress` is told, so that its counts
+    /// arrive in order from the parallel evaluations (counted apart from
+    /// the telling, a thread paused between the two could report 5 after
+    /// another's 6).
+    done: Mutex<usize>,
 }
 
 impl Evaluations<'_> {
@@ -444,8 +448,9 @@ impl Evaluations<'_> {
                 r
             }
         };
-        let n = self.done.fetch_add(1, Ordering::Relaxed) + 1;
-        (self.progress)(n, EVALUATIONS);
+        let mut done = self.done.lock().unwrap_or_else(PoisonError::into_inner);
+        *done += 1;
+        (self.progress)(*done, EVALUATIONS);
         Evaluated { design, result }
     }
 }

@@ -151,7 +151,7 @@ mod tests {
         assert!(text.contains("2 0 3 5"), "the last cell closes the ring");
         let again = write_flow_field(&field, &path);
         assert!(
-            matches!(&again, Err(VtuError::Exists { path: p }) if p == &path),
+            matches!(&again, Err(VtuError::Exists { path: p }) if p == &path.display().to_string()),
             "{again:?}"
         );
         assert_eq!(std::fs::read_to_string(&path).unwrap(), text);

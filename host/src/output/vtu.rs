@@ -59,10 +59,10 @@ pub enum VtuError {
         cells: usize,
     },
     /// A file is where a new one was to be written: it is left as it is.
-    #[error("{} exists, and is left as it is: move it away, or write elsewhere", .path.display())]
+    #[error("{path} exists, and is left as it is: move it away, or write elsewhere")]
     Exists {
         /// The file found there.
-        path: std::path::PathBuf,
+        path: String,
     },
     /// The file could not be written.
     #[error("writing {path}: {source}")]
@@ -333,7 +333,7 @@ pub fn write_new_bytes(path: &Path, bytes: &[u8]) -> Result<(), VtuError> {
         .open(path)
         .map_err(|e| match e.kind() {
             std::io::ErrorKind::AlreadyExists => VtuError::Exists {
-                path: path.to_path_buf(),
+                path: path.display().to_string(),
             },
             _ => io_error(e),
         })?;

@@ -1,5 +1,7 @@
 //! The `fwav` program as a user runs it (the README's main command among them).
 
+use fwav::discipline::kinematic::EVALUATIONS;
+
 use crate::program::{fwav, fwav_on_terminal};
 
 #[test]
@@ -414,6 +416,7 @@ fn kinematics_runs_the_discipline_and_reuses_its_evaluations() {
 #[test]
 fn kinematics_runs_sharing_a_cache_keep_each_others_evaluations() {
     let dir = std::env::temp_dir().join(format!("fwav-kinematics-shared-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
     std::fs::create_dir_all(&dir).unwrap();
     let cache = dir.join("evaluations.json");
     let configs: Vec<_> = [[9.0, 11.0, 13.0], [8.0, 10.0, 12.0]]
@@ -479,19 +482,21 @@ fn kinematics_runs_sharing_a_cache_keep_each_others_evaluations() {
 #[test]
 fn long_runs_show_their_progress_on_a_terminal() {
     let dir = std::env::temp_dir().join(format!("fwav-progress-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
     std::fs::create_dir_all(&dir).unwrap();
     let config = dir.join("quick.toml");
     std::fs::write(&config, "[design]\nsection_cycles = 3\n").unwrap();
     let plate = crate::viscous_field::plate_at_ten_degrees_for("2", &[]);
     let kinematics = ["kinematics", "--config", config.to_str().unwrap()];
     // How far each redraw says the run is: the chords before " of", the
-    // evaluations before "/21".
+    // evaluations before "/21" (of EVALUATIONS).
     let chords = |redraw: &str| -> f64 {
         let head = &redraw[..redraw.find(" of 2.00").unwrap()];
         head.rsplit(' ').next().unwrap().parse().unwrap()
     };
+    let total = format!("/{EVALUATIONS}");
     let evaluations = |redraw: &str| -> f64 {
-        let head = &redraw[..redraw.find("/21").unwrap()];
+        let head = &redraw[..redraw.find(&total).unwrap()];
         head.rsplit(' ').next().unwrap().parse().unwrap()
     };
     for (args, shown, done) in [

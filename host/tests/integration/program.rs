@@ -28,7 +28,7 @@ pub fn fwav_command(args: &[&str]) -> Command {
 /// as a file to hand to a child.
 pub fn terminal(columns: u16) -> (std::fs::File, std::fs::File) {
     use rustix::pty::{grantpt, openpt, ptsname, unlockpt, OpenptFlags};
-    let master = openpt(OpenptFlags::RDWR | OpenptFlags::NOCTTY).unwrap();
+    let master = openpt(OpenptFlags::RDWR | OpenptFlags::NOCTTY | OpenptFlags::CLOEXEC).unwrap();
     grantpt(&master).unwrap();
     unlockpt(&master).unwrap();
     let name = ptsname(&master, Vec::new()).unwrap();
@@ -52,7 +52,10 @@ pub fn terminal(columns: u16) -> (std::fs::File, std::fs::File) {
 /// exit status and standard output, and all the terminal showed.
 pub fn fwav_on_terminal(args: &[&str], columns: u16) -> (Output, String) {
     let (mut master, slave) = terminal(columns);
+    // A terminal that says what it is (indicatif draws nothing on one
+    // whose TERM is unset or "dumb", as CI's may be).
     let child = fwav_command(args)
+        .env("TERM", "xterm")
         .stdout(Stdio::piped())
         .stderr(Stdio::from(slave))
         .spawn()

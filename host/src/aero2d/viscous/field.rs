@@ -94,8 +94,9 @@ pub trait FrameSink {
     fn take(&mut self, frame: &FlowField) -> Result<(), Box<dyn std::error::Error + Send + Sync>>;
 
     /// The run has reached `time` of its `duration` (chords travelled):
-    /// called at each of the run's load samples (200 a period, or 2,000
-    /// a run without one), in time order. Nothing by default.
+    /// called after each step that passes one or more of the run's load
+    /// samples (200 a period, or 2,000 a run without one), in time order.
+    /// Nothing by default.
     fn reached(&mut self, time: f64, duration: f64) {
         let _ = (time, duration);
     }
