@@ -344,7 +344,10 @@ impl Case {
 
     /// Refuses a case of more than [`MAX_STEPS`] steps (a reduced
     /// frequency so small that a period is thousands of chords), with the
-    /// smallest reduced frequency that fits.
+    /// smallest reduced frequency that fits; for the Navier–Stokes model,
+    /// which chooses its own steps and bounds them
+    /// (`ViscousError::TooManySteps`), a run longer than
+    /// [`MAX_DURATION_CHORDS`], as for a `duration`.
     pub fn check_work(&self) -> Result<(), CaseError> {
         if let Some(duration) = self.duration {
             // The viscous model bounds its own steps
@@ -359,6 +362,20 @@ impl Case {
                 });
             }
             return Ok(());
+        }
+        if matches!(self.section, SectionModel::Viscous(_)) {
+            let chords = f64::from(self.cycles) * self.period();
+            if chords <= MAX_DURATION_CHORDS {
+                return Ok(());
+            }
+            return Err(CaseError::TooLong {
+                reduced_frequency: self.motion.reduced_frequency,
+                period: self.period(),
+                cycles: self.cycles,
+                chords,
+                max: MAX_DURATION_CHORDS,
+                min_reduced_frequency: f64::from(self.cycles) * PI / MAX_DURATION_CHORDS,
+            });
         }
         let steps = self.steps();
         if steps <= MAX_STEPS {
@@ -667,6 +684,40 @@ mod tests {
             zero.check_work(),
             Err(CaseError::TooManySteps { .. })
         ));
+    }
+
+    /// The Navier–Stokes model, which takes its own steps, is bounded by
+    /// the chords its cycles travel, as a run of a given duration is: 10
+    /// cycles at k = 0.05 (628 chords; the LDVM's 41,888 steps are
+    /// refused) run, 10 at k = 0.03 (1,047 chords) are refused with the
+    /// smallest reduced frequency that fits, before any step.
+    #[test]
+    fn navier_stokes_cycles_are_bounded_by_the_chords_they_travel() {
+        let ns = |k: f64| Case {
+            cycles: 10,
+            ..plunge(SectionModel::Viscous(ViscousSection::plate(0.04)), 0.05, k)
+        };
+        assert!(ns(0.05).check_work().is_ok());
+        assert!(matches!(
+            Case {
+                section: SectionModel::Flat,
+                ..ns(0.05)
+            }
+            .check_work(),
+            Err(CaseError::TooManySteps { .. })
+        ));
+        let e = ns(0.03).check_work().unwrap_err();
+        let CaseError::TooLong {
+            chords,
+            min_reduced_frequency,
+            ..
+        } = e
+        else {
+            panic!("{e}")
+        };
+        assert!((chords - 10.0 * PI / 0.03).abs() < 1e-9, "{chords}");
+        assert!(ns(min_reduced_frequency * 1.001).check_work().is_ok());
+        assert!(e.to_string().contains("fewer cycles"), "{e}");
     }
 
     /// A thick section beyond the panel method's reach (NACA 0060, built

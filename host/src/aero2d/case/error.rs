@@ -109,6 +109,28 @@ pub enum CaseError {
         /// The smallest reduced frequency that fits for these cycles.
         min_reduced_frequency: f64,
     },
+    /// A Navier–Stokes case whose cycles travel farther than the model
+    /// runs ([`super::MAX_DURATION_CHORDS`], as for a duration).
+    #[error(
+        "reduced frequency {reduced_frequency}: a period is {period:.0} chords travelled, so \
+         {cycles} cycles are {chords:.0} chords, more than the Navier–Stokes model runs ({max}, \
+         as for --duration); use a reduced frequency of at least {min_reduced_frequency:.3} or \
+         fewer cycles"
+    )]
+    TooLong {
+        /// The reduced frequency.
+        reduced_frequency: f64,
+        /// The period, chords travelled.
+        period: f64,
+        /// Cycles asked.
+        cycles: u32,
+        /// Chords the cycles travel.
+        chords: f64,
+        /// The most allowed, chords travelled.
+        max: f64,
+        /// The smallest reduced frequency that fits for these cycles.
+        min_reduced_frequency: f64,
+    },
     /// The solution stopped being finite.
     #[error(
         "the solution diverged: {quantity} is not finite at t = {time:.3} chords travelled; \
