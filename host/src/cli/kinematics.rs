@@ -1,6 +1,7 @@
 //! `fwav kinematics`: the aerodynamic discipline alone — the flapping
 //! kinematics chosen on 2D analyses of the mid-span section.
 
+use std::collections::HashSet;
 use std::io::IsTerminal as _;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -8,10 +9,11 @@ use std::time::Instant;
 use anyhow::{Context, Result};
 use fwav::aeroelastic::handoff::SectionFile;
 use fwav::aeroelastic::kinematics::FlappingKinematics;
-use fwav::discipline::cache::EvaluationCache;
+use fwav::discipline::cache::{key, EvaluationCache};
 use fwav::discipline::kinematic::{
     optimize_reporting, unconstrained, KinematicResult, Weights, EVALUATIONS,
 };
+use fwav::discipline::section::SectionCase;
 use fwav::optimize::nsga2::Nsga2Config;
 use indicatif::ProgressBar;
 
@@ -50,7 +52,12 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
         Some(path) => EvaluationCache::kept_in(path)?,
         None => EvaluationCache::new(),
     };
-    let reused = cache.len();
+    // What the file held before the run: the evaluations it reuses are
+    // counted against it (the file may also hold other runs' results).
+    let held = match &a.cache {
+        Some(path) => EvaluationCache::load(path)?,
+        None => EvaluationCache::new(),
+    };
     let initial = config.kinematics();
     let weights = Weights {
         thrust: config.design.thrust_weight,
@@ -83,6 +90,7 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     }
     let result = result?;
     let seconds = started.elapsed().as_secs_f64();
+    let reused = reused(&result, &case, &held);
     if let Some(path) = &a.cache {
         cache.save(path)?;
     }
@@ -116,6 +124,17 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     print_result(&result);
     println!("{seconds:.1} s, {reused} evaluations reused");
     Ok(())
+}
+
+/// How many of the distinct designs `result` evaluated `held` (the cache
+/// as the run found it) already had.
+fn reused(result: &KinematicResult, case: &SectionCase, held: &EvaluationCache) -> usize {
+    result
+        .evaluations()
+        .filter(|e| held.get(case, &e.design).is_some())
+        .map(|e| key(case, &e.design))
+        .collect::<HashSet<_>>()
+        .len()
 }
 
 /// The discipline's progress on a terminal (`live`): a bar of the 2D

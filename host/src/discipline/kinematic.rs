@@ -150,6 +150,18 @@ pub struct KinematicResult {
     pub section: Option<ModelledSection>,
 }
 
+impl KinematicResult {
+    /// Every direct evaluation the run made (from its cache or not): the
+    /// initial design's, the array's rows and the candidates'
+    /// confirmations. A design may appear twice (the best row is a
+    /// candidate too).
+    pub fn evaluations(&self) -> impl Iterator<Item = &Evaluated> {
+        std::iter::once(&self.initial)
+            .chain(&self.runs)
+            .chain(self.candidates.iter().map(|c| &c.confirmation))
+    }
+}
+
 /// Why the discipline stopped.
 #[derive(Debug, thiserror::Error)]
 pub enum KinematicError {

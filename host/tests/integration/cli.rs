@@ -465,11 +465,26 @@ fn kinematics_runs_sharing_a_cache_keep_each_others_evaluations() {
     let kept = entries(&cache);
     assert!(kept.as_object().unwrap().len() >= 36, "{kept}");
     // Each run again: all it evaluates is in the file (nothing is added),
-    // and it answers as before.
+    // it answers as before, and it counts as reused its own evaluations,
+    // not the file's (which holds the other run's too).
     for (config, first) in configs.iter().zip(&answers) {
         let again = answer(run(config, &cache));
         assert_eq!(again["result"]["chosen"], first["result"]["chosen"]);
         assert_eq!(entries(&cache), kept);
+        let result = &again["result"];
+        let own: std::collections::HashSet<String> = std::iter::once(&result["initial"])
+            .chain(result["runs"].as_array().unwrap())
+            .chain(
+                result["candidates"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|c| &c["confirmation"]),
+            )
+            .map(|e| e["design"].to_string())
+            .collect();
+        assert_eq!(again["evaluations_reused"], own.len());
+        assert!(own.len() < kept.as_object().unwrap().len());
     }
     std::fs::remove_dir_all(&dir).ok();
 }
