@@ -48,14 +48,15 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     if let Some(path) = &a.section {
         case.deformation = SectionFile::read(path)?.samples;
     }
-    let cache = match &a.cache {
-        Some(path) => EvaluationCache::kept_in(path)?,
-        None => EvaluationCache::new(),
-    };
-    // What the file held before the run: the evaluations it reuses are
-    // counted against it (the file may also hold other runs' results).
+    // What the file held before the run, read first: the evaluations the
+    // run reuses are counted against it (the file may also hold other
+    // runs' results, and other runs may add to it as this one goes).
     let held = match &a.cache {
         Some(path) => EvaluationCache::load(path)?,
+        None => EvaluationCache::new(),
+    };
+    let cache = match &a.cache {
+        Some(path) => EvaluationCache::kept_in(path)?,
         None => EvaluationCache::new(),
     };
     let initial = config.kinematics();
