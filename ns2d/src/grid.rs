@@ -145,6 +145,29 @@ impl OGrid {
         j * self.nt + k
     }
 
+    /// The fluid's velocity at node `(j, k)` of the streamfunction `psi`
+    /// (body axes): `u + iv = -i (ψ_ξ + i ψ_θ) / conj(∂z/∂ξ)`, `ψ_θ`
+    /// central round the ring, `ψ_ξ = ψ_η / g'` central in the uniform
+    /// radial coordinate `η` and one-sided (second order) on the wall and
+    /// outer rings. Cost `O(1)`.
+    #[must_use]
+    pub fn velocity(&self, psi: &[f64], j: usize, k: usize) -> Complex64 {
+        let (nt, nr) = (self.nt, self.nr);
+        let at = |jj: usize, kk: usize| psi[self.at(jj, kk)];
+        let psi_eta = if j == 0 {
+            (-3.0 * at(0, k) + 4.0 * at(1, k) - at(2, k)) / (2.0 * self.d_eta)
+        } else if j == nr - 1 {
+            (3.0 * at(j, k) - 4.0 * at(j - 1, k) + at(j - 2, k)) / (2.0 * self.d_eta)
+        } else {
+            (at(j + 1, k) - at(j - 1, k)) / (2.0 * self.d_eta)
+        };
+        let psi_xi = psi_eta / self.slope[j];
+        let (before, after) = ((k + nt - 1) % nt, (k + 1) % nt);
+        let psi_theta = (at(j, after) - at(j, before)) / (2.0 * self.d_theta);
+        -Complex64::new(0.0, 1.0) * Complex64::new(psi_xi, psi_theta)
+            / self.dz_dxi[self.at(j, k)].conj()
+    }
+
     /// Number of nodes.
     #[must_use]
     pub fn len(&self) -> usize {

@@ -105,25 +105,12 @@ impl<M: Motion> Flow<M> {
         sum / nt as f64
     }
 
-    /// The fluid's velocity at the outer ring's nodes (body axes):
-    /// `u = -i (ψ_ξ + i ψ_θ) / conj(z_ξ)`, `ψ_ξ` one-sided (second order
-    /// in `η`), `ψ_θ` central.
+    /// The fluid's velocity at the outer ring's nodes (body axes;
+    /// [`crate::OGrid::velocity`], `ψ_ξ` one-sided there).
     fn outer_ring_velocity(&self) -> Vec<Complex64> {
         let g = &self.grid;
-        let (nt, nr) = (g.nt, g.nr);
-        let psi = &self.psi;
-        let j = nr - 1;
-        (0..nt)
-            .map(|k| {
-                let at = |jj: usize, kk: usize| psi[g.at(jj, kk)];
-                let psi_eta =
-                    (3.0 * at(j, k) - 4.0 * at(j - 1, k) + at(j - 2, k)) / (2.0 * g.d_eta);
-                let psi_xi = psi_eta / g.slope[j];
-                let (before, after) = ((k + nt - 1) % nt, (k + 1) % nt);
-                let psi_theta = (at(j, after) - at(j, before)) / (2.0 * g.d_theta);
-                -Complex64::new(0.0, 1.0) * Complex64::new(psi_xi, psi_theta)
-                    / g.dz_dxi[g.at(j, k)].conj()
-            })
+        (0..g.nt)
+            .map(|k| g.velocity(&self.psi, g.nr - 1, k))
             .collect()
     }
 }

@@ -37,10 +37,9 @@ pub struct FlowField {
     pub streamfunction: Vec<f64>,
     /// The fluid's velocity at each node relative to the air at rest far
     /// away, `(u, v)` in these axes: `u + iv = -i (ψ_ξ + i ψ_θ) /
-    /// conj(∂z/∂ξ)` on the grid's conformal map, `ψ_θ` central round the
-    /// ring, `ψ_ξ` central in the grid's uniform radial coordinate (one
-    /// sided, second order, on the wall and outer rings), then turned
-    /// from the solver's axes into these.
+    /// conj(∂z/∂ξ)` on the grid's conformal map (`fwav_ns2d::OGrid::velocity`,
+    /// the formula the solver's outer ring takes), turned from the
+    /// solver's axes into these.
     pub velocity: Vec<(f64, f64)>,
 }
 
@@ -140,21 +139,10 @@ fn velocity(
         along(Complex64::new(1.0, 0.0)),
         along(Complex64::new(0.0, 1.0)),
     );
-    let at = |j: usize, k: usize| psi[grid.at(j, k)];
     let mut out = Vec::with_capacity(nt * nr);
     for j in 0..nr {
         for k in 0..nt {
-            let psi_eta = if j == 0 {
-                (-3.0 * at(0, k) + 4.0 * at(1, k) - at(2, k)) / (2.0 * grid.d_eta)
-            } else if j == nr - 1 {
-                (3.0 * at(j, k) - 4.0 * at(j - 1, k) + at(j - 2, k)) / (2.0 * grid.d_eta)
-            } else {
-                (at(j + 1, k) - at(j - 1, k)) / (2.0 * grid.d_eta)
-            };
-            let (before, after) = ((k + nt - 1) % nt, (k + 1) % nt);
-            let psi_theta = (at(j, after) - at(j, before)) / (2.0 * grid.d_theta);
-            let w = -Complex64::new(0.0, 1.0) * Complex64::new(psi_eta / grid.slope[j], psi_theta)
-                / grid.dz_dxi[grid.at(j, k)].conj();
+            let w = grid.velocity(psi, j, k);
             out.push((w.re * ex.0 + w.im * ey.0, w.re * ex.1 + w.im * ey.1));
         }
     }
