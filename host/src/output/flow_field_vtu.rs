@@ -17,23 +17,34 @@ use crate::aero2d::viscous::{FlowField, FrameSink};
 /// # Errors
 /// [`VtuError`]: the file exists or could not be written.
 pub fn write_flow_field(field: &FlowField, path: &Path) -> Result<(), VtuError> {
-    let points: Vec<[f64; 3]> = field.points.iter().map(|&(x, y)| [x, y, 0.0]).collect();
-    let velocity = velocity_vectors(field);
-    vtu::write_new(
-        path,
-        &points,
-        &field.quads(),
-        &[
-            Field::PointScalar("vorticity", &field.vorticity),
-            Field::PointScalar("streamfunction", &field.streamfunction),
-            Field::PointVector("velocity", &velocity),
-        ],
-    )
+    let arrays = FlowArrays::of(field);
+    vtu::write_new(path, &arrays.points, &field.quads(), &arrays.fields(field))
 }
 
-/// [`FlowField::velocity`] as ParaView's vectors (`z` = 0).
-fn velocity_vectors(field: &FlowField) -> Vec<[f64; 3]> {
-    field.velocity.iter().map(|&(u, v)| [u, v, 0.0]).collect()
+/// A flow's points and velocity as ParaView's 3-vectors (`z` = 0), for
+/// the arrays every flow file holds: the same in `--field` and in each
+/// frame of a series.
+struct FlowArrays {
+    points: Vec<[f64; 3]>,
+    velocity: Vec<[f64; 3]>,
+}
+
+impl FlowArrays {
+    fn of(field: &FlowField) -> Self {
+        Self {
+            points: field.points.iter().map(|&(x, y)| [x, y, 0.0]).collect(),
+            velocity: field.velocity.iter().map(|&(u, v)| [u, v, 0.0]).collect(),
+        }
+    }
+
+    /// The point arrays of `field` (of which these are the vectors).
+    fn fields<'a>(&'a self, field: &'a FlowField) -> [Field<'a>; 3] {
+        [
+            Field::PointScalar("vorticity", &field.vorticity),
+            Field::PointScalar("streamfunction", &field.streamfunction),
+            Field::PointVector("velocity", &self.velocity),
+        ]
+    }
 }
 
 /// The file name of frame `k` of a series ([`FlowSeries`]).
@@ -80,17 +91,8 @@ impl FlowSeries {
     /// [`VtuError`]: the frame's file exists or a file could not be
     /// written.
     pub fn write(&mut self, frame: &FlowField) -> Result<(), VtuError> {
-        let points: Vec<[f64; 3]> = frame.points.iter().map(|&(x, y)| [x, y, 0.0]).collect();
-        let velocity = velocity_vectors(frame);
-        let bytes = vtu::quads_to_binary(
-            &points,
-            &frame.quads(),
-            &[
-                Field::PointScalar("vorticity", &frame.vorticity),
-                Field::PointScalar("streamfunction", &frame.streamfunction),
-                Field::PointVector("velocity", &velocity),
-            ],
-        )?;
+        let arrays = FlowArrays::of(frame);
+        let bytes = vtu::quads_to_binary(&arrays.points, &frame.quads(), &arrays.fields(frame))?;
         let name = series_file(self.entries.len());
         vtu::write_new_bytes(&self.dir.join(&name), &bytes)?;
         self.entries.push((frame.time, name));
