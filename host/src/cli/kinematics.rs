@@ -48,17 +48,14 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     if let Some(path) = &a.section {
         case.deformation = SectionFile::read(path)?.samples;
     }
-    // What the file held before the run, read first: the evaluations the
-    // run reuses are counted against it (the file may also hold other
-    // runs' results, and other runs may add to it as this one goes).
-    let held = match &a.cache {
-        Some(path) => EvaluationCache::load(path)?,
-        None => EvaluationCache::new(),
-    };
     let cache = match &a.cache {
         Some(path) => EvaluationCache::kept_in(path)?,
         None => EvaluationCache::new(),
     };
+    // What the file held before the run: the evaluations the run reuses
+    // are counted against it (the file may also hold other runs' results,
+    // and other runs may add to it as this one goes).
+    let held = cache.keys();
     let initial = config.kinematics();
     let weights = Weights {
         thrust: config.design.thrust_weight,
@@ -127,13 +124,13 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     Ok(())
 }
 
-/// How many of the distinct designs `result` evaluated `held` (the cache
-/// as the run found it) already had.
-fn reused(result: &KinematicResult, case: &SectionCase, held: &EvaluationCache) -> usize {
+/// How many of the distinct designs `result` evaluated `held` (the
+/// cache's keys as the run found them) already had.
+fn reused(result: &KinematicResult, case: &SectionCase, held: &HashSet<String>) -> usize {
     result
         .evaluations()
-        .filter(|e| held.get(case, &e.design).is_some())
         .map(|e| key(case, &e.design))
+        .filter(|k| held.contains(k))
         .collect::<HashSet<_>>()
         .len()
 }

@@ -155,6 +155,11 @@ impl EvaluationCache {
         self.lock().len()
     }
 
+    /// The keys of the stored evaluations ([`key`]), as they are now.
+    pub fn keys(&self) -> std::collections::HashSet<String> {
+        self.lock().keys().cloned().collect()
+    }
+
     /// Whether nothing is stored.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
