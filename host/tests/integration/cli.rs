@@ -2,7 +2,7 @@
 
 use fwav::discipline::kinematic::EVALUATIONS;
 
-use crate::program::{fwav, fwav_on_terminal};
+use crate::program::{fwav, fwav_command, fwav_on_terminal};
 
 #[test]
 fn readme_main_command_checks_the_initial_design() {
@@ -436,15 +436,18 @@ fn kinematics_runs_sharing_a_cache_keep_each_others_evaluations() {
         })
         .collect();
     let run = |config: &std::path::Path, cache: &std::path::Path| {
-        std::process::Command::new(env!("CARGO_BIN_EXE_fwav"))
-            .args(["kinematics", "--json", "--config"])
-            .arg(config)
-            .arg("--cache")
-            .arg(cache)
-            .stdout(std::process::Stdio::piped())
-            .stderr(std::process::Stdio::piped())
-            .spawn()
-            .expect("the fwav binary runs")
+        fwav_command(&[
+            "kinematics",
+            "--json",
+            "--config",
+            config.to_str().unwrap(),
+            "--cache",
+            cache.to_str().unwrap(),
+        ])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the fwav binary runs")
     };
     let answer = |child: std::process::Child| {
         let out = child.wait_with_output().unwrap();
