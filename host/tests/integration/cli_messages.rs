@@ -7,9 +7,9 @@
 
 use std::os::unix::process::ExitStatusExt as _;
 use std::path::PathBuf;
-use std::process::{Command, ExitStatus, Output, Stdio};
+use std::process::{ExitStatus, Output, Stdio};
 
-use crate::program::fwav;
+use crate::program::{fwav, fwav_command};
 
 /// Runs fwav with its standard output (and, with `stderr_too`, its
 /// standard error) a pipe whose reading end is already closed, as in
@@ -18,11 +18,8 @@ use crate::program::fwav;
 fn into_closed_pipe(args: &[&str], stderr_too: bool) -> (ExitStatus, String) {
     let (reader, writer) = os_pipe::pipe().unwrap();
     drop(reader);
-    let mut command = Command::new(env!("CARGO_BIN_EXE_fwav"));
-    command
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-        .stdout(writer.try_clone().unwrap());
+    let mut command = fwav_command(args);
+    command.stdout(writer.try_clone().unwrap());
     if stderr_too {
         command.stderr(writer);
     } else {

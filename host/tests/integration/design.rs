@@ -4,7 +4,6 @@
 //! configurations naming the field.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 use std::time::{Duration, Instant};
 
 use fwav::config::SystemConfig;
@@ -13,7 +12,7 @@ use fwav::mdois::state::RunState;
 use fwav::mdois::summary::Summary;
 use fwav::mdois::{resume, start, DesignError, Outcome, RunOptions, Stage};
 
-use crate::program::fwav;
+use crate::program::{fwav, fwav_command};
 
 /// The coarse design of the tests and the README (documented in the file).
 const COARSE: &str = include_str!("../../../configs/coarse.toml");
@@ -335,8 +334,7 @@ fn killed_design_resumes_with_the_same_answer(reference: &[f64]) {
     let config = dir.join("coarse.toml");
     std::fs::write(&config, COARSE).unwrap();
     let out = dir.join("run");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_fwav"))
-        .args(["design", "--quiet", "--config"])
+    let mut child = fwav_command(&["design", "--quiet", "--config"])
         .arg(&config)
         .arg("--out")
         .arg(&out)

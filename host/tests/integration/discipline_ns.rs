@@ -523,8 +523,8 @@ fn kinematics_command_says_the_ns_section_deforms() {
     std::fs::write(&config_file, toml).unwrap();
 
     let run = |json: bool| {
-        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_fwav"));
-        command.arg("kinematics").arg("--config").arg(&config_file);
+        let mut command = crate::program::fwav_command(&["kinematics", "--config"]);
+        command.arg(&config_file);
         command.arg("--section").arg(&section_file);
         command.arg("--cache").arg(&cache_file);
         if json {

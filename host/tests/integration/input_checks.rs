@@ -3,10 +3,10 @@
 //! real files, and what they print and leave behind checked.
 
 use std::path::PathBuf;
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 use std::time::{Duration, Instant};
 
-use crate::program::fwav;
+use crate::program::{fwav, fwav_command};
 
 /// A fresh scratch directory for one test.
 fn scratch(name: &str) -> PathBuf {
@@ -232,12 +232,10 @@ fn design_with_yes_starts_a_costly_run() {
     )
     .unwrap();
     let out_dir = dir.join("run");
-    let mut child = Command::new(env!("CARGO_BIN_EXE_fwav"))
-        .args(["design", "--quiet", "--yes", "--config"])
+    let mut child = fwav_command(&["design", "--quiet", "--yes", "--config"])
         .arg(&config)
         .arg("--out")
         .arg(&out_dir)
-        .stdin(Stdio::null())
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()

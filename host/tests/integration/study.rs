@@ -22,12 +22,14 @@
 mod cluster;
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::{Output, Stdio};
 use std::time::{Duration, Instant};
 
 use fwav::mdois::state::{RunState, Stage};
 
 use cluster::Cluster;
+
+use crate::program::fwav_command;
 
 /// The coarse design of the tests and the README.
 const COARSE: &str = include_str!("../../../configs/coarse.toml");
@@ -73,8 +75,7 @@ fn study_files(name: &str, studies: &[(&str, &str)]) -> PathBuf {
 }
 
 fn fwav(args: &[&str], conf: Option<&Path>) -> Output {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_fwav"));
-    c.args(args).stdin(Stdio::null());
+    let mut c = fwav_command(args);
     if let Some(conf) = conf {
         c.env("SLURM_CONF", conf);
     }
@@ -274,14 +275,12 @@ fn slurm_study(dir: &Path, cluster: &Cluster) -> PathBuf {
     let out = dir.join("slurm");
     let conf = cluster.conf();
     let clock = Instant::now();
-    let follower = Command::new(env!("CARGO_BIN_EXE_fwav"))
-        .args(["study", "run"])
+    let follower = fwav_command(&["study", "run"])
         .arg(dir.join("study.toml"))
         .arg("--out")
         .arg(&out)
         .args(["--executor", "slurm", "--cpus-per-task", "1", "--poll", "1"])
         .env("SLURM_CONF", conf)
-        .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
@@ -370,12 +369,10 @@ fn slurm_study(dir: &Path, cluster: &Cluster) -> PathBuf {
     // runs on, a second resume is refused while the job holds the case,
     // and once the job has ended a resume settles the study from the
     // case's files alone.
-    let mut follower = Command::new(env!("CARGO_BIN_EXE_fwav"))
-        .args(["study", "resume"])
+    let mut follower = fwav_command(&["study", "resume"])
         .arg(&out)
         .args(["--poll", "1"])
         .env("SLURM_CONF", conf)
-        .stdin(Stdio::null())
         .stdout(Stdio::null())
         .stderr(Stdio::null())
         .spawn()
