@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::optimize::doe::{l18_quadratic_columns, OrthogonalArray};
 
-use super::kinematic::{method, KinematicError};
+use super::kinematic::KinematicError;
 
 /// The four design variables and their three levels (physical units:
 /// Hz and degrees, as a person sets them), low, middle (the initial
@@ -53,7 +53,7 @@ impl DesignSpace {
     /// ([`l18_quadratic_columns`]), in the array's row order.
     ///
     /// # Errors
-    /// [`KinematicError::Method`] if the array cannot be laid out (not for
+    /// [`KinematicError::Array`] if the array cannot be laid out (not for
     /// a space of three levels a factor).
     pub fn l18_designs(&self) -> Result<Vec<FlappingKinematics>, KinematicError> {
         Ok(self.l18_layout()?.2)
@@ -65,9 +65,9 @@ impl DesignSpace {
         &self,
     ) -> Result<(OrthogonalArray, Vec<usize>, Vec<FlappingKinematics>), KinematicError> {
         let array = OrthogonalArray::l18();
-        let columns = l18_quadratic_columns(4).map_err(|e| method(&e))?;
+        let columns = l18_quadratic_columns(4)?;
         let levels: Vec<Vec<f64>> = self.levels().iter().map(|l| l.to_vec()).collect();
-        let plan = array.design(&columns, &levels).map_err(|e| method(&e))?;
+        let plan = array.design(&columns, &levels)?;
         let designs = plan
             .iter()
             .map(|x| FlappingKinematics::from_degrees([x[0], x[1], x[2], x[3]]))

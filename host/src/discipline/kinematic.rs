@@ -58,9 +58,9 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use crate::aeroelastic::kinematics::FlappingKinematics;
-use crate::optimize::anom::{Anom, Goal};
-use crate::optimize::doe::OrthogonalArray;
-use crate::optimize::nsga2::{minimize, Bounds, Evaluation, Nsga2Config};
+use crate::optimize::anom::{Anom, AnomError, Goal};
+use crate::optimize::doe::{DoeError, OrthogonalArray};
+use crate::optimize::nsga2::{minimize, Bounds, Evaluation, Nsga2Config, Nsga2Error};
 use crate::optimize::rsm::{fit_reduced, ReduceOptions, ReducedFit, RsmError};
 
 pub use super::design_space::DesignSpace;
@@ -185,9 +185,44 @@ pub enum KinematicError {
         /// Net efficiency.
         efficiency_net: f64,
     },
-    /// Design of experiments, ANOM, RSM or NSGA-II refused their input.
-    #[error("{0}")]
-    Method(String),
+    /// The L18 array could not be laid out over the design space's
+    /// levels.
+    #[error("the L18 array over the design space: {0}")]
+    Array(#[from] DoeError),
+    /// Every row of the L18 array failed its 2D analysis, so there is
+    /// nothing to compare or fit.
+    #[error(
+        "every one of the {rows} L18 rows' 2D analyses failed, the first with: {first}; \
+         bring the design space's levels within what the section model can run"
+    )]
+    EveryRowFailed {
+        /// The rows run.
+        rows: usize,
+        /// Why the first row failed (as recorded, also in a cache).
+        first: String,
+    },
+    /// ANOM refused the rows' combined objectives.
+    #[error("ANOM of the L18 rows' combined objective: {0}")]
+    Anom(#[from] AnomError),
+    /// A response surface could not be fitted to the rows.
+    #[error("the {response} response surface over the L18 rows: {source}")]
+    Surface {
+        /// The response: `"thrust"` or `"efficiency"`.
+        response: &'static str,
+        /// Why the fit failed.
+        source: RsmError,
+    },
+    /// NSGA-II refused its bounds or settings.
+    #[error("NSGA-II on the response surfaces: {0}")]
+    Search(#[from] Nsga2Error),
+    /// Every design on the response surfaces' front violates the
+    /// actuator's limits.
+    #[error(
+        "NSGA-II found no design on the response surfaces that the actuator can fly with its \
+         reserve: widen the design space toward lower frequencies and amplitudes, or give the \
+         actuator more reach (gear ratio, spring, battery)"
+    )]
+    NothingFlyable,
 }
 
 /// The combined objective's reference: the net thrust coefficient and net
@@ -319,11 +354,11 @@ pub fn optimize_reporting(
                 .total_cmp(&run_violations[a])
                 .then(scores[a].total_cmp(&scores[b]))
         })
-        .ok_or_else(|| KinematicError::Method("no runs".into()))?;
+        .ok_or(KinematicError::Array(DoeError::Empty))?;
 
     // 2. ANOM on the combined objective: its best levels if feasible,
     // else the feasible level combination it predicts best.
-    let anom = Anom::new(&array.array, &array.columns, &scores).map_err(|e| method(&e))?;
+    let anom = Anom::new(&array.array, &array.columns, &scores)?;
     let (anom_design, anom_prediction) = feasible_levels(&anom, space, violation)?;
 
     // 3. Response surfaces in coded levels, NSGA-II on them.
@@ -401,17 +436,12 @@ fn feasible_levels(
         if violation(&d) != 0.0 {
             continue;
         }
-        let y = anom.predict(&levels).map_err(|e| method(&e))?;
+        let y = anom.predict(&levels)?;
         if pick.is_none_or(|(_, p)| y > p) {
             pick = Some((d, y));
         }
     }
     Ok(pick.unwrap_or((best, best_prediction)))
-}
-
-/// A method's refusal as the discipline's error.
-pub(super) fn method(e: &dyn std::fmt::Display) -> KinematicError {
-    KinematicError::Method(e.to_string())
 }
 
 /// The values with each missing one (a failed run) replaced by the worst
@@ -521,12 +551,33 @@ struct ArrayRuns {
 
 impl ArrayRuns {
     /// Lays out the array over `space` and evaluates its rows in parallel.
+    ///
+    /// # Errors
+    /// [`KinematicError::Array`] if the array cannot be laid out,
+    /// [`KinematicError::EveryRowFailed`] if no row's analysis succeeded.
     fn evaluate(space: &DesignSpace, evaluations: &Evaluations) -> Result<Self, KinematicError> {
         let (array, columns, designs) = space.l18_layout()?;
         let runs: Vec<Evaluated> = designs
             .into_par_iter()
             .map(|design| evaluations.run(design))
             .collect();
+        Self::new(array, columns, runs)
+    }
+
+    /// The array's `runs`, refused if every one failed.
+    fn new(
+        array: OrthogonalArray,
+        columns: Vec<usize>,
+        runs: Vec<Evaluated>,
+    ) -> Result<Self, KinematicError> {
+        if let Some(Err(first)) = runs.first().map(|e| &e.result) {
+            if runs.iter().all(|e| e.result.is_err()) {
+                return Err(KinematicError::EveryRowFailed {
+                    rows: runs.len(),
+                    first: first.clone(),
+                });
+            }
+        }
         Ok(Self {
             array,
             columns,
@@ -580,10 +631,13 @@ impl Surfaces {
                 .map(|e| e.result.as_ref().ok().map(|r| r.efficiency_net))
                 .collect(),
         );
-        let ct_fit = fit_reduced(&coded, &ct, ReduceOptions::default()).map_err(|e| method(&e))?;
-        let eta_fit =
-            fit_reduced(&coded, &eta, ReduceOptions::default()).map_err(|e| method(&e))?;
-        let bounds = Bounds::new(vec![-1.0; 4], vec![1.0; 4]).map_err(|e| method(&e))?;
+        let surface = |response: &'static str, values: &[f64]| {
+            fit_reduced(&coded, values, ReduceOptions::default())
+                .map_err(|source| KinematicError::Surface { response, source })
+        };
+        let ct_fit = surface("thrust", &ct)?;
+        let eta_fit = surface("efficiency", &eta)?;
+        let bounds = Bounds::new(vec![-1.0; 4], vec![1.0; 4])?;
         let front = minimize(&bounds, 2, nsga, |x: &[f64]| {
             let c = ct_fit.surface.predict(x)?;
             let e = eta_fit.surface.predict(x)?;
@@ -591,8 +645,7 @@ impl Surfaces {
                 objectives: vec![-c, -e],
                 violation: (objective.violation)(&space.decode(x)),
             })
-        })
-        .map_err(|e| method(&e))?
+        })?
         .front;
         let knee = front
             .iter()
@@ -601,14 +654,7 @@ impl Surfaces {
                     .predicted(&a.objectives)
                     .total_cmp(&objective.predicted(&b.objectives))
             })
-            .ok_or_else(|| {
-                KinematicError::Method(
-                    "NSGA-II found no design on the response surfaces that the actuator can fly \
-                     with its reserve: widen the design space toward lower frequencies and \
-                     amplitudes, or give the actuator more reach (gear ratio, spring, battery)"
-                        .into(),
-                )
-            })?;
+            .ok_or(KinematicError::NothingFlyable)?;
         let knee_design = space.decode(&knee.x);
         let knee_prediction = objective.predicted(&knee.objectives);
         let pareto = front
@@ -731,6 +777,92 @@ mod tests {
         assert_eq!(
             objective.margin(&at_reference, SectionFlowModel::Ldvm.window_scatter(2)),
             0.0
+        );
+    }
+
+    /// The L18 rows of the built-in design space, each row's result
+    /// `result(i)`.
+    fn rows(result: impl Fn(usize) -> Result<SectionResult, String>) -> Vec<Evaluated> {
+        let (_, _, designs) = DesignSpace::fwav().l18_layout().unwrap();
+        designs
+            .into_iter()
+            .enumerate()
+            .map(|(i, design)| Evaluated {
+                design,
+                result: result(i),
+            })
+            .collect()
+    }
+
+    /// A row's result of efficiency `0.04 + 0.001 i` and thrust `thrust`.
+    fn row(i: usize, thrust: f64) -> SectionResult {
+        let efficiency = 0.04 + 0.001 * i as f64;
+        SectionResult {
+            reduced_frequency: 0.7,
+            ct: thrust,
+            ct_net: thrust,
+            cp: thrust / efficiency,
+            efficiency,
+            efficiency_net: efficiency,
+            ct_change: 0.0,
+        }
+    }
+
+    /// An array whose rows all failed is refused naming the first row's
+    /// reason; one row that ran is enough to go on.
+    #[test]
+    fn an_array_whose_rows_all_failed_says_why_the_first_did() {
+        let (array, columns, _) = DesignSpace::fwav().l18_layout().unwrap();
+        let failed = |i: usize| Err(format!("row {i} refused"));
+        match ArrayRuns::new(array.clone(), columns.clone(), rows(failed)) {
+            Err(e @ KinematicError::EveryRowFailed { rows: 18, .. }) => assert_eq!(
+                e.to_string(),
+                "every one of the 18 L18 rows' 2D analyses failed, the first with: row 0 \
+                 refused; bring the design space's levels within what the section model can run"
+            ),
+            Err(e) => panic!("{e}"),
+            Ok(_) => panic!("rows that all failed were taken"),
+        }
+        let one_ran = |i: usize| if i == 17 { Ok(row(i, 0.07)) } else { failed(i) };
+        assert!(ArrayRuns::new(array, columns, rows(one_ran)).is_ok());
+    }
+
+    /// A response that cannot be fitted (here thrust not finite on a
+    /// row) is named with the fit's own reason.
+    #[test]
+    fn a_surface_that_cannot_be_fitted_names_its_response() {
+        let space = DesignSpace::fwav();
+        let (array, columns, _) = space.l18_layout().unwrap();
+        let thrust = |i: usize| Ok(row(i, if i == 3 { f64::NAN } else { 0.07 }));
+        let rows = ArrayRuns::new(array, columns, rows(thrust)).unwrap();
+        let violation = |_: &FlappingKinematics| 0.0;
+        let objective = Objective {
+            weights: Weights {
+                thrust: 1.0,
+                efficiency: 1.0,
+            },
+            reference: ObjectiveReference {
+                ct_net: 0.07,
+                efficiency_net: 0.04,
+            },
+            violation: &violation,
+        };
+        let err = Surfaces::search(&rows, &space, &Nsga2Config::default(), &objective)
+            .err()
+            .expect("a thrust that is not finite cannot be fitted");
+        assert!(
+            matches!(
+                err,
+                KinematicError::Surface {
+                    response: "thrust",
+                    source: RsmError::NonFinite { run: 3 }
+                }
+            ),
+            "{err:?}"
+        );
+        assert_eq!(
+            err.to_string(),
+            "the thrust response surface over the L18 rows: run 3 has a non-finite value"
         );
     }
 }

@@ -135,9 +135,31 @@ pub enum EvaluationError {
     /// The deformation samples are unusable.
     #[error("section deformation: {0}")]
     Deformation(#[from] CamberError),
-    /// A case value out of range.
-    #[error("section case: {0}")]
-    Case(String),
+    /// The section's chord, its radius from the flapping axis or the
+    /// flight speed is not positive.
+    #[error(
+        "section case: chord {chord_m} m, radius {radius_m} m and speed {speed_m_s} m/s must be \
+         positive"
+    )]
+    NotPositive {
+        /// The chord, m.
+        chord_m: f64,
+        /// The section's radius from the flapping axis, m.
+        radius_m: f64,
+        /// The flight speed, m/s.
+        speed_m_s: f64,
+    },
+    /// Too few cycles, or too few steps a cycle, to score.
+    #[error("section case: at least 3 cycles of 20 steps (got {cycles} of {steps_per_cycle})")]
+    TooShort {
+        /// Cycles asked for.
+        cycles: usize,
+        /// Steps a cycle asked for.
+        steps_per_cycle: usize,
+    },
+    /// The critical LESP is not positive.
+    #[error("section case: critical LESP {0} must be positive (or none for attached flow)")]
+    LespCritical(f64),
     /// The panel method refused the section
     /// ([`SectionCase::evaluate_panel`]).
     #[error("the panel section analysis: {0}")]
@@ -406,22 +428,21 @@ impl SectionCase {
     fn check(&self) -> Result<(), EvaluationError> {
         let positive = |v: f64| v.is_finite() && v > 0.0;
         if !(positive(self.chord) && positive(self.radius) && positive(self.flight.speed)) {
-            return Err(EvaluationError::Case(format!(
-                "chord {} m, radius {} m and speed {} m/s must be positive",
-                self.chord, self.radius, self.flight.speed
-            )));
+            return Err(EvaluationError::NotPositive {
+                chord_m: self.chord,
+                radius_m: self.radius,
+                speed_m_s: self.flight.speed,
+            });
         }
         if self.cycles < 3 || self.steps_per_cycle < 20 {
-            return Err(EvaluationError::Case(format!(
-                "at least 3 cycles of 20 steps (got {} of {})",
-                self.cycles, self.steps_per_cycle
-            )));
+            return Err(EvaluationError::TooShort {
+                cycles: self.cycles,
+                steps_per_cycle: self.steps_per_cycle,
+            });
         }
         if let Some(l) = self.lesp_critical {
             if !(l.is_finite() && l > 0.0) {
-                return Err(EvaluationError::Case(format!(
-                    "critical LESP {l} must be positive (or none for attached flow)"
-                )));
+                return Err(EvaluationError::LespCritical(l));
             }
         }
         Ok(())
@@ -503,4 +524,54 @@ fn summarize(
         }
     }
     Ok(result)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A case out of range is refused before any analysis, its error
+    /// carrying the values that are wrong.
+    #[test]
+    fn a_case_out_of_range_is_refused_with_its_values() {
+        let design = FlappingKinematics::INITIAL;
+        let base = SectionCase::fwav_mid_span();
+        let no_chord = SectionCase {
+            chord: 0.0,
+            ..base.clone()
+        };
+        match no_chord.evaluate(&design) {
+            Err(EvaluationError::NotPositive {
+                chord_m,
+                radius_m,
+                speed_m_s,
+            }) => {
+                assert_eq!(chord_m, 0.0);
+                assert_eq!(radius_m, base.radius);
+                assert_eq!(speed_m_s, base.flight.speed);
+            }
+            other => panic!("a zero chord gave {other:?}"),
+        }
+        let short = SectionCase {
+            cycles: 2,
+            ..base.clone()
+        };
+        assert!(matches!(
+            short.evaluate(&design),
+            Err(EvaluationError::TooShort {
+                cycles: 2,
+                steps_per_cycle: 100
+            })
+        ));
+        let bad_lesp = SectionCase {
+            lesp_critical: Some(-0.1),
+            ..base
+        };
+        let err = bad_lesp.evaluate(&design).unwrap_err();
+        assert!(matches!(err, EvaluationError::LespCritical(l) if l == -0.1));
+        assert_eq!(
+            err.to_string(),
+            "section case: critical LESP -0.1 must be positive (or none for attached flow)"
+        );
+    }
 }
