@@ -137,19 +137,68 @@ impl SectionModel {
     /// edge is opened to [`super::viscous::TRAILING_EDGE_THICKNESS`], see
     /// [`ViscousShape::from_points`].
     pub fn named_viscous(name: &str, plate_thickness: f64) -> Result<ViscousShape, CaseError> {
+        match Self::viscous_points(name)? {
+            None => Ok(ViscousShape::Plate(plate_thickness)),
+            Some(points) => Ok(ViscousShape::from_points(&points)?),
+        }
+    }
+
+    /// The points a named section is drawn through for the viscous model,
+    /// as given (before a sharp trailing edge is opened): a NACA 4-digit
+    /// name's 400, a point file's; `None` for
+    /// `flat`, the plate.
+    ///
+    /// # Errors
+    /// [`CaseError::SectionName`], [`CaseError::Naca`] or
+    /// [`CaseError::Points`] for a name that is no section.
+    pub fn viscous_points(name: &str) -> Result<Option<Vec<(f64, f64)>>, CaseError> {
         if name == "flat" {
-            return Ok(ViscousShape::Plate(plate_thickness));
+            return Ok(None);
         }
         let points = match name.parse::<Naca4>() {
             Ok(naca) => naca.points(2 * NACA_SIDE_POINTS, TrailingEdge::Closed)?,
             Err(naca) => point_file(name, naca)?,
         };
-        Ok(ViscousShape::from_points(&points)?)
+        Ok(Some(points))
     }
 
     /// Whether it is the thin line.
     pub fn is_flat(&self) -> bool {
         matches!(self, Self::Flat)
+    }
+}
+
+/// Checks that each of a thick section's deformation `samples` is its
+/// whole contour, as the deformation's samples must be (point for point
+/// in the section's order: [`Case::deformation`]): as many points as
+/// `section`, a last point that repeats the first counted on neither.
+/// The Navier–Stokes model runs the samples' shapes, so a history of
+/// another section would otherwise run that section (the panel method
+/// checks its vertices alike: [`crate::aero2d::panel::PanelError::HistoryMismatch`]).
+///
+/// # Errors
+/// [`CaseError::ContourPoints`] naming the first sample that differs.
+pub fn check_contour_history(
+    section: &[(f64, f64)],
+    samples: &[Vec<(f64, f64)>],
+) -> Result<(), CaseError> {
+    let distinct = |points: &[(f64, f64)]| match (points.first(), points.last()) {
+        (Some(a), Some(b)) if points.len() > 1 && a == b => points.len() - 1,
+        _ => points.len(),
+    };
+    let expected = distinct(section);
+    match samples
+        .iter()
+        .map(|s| distinct(s))
+        .enumerate()
+        .find(|&(_, found)| found != expected)
+    {
+        Some((sample, found)) => Err(CaseError::ContourPoints {
+            sample,
+            found,
+            expected,
+        }),
+        None => Ok(()),
     }
 }
 
@@ -603,6 +652,28 @@ impl CaseRun {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A thick section's history must give its whole contour at every
+    /// sample: as many points as the section, a closing point that
+    /// repeats the first counted on neither side; the first sample that
+    /// differs is named.
+    #[test]
+    fn a_contour_history_is_held_to_the_sections_points() {
+        let square = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+        let closed: Vec<(f64, f64)> = square.iter().chain(&square[..1]).copied().collect();
+        let moved: Vec<(f64, f64)> = square.iter().map(|&(x, y)| (x, y + 0.1)).collect();
+        assert!(check_contour_history(&square, &[closed.clone(), moved.clone()]).is_ok());
+        assert!(check_contour_history(&closed, &[square.to_vec(), moved.clone()]).is_ok());
+        let short = square[..3].to_vec();
+        match check_contour_history(&closed, &[moved, short.clone(), short]) {
+            Err(CaseError::ContourPoints {
+                sample: 1,
+                found: 3,
+                expected: 4,
+            }) => {}
+            other => panic!("{other:?}"),
+        }
+    }
 
     fn plunge(section: SectionModel, h0: f64, k: f64) -> Case {
         Case {

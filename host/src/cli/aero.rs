@@ -5,7 +5,9 @@ use std::io::IsTerminal as _;
 use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
-use fwav::aero2d::case::{Case, CaseRun, SectionModel, MAX_DURATION_CHORDS, PERIODIC_CHANGE};
+use fwav::aero2d::case::{
+    check_contour_history, Case, CaseRun, SectionModel, MAX_DURATION_CHORDS, PERIODIC_CHANGE,
+};
 use fwav::aero2d::friction::FWAV_REYNOLDS;
 use fwav::aero2d::motion::Motion;
 use fwav::aero2d::viscous::{FlowField, FrameSink, ViscousSection};
@@ -98,7 +100,8 @@ pub struct Aero2dArgs {
     /// in the section's kinematic frame (chords, leading edge at (0, 0),
     /// trailing edge at (1, 0)): for `flat` the mid-line points from the
     /// leading to the trailing edge; for a thick section the whole contour,
-    /// as many points as the section has, in its order.
+    /// as many points as the section has, in its order (a point file's;
+    /// a NACA name's 160 for the panel method, 400 for `ns`).
     #[arg(long)]
     pub deformation: Option<PathBuf>,
     /// Draw the wake (the vorticity, for `ns`) and the force histories to
@@ -330,6 +333,16 @@ fn case(a: &Aero2dArgs) -> Result<Case> {
         Some(path) => Some(SectionFile::read(path)?.points()),
         None => None,
     };
+    // The panel method checks a thick section's history against its own
+    // vertices; the Navier–Stokes model runs the samples' shapes, so they
+    // are checked against the section here.
+    if let (FlowModel::Ns, Some(samples), Some(path)) = (a.model, &deformation, &a.deformation) {
+        if let Some(points) = SectionModel::viscous_points(&a.section)? {
+            check_contour_history(&points, samples).with_context(|| {
+                format!("--section {} --deformation {}", a.section, path.display())
+            })?;
+        }
+    }
     Ok(Case {
         section,
         motion: Motion {

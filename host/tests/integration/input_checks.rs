@@ -257,3 +257,82 @@ fn design_with_yes_starts_a_costly_run() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `fwav aero2d --model ns --section naca0012 --deformation F`, F the
+/// history of another section (a 50-point ellipse), ran the ellipse and
+/// printed its loads as the NACA section's: the Navier–Stokes model runs
+/// the samples' shapes. The samples are now held to the section's points,
+/// as the panel method holds them to its vertices, before anything is
+/// written; the ellipse's own point file with the same history runs.
+#[test]
+fn aero2d_ns_refuses_the_deformation_of_another_section() {
+    let dir = scratch("other-section");
+    let ellipse: Vec<(f64, f64)> = (0..50)
+        .map(|i| {
+            let t = std::f64::consts::TAU * f64::from(i) / 50.0;
+            (0.5 + 0.5 * t.cos(), 0.05 * t.sin())
+        })
+        .collect();
+    let section = dir.join("ellipse.dat");
+    let lines: Vec<String> = ellipse.iter().map(|(x, y)| format!("{x} {y}")).collect();
+    std::fs::write(&section, lines.join("\n")).unwrap();
+    // Four samples a period, the ellipse heaved by up to 0.01 chords.
+    let samples: Vec<Vec<[f64; 2]>> = (0..4)
+        .map(|s| {
+            let heave = 0.01 * (std::f64::consts::TAU * f64::from(s) / 4.0).sin();
+            ellipse.iter().map(|&(x, y)| [x, y + heave]).collect()
+        })
+        .collect();
+    let history = dir.join("section.json");
+    let json = serde_json::json!({
+        "format": "fwav-section-history",
+        "format_version": 1,
+        "samples": samples,
+    });
+    std::fs::write(&history, json.to_string()).unwrap();
+    let csv = dir.join("h.csv");
+    let run = |section: &str| {
+        fwav(&[
+            "aero2d",
+            "--model",
+            "ns",
+            "--reynolds",
+            "200",
+            "--ns-around",
+            "64",
+            "--ns-radial",
+            "48",
+            "--cycles",
+            "2",
+            "--deformation",
+            history.to_str().unwrap(),
+            "--section",
+            section,
+            "--history",
+            csv.to_str().unwrap(),
+        ])
+    };
+
+    let out = run("naca0012");
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}{}", text(&out.stdout));
+    assert!(
+        stderr.contains("--section naca0012 --deformation")
+            && stderr.contains("sample 0 has 50 points, but the section has 400"),
+        "{stderr}"
+    );
+    assert!(out.stdout.is_empty(), "{}", text(&out.stdout));
+    assert!(!csv.exists(), "a refused run wrote its history");
+
+    // Exit status 2: two cycles are not periodic, which it says.
+    let out = run(section.to_str().unwrap());
+    let stdout = text(&out.stdout);
+    assert!(
+        matches!(out.status.code(), Some(0 | 2)),
+        "{}{stdout}",
+        text(&out.stderr)
+    );
+    assert!(stdout.contains("deforming"), "{stdout}");
+    assert!(csv.exists());
+    std::fs::remove_dir_all(&dir).ok();
+}

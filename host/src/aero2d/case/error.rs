@@ -33,6 +33,22 @@ pub enum CaseError {
     /// The panel solver refused the section, settings or deformation.
     #[error(transparent)]
     Panel(#[from] PanelError),
+    /// A thick section's deformation sample that is not the section's
+    /// whole contour, point for point: the Navier–Stokes model would run
+    /// the sample's shape, whatever `--section` said.
+    #[error(
+        "the deformation's sample {sample} has {found} points, but the section has {expected}: a \
+         thick section's deformation gives its whole contour at each sample, point for point in \
+         the section's order (a last point repeating the first is not counted)"
+    )]
+    ContourPoints {
+        /// The sample, from 0.
+        sample: usize,
+        /// Its points.
+        found: usize,
+        /// The section's.
+        expected: usize,
+    },
     /// Leading-edge vortex shedding asked of the panel method or the
     /// viscous model.
     #[error("leading-edge vortex shedding (a critical LESP) applies to the thin-line model only")]
