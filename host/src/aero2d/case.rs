@@ -377,10 +377,14 @@ impl Case {
     /// models hand on none).
     ///
     /// # Errors
-    /// As [`Self::run`], and [`CaseError::Viscous`] with
+    /// As [`Self::run`]; [`CaseError::NoDeformationSamples`] for a
+    /// deformation history without a sample; and [`CaseError::Viscous`] with
     /// [`crate::aero2d::viscous::ViscousError::Frame`] when `frames` fails
     /// (the run stops at that frame).
     pub fn run_into(&self, frames: &mut dyn FrameSink) -> Result<CaseRun, CaseError> {
+        if self.deformation.as_ref().is_some_and(Vec::is_empty) {
+            return Err(CaseError::NoDeformationSamples);
+        }
         self.check_work()?;
         let run = match &self.section {
             SectionModel::Flat => self.run_thin(),
@@ -652,6 +656,25 @@ impl CaseRun {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A deformation history without a sample is refused by every model
+    /// alike, before a step (the LDVM's message spoke of a period, the
+    /// Navier–Stokes model's of "a positive, finite number").
+    #[test]
+    fn a_deformation_without_samples_is_refused_by_every_model() {
+        for section in [
+            SectionModel::Flat,
+            SectionModel::named("naca0012").unwrap(),
+            SectionModel::Viscous(ViscousSection::new(ViscousShape::Plate(0.04))),
+        ] {
+            let case = Case {
+                deformation: Some(Vec::new()),
+                ..plunge(section, 0.05, 1.0)
+            };
+            let err = case.run().unwrap_err();
+            assert!(matches!(err, CaseError::NoDeformationSamples), "{err:?}");
+        }
+    }
 
     /// A thick section's history must give its whole contour at every
     /// sample: as many points as the section, a closing point that

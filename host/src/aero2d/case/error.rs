@@ -33,6 +33,12 @@ pub enum CaseError {
     /// The panel solver refused the section, settings or deformation.
     #[error(transparent)]
     Panel(#[from] PanelError),
+    /// A deformation history without a sample.
+    #[error(
+        "the deformation history has no samples: give at least one (`fwav system-analysis --out` \
+         writes a section.json of them)"
+    )]
+    NoDeformationSamples,
     /// A thick section's deformation sample that is not the section's
     /// whole contour, point for point: the Navier–Stokes model would run
     /// the sample's shape, whatever `--section` said.
