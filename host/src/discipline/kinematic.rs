@@ -746,13 +746,10 @@ mod tests {
         assert_eq!(best_beyond(&candidates, f64::NEG_INFINITY), Some(1));
     }
 
-    /// The margin is one standard deviation of the difference of two
-    /// runs: at the reference design, with equal weights and a 4 %
-    /// scatter in each objective, `√2 (0.04 + 0.04)`; none for the LDVM.
-    #[test]
-    fn the_margin_is_the_scatter_of_a_difference() {
-        let violation = |_: &FlappingKinematics| 0.0;
-        let objective = Objective {
+    /// The objective of equal weights on the reference CT 0.07 and
+    /// efficiency 0.04, its violation `violation`'s.
+    fn equal_weights(violation: Violation<'_>) -> Objective<'_> {
+        Objective {
             weights: Weights {
                 thrust: 1.0,
                 efficiency: 1.0,
@@ -761,8 +758,17 @@ mod tests {
                 ct_net: 0.07,
                 efficiency_net: 0.04,
             },
-            violation: &violation,
-        };
+            violation,
+        }
+    }
+
+    /// The margin is one standard deviation of the difference of two
+    /// runs: at the reference design, with equal weights and a 4 %
+    /// scatter in each objective, `√2 (0.04 + 0.04)`; none for the LDVM.
+    #[test]
+    fn the_margin_is_the_scatter_of_a_difference() {
+        let violation = |_: &FlappingKinematics| 0.0;
+        let objective = equal_weights(&violation);
         let at_reference = SectionResult {
             reduced_frequency: 0.7,
             ct: 0.07,
@@ -836,17 +842,7 @@ mod tests {
         let thrust = |i: usize| Ok(row(i, if i == 3 { f64::NAN } else { 0.07 }));
         let rows = ArrayRuns::new(array, columns, rows(thrust)).unwrap();
         let violation = |_: &FlappingKinematics| 0.0;
-        let objective = Objective {
-            weights: Weights {
-                thrust: 1.0,
-                efficiency: 1.0,
-            },
-            reference: ObjectiveReference {
-                ct_net: 0.07,
-                efficiency_net: 0.04,
-            },
-            violation: &violation,
-        };
+        let objective = equal_weights(&violation);
         let err = Surfaces::search(&rows, &space, &Nsga2Config::default(), &objective)
             .err()
             .expect("a thrust that is not finite cannot be fitted");
