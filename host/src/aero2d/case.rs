@@ -137,21 +137,35 @@ impl SectionModel {
     /// edge is opened to [`super::viscous::TRAILING_EDGE_THICKNESS`], see
     /// [`ViscousShape::from_points`].
     pub fn named_viscous(name: &str, plate_thickness: f64) -> Result<ViscousShape, CaseError> {
-        match Self::viscous_points(name)? {
-            None => Ok(ViscousShape::Plate(plate_thickness)),
-            Some(points) => Ok(ViscousShape::from_points(&points)?),
+        Self::named_viscous_deforming(name, plate_thickness, None)
+    }
+
+    /// [`Self::named_viscous`], its deformation `history` (if any) checked
+    /// against the section's points as given: a thick section's history
+    /// must be its whole contour at each sample ([`check_contour_history`];
+    /// the plate's mid-lines are checked by the run).
+    ///
+    /// # Errors
+    /// As [`Self::named_viscous`]; [`CaseError::ContourPoints`].
+    pub fn named_viscous_deforming(
+        name: &str,
+        plate_thickness: f64,
+        history: Option<&[Vec<(f64, f64)>]>,
+    ) -> Result<ViscousShape, CaseError> {
+        let Some(points) = Self::viscous_points(name)? else {
+            return Ok(ViscousShape::Plate(plate_thickness));
+        };
+        if let Some(samples) = history {
+            check_contour_history(&points, samples)?;
         }
+        Ok(ViscousShape::from_points(&points)?)
     }
 
     /// The points a named section is drawn through for the viscous model,
     /// as given (before a sharp trailing edge is opened): a NACA 4-digit
-    /// name's 400, a point file's; `None` for
-    /// `flat`, the plate.
-    ///
-    /// # Errors
-    /// [`CaseError::SectionName`], [`CaseError::Naca`] or
-    /// [`CaseError::Points`] for a name that is no section.
-    pub fn viscous_points(name: &str) -> Result<Option<Vec<(f64, f64)>>, CaseError> {
+    /// name's 401, the last repeating the first (400 distinct), a point
+    /// file's; `None` for `flat`, the plate.
+    fn viscous_points(name: &str) -> Result<Option<Vec<(f64, f64)>>, CaseError> {
         if name == "flat" {
             return Ok(None);
         }
@@ -168,13 +182,16 @@ impl SectionModel {
     }
 }
 
-/// Checks that each of a thick section's deformation `samples` is its
-/// whole contour, as the deformation's samples must be (point for point
-/// in the section's order: [`Case::deformation`]): as many points as
-/// `section`, a last point that repeats the first counted on neither.
-/// The Navier–Stokes model runs the samples' shapes, so a history of
-/// another section would otherwise run that section (the panel method
-/// checks its vertices alike: [`crate::aero2d::panel::PanelError::HistoryMismatch`]).
+/// Checks that each of a thick section's deformation `samples` gives as
+/// many points as `section`, as the deformation's samples must (its whole
+/// contour, point for point in the section's order: [`Case::deformation`]);
+/// a last point within `1e-9` of the contour's size of the first is
+/// counted on neither, as the panel method closes a contour
+/// ([`SectionShape::new`]). The Navier–Stokes model runs the samples'
+/// shapes, so this count is what ties them to the section it names: the
+/// panel method checks its vertices alike
+/// ([`crate::aero2d::panel::PanelError::HistoryMismatch`]). A history of
+/// another section drawn on as many points still passes.
 ///
 /// # Errors
 /// [`CaseError::ContourPoints`] naming the first sample that differs.
@@ -182,9 +199,19 @@ pub fn check_contour_history(
     section: &[(f64, f64)],
     samples: &[Vec<(f64, f64)>],
 ) -> Result<(), CaseError> {
-    let distinct = |points: &[(f64, f64)]| match (points.first(), points.last()) {
-        (Some(a), Some(b)) if points.len() > 1 && a == b => points.len() - 1,
-        _ => points.len(),
+    let distinct = |points: &[(f64, f64)]| {
+        let size = points
+            .iter()
+            .map(|p| p.0.abs().max(p.1.abs()))
+            .fold(0.0_f64, f64::max);
+        match (points.first(), points.last()) {
+            (Some(a), Some(b))
+                if points.len() > 1 && (a.0 - b.0).hypot(a.1 - b.1) <= 1e-9 * size =>
+            {
+                points.len() - 1
+            }
+            _ => points.len(),
+        }
     };
     let expected = distinct(section);
     match samples
@@ -377,14 +404,10 @@ impl Case {
     /// models hand on none).
     ///
     /// # Errors
-    /// As [`Self::run`]; [`CaseError::NoDeformationSamples`] for a
-    /// deformation history without a sample; and [`CaseError::Viscous`] with
+    /// As [`Self::run`], and [`CaseError::Viscous`] with
     /// [`crate::aero2d::viscous::ViscousError::Frame`] when `frames` fails
     /// (the run stops at that frame).
     pub fn run_into(&self, frames: &mut dyn FrameSink) -> Result<CaseRun, CaseError> {
-        if self.deformation.as_ref().is_some_and(Vec::is_empty) {
-            return Err(CaseError::NoDeformationSamples);
-        }
         self.check_work()?;
         let run = match &self.section {
             SectionModel::Flat => self.run_thin(),
@@ -400,8 +423,13 @@ impl Case {
     /// smallest reduced frequency that fits; for the Navier–Stokes model,
     /// which chooses its own steps and bounds them
     /// (`ViscousError::TooManySteps`), a run longer than
-    /// [`MAX_DURATION_CHORDS`], as for a `duration`.
+    /// [`MAX_DURATION_CHORDS`], as for a `duration`. And a deformation
+    /// history without a sample ([`CaseError::NoDeformationSamples`]):
+    /// all this before anything is run or written.
     pub fn check_work(&self) -> Result<(), CaseError> {
+        if self.deformation.as_ref().is_some_and(Vec::is_empty) {
+            return Err(CaseError::NoDeformationSamples);
+        }
         if let Some(duration) = self.duration {
             // The viscous model bounds its own steps
             // (`ViscousError::TooManySteps`).
@@ -678,8 +706,8 @@ mod tests {
 
     /// A thick section's history must give its whole contour at every
     /// sample: as many points as the section, a closing point that
-    /// repeats the first counted on neither side; the first sample that
-    /// differs is named.
+    /// repeats the first (to rounding) counted on neither side; the first
+    /// sample that differs is named.
     #[test]
     fn a_contour_history_is_held_to_the_sections_points() {
         let square = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
@@ -687,6 +715,10 @@ mod tests {
         let moved: Vec<(f64, f64)> = square.iter().map(|&(x, y)| (x, y + 0.1)).collect();
         assert!(check_contour_history(&square, &[closed.clone(), moved.clone()]).is_ok());
         assert!(check_contour_history(&closed, &[square.to_vec(), moved.clone()]).is_ok());
+        // Closed to rounding, as a file's last point may be.
+        let mut rounded = closed.clone();
+        rounded[4].1 += 1e-12;
+        assert!(check_contour_history(&square, &[rounded]).is_ok());
         let short = square[..3].to_vec();
         match check_contour_history(&closed, &[moved, short.clone(), short]) {
             Err(CaseError::ContourPoints {

@@ -5,9 +5,7 @@ use std::io::IsTerminal as _;
 use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
-use fwav::aero2d::case::{
-    check_contour_history, Case, CaseRun, SectionModel, MAX_DURATION_CHORDS, PERIODIC_CHANGE,
-};
+use fwav::aero2d::case::{Case, CaseRun, SectionModel, MAX_DURATION_CHORDS, PERIODIC_CHANGE};
 use fwav::aero2d::friction::FWAV_REYNOLDS;
 use fwav::aero2d::motion::Motion;
 use fwav::aero2d::viscous::{FlowField, FrameSink, ViscousSection};
@@ -306,10 +304,21 @@ fn not_written(flag: &str, path: &std::path::Path) -> String {
 
 /// The case the arguments describe.
 fn case(a: &Aero2dArgs) -> Result<Case> {
+    let deformation = match &a.deformation {
+        Some(path) => Some(SectionFile::read(path)?.points()),
+        None => None,
+    };
     let section = match a.model {
         FlowModel::Ns => {
-            let shape = SectionModel::named_viscous(&a.section, a.ns_thickness)
-                .with_context(|| format!("--section {}", a.section))?;
+            let shape = SectionModel::named_viscous_deforming(
+                &a.section,
+                a.ns_thickness,
+                deformation.as_deref(),
+            )
+            .with_context(|| match &a.deformation {
+                Some(path) => format!("--section {} --deformation {}", a.section, path.display()),
+                None => format!("--section {}", a.section),
+            })?;
             let plate = ViscousSection::new(shape);
             let plate = match a.ns_radial {
                 Some(radial) => plate.with_radial(radial),
@@ -329,20 +338,6 @@ fn case(a: &Aero2dArgs) -> Result<Case> {
             SectionModel::named(&a.section).with_context(|| format!("--section {}", a.section))?
         }
     };
-    let deformation = match &a.deformation {
-        Some(path) => Some(SectionFile::read(path)?.points()),
-        None => None,
-    };
-    // The panel method checks a thick section's history against its own
-    // vertices; the Navier–Stokes model runs the samples' shapes, so they
-    // are checked against the section here.
-    if let (FlowModel::Ns, Some(samples), Some(path)) = (a.model, &deformation, &a.deformation) {
-        if let Some(points) = SectionModel::viscous_points(&a.section)? {
-            check_contour_history(&points, samples).with_context(|| {
-                format!("--section {} --deformation {}", a.section, path.display())
-            })?;
-        }
-    }
     Ok(Case {
         section,
         motion: Motion {

@@ -336,3 +336,39 @@ fn aero2d_ns_refuses_the_deformation_of_another_section() {
     assert!(csv.exists());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A deformation history without a sample is refused before anything is
+/// written: the Navier–Stokes model's `--field-series` directory is not
+/// made (the check ran after it was, with the run).
+#[test]
+fn aero2d_refuses_an_empty_deformation_before_writing() {
+    let dir = scratch("no-samples");
+    let history = dir.join("section.json");
+    std::fs::write(
+        &history,
+        r#"{"format": "fwav-section-history", "format_version": 1, "samples": []}"#,
+    )
+    .unwrap();
+    let series = dir.join("series");
+    let out = fwav(&[
+        "aero2d",
+        "--model",
+        "ns",
+        "--deformation",
+        history.to_str().unwrap(),
+        "--field-series",
+        series.to_str().unwrap(),
+    ]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}{}", text(&out.stdout));
+    assert!(
+        stderr.contains("the deformation history has no samples"),
+        "{stderr}"
+    );
+    assert!(
+        !series.exists(),
+        "the refused run made {}",
+        series.display()
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

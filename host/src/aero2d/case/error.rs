@@ -35,8 +35,9 @@ pub enum CaseError {
     Panel(#[from] PanelError),
     /// A deformation history without a sample.
     #[error(
-        "the deformation history has no samples: give at least one (`fwav system-analysis --out` \
-         writes a section.json of them)"
+        "the deformation history has no samples: give at least one (for `flat` the mid-lines \
+         `fwav system-analysis --out` writes in section.json; for a thick section its whole \
+         contour)"
     )]
     NoDeformationSamples,
     /// A thick section's deformation sample that is not the section's
@@ -45,7 +46,8 @@ pub enum CaseError {
     #[error(
         "the deformation's sample {sample} has {found} points, but the section has {expected}: a \
          thick section's deformation gives its whole contour at each sample, point for point in \
-         the section's order (a last point repeating the first is not counted)"
+         the section's order (a last point repeating the first is not counted); give the \
+         samples' shape at rest as a point file to --section"
     )]
     ContourPoints {
         /// The sample, from 0.
