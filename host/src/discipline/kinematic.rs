@@ -50,7 +50,9 @@
 //! candidate that is still infeasible (no feasible row, no feasible level
 //! combination) is recorded with its violation and never chosen. Every
 //! evaluation runs in parallel (rayon); a failed
-//! one is recorded with its reason and counts as the worst response seen.
+//! one is recorded with its reason and counts as the worst response seen,
+//! and an array whose rows all failed stops the discipline with the first
+//! row's reason ([`KinematicError::EveryRowFailed`]).
 
 use std::sync::{Mutex, PoisonError};
 
@@ -564,17 +566,20 @@ impl ArrayRuns {
         Self::new(array, columns, runs)
     }
 
-    /// The array's `runs`, refused if every one failed.
+    /// The array's `runs`, refused if there are none or every one failed.
     fn new(
         array: OrthogonalArray,
         columns: Vec<usize>,
         runs: Vec<Evaluated>,
     ) -> Result<Self, KinematicError> {
-        if let Some(Err(first)) = runs.first().map(|e| &e.result) {
+        let Some(first) = runs.first() else {
+            return Err(KinematicError::Array(DoeError::Empty));
+        };
+        if let Err(reason) = &first.result {
             if runs.iter().all(|e| e.result.is_err()) {
                 return Err(KinematicError::EveryRowFailed {
                     rows: runs.len(),
-                    first: first.clone(),
+                    first: reason.clone(),
                 });
             }
         }
@@ -830,7 +835,11 @@ mod tests {
             Ok(_) => panic!("rows that all failed were taken"),
         }
         let one_ran = |i: usize| if i == 17 { Ok(row(i, 0.07)) } else { failed(i) };
-        assert!(ArrayRuns::new(array, columns, rows(one_ran)).is_ok());
+        assert!(ArrayRuns::new(array.clone(), columns.clone(), rows(one_ran)).is_ok());
+        assert!(matches!(
+            ArrayRuns::new(array, columns, Vec::new()),
+            Err(KinematicError::Array(DoeError::Empty))
+        ));
     }
 
     /// A response that cannot be fitted (here thrust not finite on a
@@ -840,10 +849,10 @@ mod tests {
         let space = DesignSpace::fwav();
         let (array, columns, _) = space.l18_layout().unwrap();
         let thrust = |i: usize| Ok(row(i, if i == 3 { f64::NAN } else { 0.07 }));
-        let rows = ArrayRuns::new(array, columns, rows(thrust)).unwrap();
+        let array_runs = ArrayRuns::new(array, columns, rows(thrust)).unwrap();
         let violation = |_: &FlappingKinematics| 0.0;
         let objective = equal_weights(&violation);
-        let err = Surfaces::search(&rows, &space, &Nsga2Config::default(), &objective)
+        let err = Surfaces::search(&array_runs, &space, &Nsga2Config::default(), &objective)
             .err()
             .expect("a thrust that is not finite cannot be fitted");
         assert!(

@@ -138,8 +138,8 @@ pub enum EvaluationError {
     /// The section's chord, its radius from the flapping axis or the
     /// flight speed is not positive.
     #[error(
-        "section case: chord {chord_m} m, radius {radius_m} m and speed {speed_m_s} m/s must be \
-         positive"
+        "section case: chord {chord_m} m, radius {radius_m} m and speed {speed_m_s} m/s must each \
+         be positive and finite"
     )]
     NotPositive {
         /// The chord, m.
@@ -150,7 +150,10 @@ pub enum EvaluationError {
         speed_m_s: f64,
     },
     /// Too few cycles, or too few steps a cycle, to score.
-    #[error("section case: at least 3 cycles of 20 steps (got {cycles} of {steps_per_cycle})")]
+    #[error(
+        "section case: needs at least 3 cycles of 20 steps each (got {cycles} cycles of \
+         {steps_per_cycle} steps)"
+    )]
     TooShort {
         /// Cycles asked for.
         cycles: usize,
@@ -556,13 +559,18 @@ mod tests {
             cycles: 2,
             ..base.clone()
         };
+        let err = short.evaluate(&design).unwrap_err();
         assert!(matches!(
-            short.evaluate(&design),
-            Err(EvaluationError::TooShort {
+            err,
+            EvaluationError::TooShort {
                 cycles: 2,
                 steps_per_cycle: 100
-            })
+            }
         ));
+        assert_eq!(
+            err.to_string(),
+            "section case: needs at least 3 cycles of 20 steps each (got 2 cycles of 100 steps)"
+        );
         let bad_lesp = SectionCase {
             lesp_critical: Some(-0.1),
             ..base

@@ -17,6 +17,8 @@ use fwav::discipline::section_model::{
     SectionFlowModel, SectionModelName, ViscousPlate, NS_LONG_MEAN_SCATTER, NS_WINDOW_SCATTER,
 };
 
+use crate::program::fwav_command;
+
 /// A 12 % plate on 80 × 48 nodes out to 15 chords (exponential
 /// stretching), first cell a fifth of the boundary layer: coarse, for a
 /// test of seconds (the default is 384 × 256 out to 30 chords); 80 round
@@ -523,7 +525,7 @@ fn kinematics_command_says_the_ns_section_deforms() {
     std::fs::write(&config_file, toml).unwrap();
 
     let run = |json: bool| {
-        let mut command = crate::program::fwav_command(&["kinematics", "--config"]);
+        let mut command = fwav_command(&["kinematics", "--config"]);
         command.arg(&config_file);
         command.arg("--section").arg(&section_file);
         command.arg("--cache").arg(&cache_file);

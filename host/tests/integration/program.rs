@@ -13,8 +13,9 @@ pub fn fwav(args: &[&str]) -> Output {
 }
 
 /// `fwav args` to be run from the workspace root with nothing on its
-/// standard input (as in CI), for a test that starts it and acts while it
-/// runs.
+/// standard input (as in CI), for a test that sets more (arguments that
+/// are paths, its output's pipes, the environment) or starts it and acts
+/// while it runs.
 pub fn fwav_command(args: &[&str]) -> Command {
     let mut command = Command::new(env!("CARGO_BIN_EXE_fwav"));
     command
