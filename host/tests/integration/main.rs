@@ -6,9 +6,10 @@
 //! threads take the tests of every module, so a long test of one module
 //! no longer leaves a core idle while the next file waits (CI's time).
 //!
-//! Two modules are not groups but helpers the groups share: `program`,
-//! which runs the `fwav` program as a user does, and `vtk_reader`, which
-//! reads the ParaView files the programs write with VTK's own reader.
+//! Three modules are not groups but helpers the groups share: `program`,
+//! which runs the `fwav` program as a user does; `vtk_reader`, which
+//! reads the ParaView files the programs write with VTK's own reader,
+//! and `machine_time`, what the machine gave a benchmark while it ran.
 //!
 //! The modules share one process: their scratch files carry the module's
 //! own prefix besides the process id, and none sets an environment
@@ -27,6 +28,7 @@ mod discipline_ns;
 mod discipline_ns_scatter;
 mod discipline_ns_scores;
 mod input_checks;
+mod machine_time;
 mod optimize;
 mod program;
 mod shell;

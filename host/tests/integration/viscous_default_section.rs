@@ -106,9 +106,10 @@ fn default_section_four_cycles_benchmark() {
     };
     let (reynolds, k) = fwav_mid_span_flow();
     let cells = section.around * section.radial;
-    let clock = std::time::Instant::now();
+    let clock = crate::machine_time::Stopwatch::start();
     let run = fwav_mid_span_run(&section, cycles);
-    let seconds = clock.elapsed().as_secs_f64();
+    let lap = clock.lap();
+    let seconds = lap.wall;
     // Each stroke's means: how periodic the flow is; the last two are
     // the discipline's window.
     let strokes = stroke_means(&run.history, cycles.round() as usize);
@@ -118,7 +119,7 @@ fn default_section_four_cycles_benchmark() {
         mean(&last_two.iter().map(|s| s.1).collect::<Vec<_>>()),
     );
     println!(
-        "Re {reynolds:.0}, k {k:.3}, plate {thickness}, {cycles} cycles: {seconds:.1} s, {} steps \
+        "Re {reynolds:.0}, k {k:.3}, plate {thickness}, {cycles} cycles: {lap}, {} steps \
          (last dt {:.2e}), {:.1} ns per cell per step; last two cycles: CT {:.4}, CP {:.4}",
         run.steps,
         run.dt,
