@@ -440,18 +440,28 @@ impl FrameSink for RunOutputs {
     fn reached(&mut self, time: f64, duration: f64) {
         if let Some(bar) = &self.bar {
             bar.set_position((RUN_BAR_LENGTH as f64 * time / duration) as u64);
-            bar.set_message(format!("{time:.2} of {duration:.2} chords travelled"));
+            bar.set_message(travelled(time, duration));
         }
     }
+}
+
+/// How far a run of `duration` chords has come at `time`, as its bar
+/// says.
+fn travelled(time: f64, duration: f64) -> String {
+    format!("{time:.2} of {duration:.2} chords travelled")
 }
 
 /// The run's progress bar's length: its position is the share of the run
 /// done, in thousandths.
 const RUN_BAR_LENGTH: u64 = 1000;
 
-/// The progress bar of a Navier–Stokes run.
-fn run_bar() -> ProgressBar {
-    super::progress::bar(RUN_BAR_LENGTH, "[{elapsed_precise}] {bar:30} {msg}")
+/// The progress bar of a Navier–Stokes run of `duration` chords, saying
+/// so from its start (a fine grid's first load sample may be minutes
+/// away).
+fn run_bar(duration: f64) -> ProgressBar {
+    let bar = super::progress::bar(RUN_BAR_LENGTH, "[{elapsed_precise}] {bar:30} {msg}");
+    bar.set_message(travelled(0.0, duration));
+    bar
 }
 
 /// Runs the command.
@@ -470,7 +480,7 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
     let live = a.model == FlowModel::Ns && std::io::stderr().is_terminal();
     let mut outputs = RunOutputs {
         series,
-        bar: live.then(run_bar),
+        bar: live.then(|| run_bar(case.settings().duration)),
     };
     let run = case.run_into(&mut outputs);
     if let Some(bar) = &outputs.bar {

@@ -495,8 +495,9 @@ fn kinematics_runs_sharing_a_cache_keep_each_others_evaluations() {
 /// The long runs show how far they have come on a terminal, and nothing
 /// off one: `fwav kinematics` a bar of its 2D evaluations (with the
 /// Navier–Stokes model a run is about half an hour), `fwav aero2d --model
-/// ns` the chords travelled. Each bar is cleared at the end, and the
-/// results on standard output are the same as off a terminal.
+/// ns` the chords travelled, each from its start. Each bar is cleared at
+/// the end, and the results on standard output are the same as off a
+/// terminal.
 #[test]
 fn long_runs_show_their_progress_on_a_terminal() {
     let dir = std::env::temp_dir().join(format!("fwav-progress-{}", std::process::id()));
@@ -539,6 +540,9 @@ fn long_runs_show_their_progress_on_a_terminal() {
             "{progress:?} in {terminal:?}"
         );
         assert!(progress[progress.len() - 1] > progress[0], "{progress:?}");
+        // Saying so from the start, before the first step's end (a fine
+        // grid's first load sample may be minutes away).
+        assert_eq!(progress[0], 0.0, "{terminal:?}");
         // Cleared at the end.
         assert!(terminal.trim_end().ends_with("\x1b[2K"), "{terminal:?}");
         let off = fwav(args);
