@@ -301,6 +301,14 @@ mod tests {
         assert_ne!(key(&ns, &design), unrevised(&ns));
     }
 
+    /// A fresh, empty directory for one test.
+    fn scratch(name: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("fwav-cache-{name}-{}", std::process::id()));
+        std::fs::remove_dir_all(&dir).ok();
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
     fn result(ct: f64) -> SectionResult {
         SectionResult {
             reduced_frequency: 0.69,
@@ -318,8 +326,7 @@ mod tests {
     /// fresh load serves them; `load` alone keeps the file untouched.
     #[test]
     fn a_kept_cache_writes_each_result_at_once() {
-        let dir = std::env::temp_dir().join(format!("fwav-cache-kept-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
+        let dir = scratch("kept");
         let path = dir.join("evaluations.json");
         let case = SectionCase::fwav_mid_span();
         let designs = [
@@ -356,9 +363,7 @@ mod tests {
     /// the other's.
     #[test]
     fn caches_kept_in_one_file_keep_each_others_results() {
-        let dir = std::env::temp_dir().join(format!("fwav-cache-shared-{}", std::process::id()));
-        std::fs::remove_dir_all(&dir).ok();
-        std::fs::create_dir_all(&dir).unwrap();
+        let dir = scratch("shared");
         let path = dir.join("evaluations.json");
         let case = SectionCase::fwav_mid_span();
         let design = |run: usize, i: usize| {
@@ -400,9 +405,7 @@ mod tests {
     /// memory and `save` names the file and what is wrong with it.
     #[test]
     fn a_kept_cache_leaves_a_file_that_is_not_a_cache() {
-        let dir = std::env::temp_dir().join(format!("fwav-cache-replaced-{}", std::process::id()));
-        std::fs::remove_dir_all(&dir).ok();
-        std::fs::create_dir_all(&dir).unwrap();
+        let dir = scratch("replaced");
         let path = dir.join("evaluations.json");
         let kept = EvaluationCache::kept_in(&path).unwrap();
         std::fs::write(&path, "my notes").unwrap();

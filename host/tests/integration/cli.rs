@@ -415,9 +415,7 @@ fn kinematics_runs_the_discipline_and_reuses_its_evaluations() {
 /// writes at once could leave a file mixed of both).
 #[test]
 fn kinematics_runs_sharing_a_cache_keep_each_others_evaluations() {
-    let dir = std::env::temp_dir().join(format!("fwav-kinematics-shared-{}", std::process::id()));
-    std::fs::remove_dir_all(&dir).ok();
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::program::scratch("kinematics-shared");
     let cache = dir.join("evaluations.json");
     let configs: Vec<_> = [[9.0, 11.0, 13.0], [8.0, 10.0, 12.0]]
         .iter()
@@ -500,9 +498,7 @@ fn kinematics_runs_sharing_a_cache_keep_each_others_evaluations() {
 /// terminal.
 #[test]
 fn long_runs_show_their_progress_on_a_terminal() {
-    let dir = std::env::temp_dir().join(format!("fwav-progress-{}", std::process::id()));
-    std::fs::remove_dir_all(&dir).ok();
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::program::scratch("progress");
     let config = dir.join("quick.toml");
     std::fs::write(&config, "[design]\nsection_cycles = 3\n").unwrap();
     let plate = crate::viscous_field::plate_at_ten_degrees_for("2", &[]);

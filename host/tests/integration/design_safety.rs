@@ -28,10 +28,7 @@ const COARSE: &str = include_str!("../../../configs/coarse.toml");
 const REFUSAL: Duration = Duration::from_secs(30);
 
 fn temp(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("fwav-safety-{name}-{}", std::process::id()));
-    std::fs::remove_dir_all(&dir).ok();
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    crate::program::scratch(&format!("safety-{name}"))
 }
 
 fn text(path: &Path) -> String {

@@ -10,10 +10,7 @@ use crate::program::{fwav, fwav_command};
 
 /// A fresh scratch directory for one test.
 fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("fwav-input-{name}-{}", std::process::id()));
-    std::fs::remove_dir_all(&dir).ok();
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    crate::program::scratch(&format!("input-{name}"))
 }
 
 fn text(bytes: &[u8]) -> String {

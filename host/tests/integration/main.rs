@@ -7,7 +7,8 @@
 //! no longer leaves a core idle while the next file waits (CI's time).
 //!
 //! Three modules are not groups but helpers the groups share: `program`,
-//! which runs the `fwav` program as a user does; `vtk_reader`, which
+//! which runs the `fwav` program as a user does and gives a test its
+//! scratch directory; `vtk_reader`, which
 //! reads the ParaView files the programs write with VTK's own reader,
 //! and `machine_time`, what the machine gave a benchmark while it ran.
 //!

@@ -12,6 +12,17 @@ pub fn fwav(args: &[&str]) -> Output {
     fwav_command(args).output().expect("the fwav binary runs")
 }
 
+/// A fresh, empty scratch directory `fwav-NAME-PID` in the system's
+/// temporary directory, for the files one test gives the program and
+/// the ones it writes (absolute, so they resolve from any working
+/// directory).
+pub fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("fwav-{name}-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
 /// `fwav args` to be run from the workspace root with nothing on its
 /// standard input (as in CI), for a test that sets more (arguments that
 /// are paths, its output's pipes, the environment) or starts it and acts

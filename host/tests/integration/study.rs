@@ -41,10 +41,7 @@ const STUDY: &str = "[study]\nname = \"span-speed\"\nbase = \"small.toml\"\n\
     [grid]\nwing.semi_span_m = [0.14, 0.15, 0.16]\nflight.speed_m_s = [3.0]\n";
 
 fn temp(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("fwav-study-{name}-{}", std::process::id()));
-    std::fs::remove_dir_all(&dir).ok();
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    crate::program::scratch(&format!("study-{name}"))
 }
 
 /// The small variant of the coarse design (module docs).

@@ -117,9 +117,7 @@ fn data_array(text: &str, name: Option<&str>) -> Vec<f64> {
 /// A file that exists is refused before the run, naming it.
 #[test]
 fn aero2d_writes_the_flow_field_for_paraview() {
-    let dir = std::env::temp_dir().join(format!("fwav-viscous-field-{}", std::process::id()));
-    std::fs::remove_dir_all(&dir).ok();
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::program::scratch("viscous-field");
     let path = dir.join("flow.vtu");
     let field = ["--field", path.to_str().unwrap()];
     let out = plate_at_ten_degrees(&field);
@@ -232,9 +230,7 @@ fn binary_arrays(bytes: &[u8]) -> std::collections::HashMap<String, Vec<f64>> {
 /// model.
 #[test]
 fn aero2d_writes_the_flow_as_a_series_paraview_plays() {
-    let dir = std::env::temp_dir().join(format!("fwav-viscous-series-{}", std::process::id()));
-    std::fs::remove_dir_all(&dir).ok();
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::program::scratch("viscous-series");
     let series = dir.join("series");
     let last = dir.join("last.vtu");
     let (around, rings) = (128, 96);
@@ -384,9 +380,7 @@ fn aero2d_writes_the_flow_as_a_series_paraview_plays() {
 /// (measured 0.0169): the check sees the boundary layer's displacement.
 #[test]
 fn the_fields_velocity_is_the_displaced_circles_potential_flow() {
-    let dir = std::env::temp_dir().join(format!("fwav-viscous-velocity-{}", std::process::id()));
-    std::fs::remove_dir_all(&dir).ok();
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::program::scratch("viscous-velocity");
     let circle = crate::viscous_stream::circle_file(&dir);
     let path = dir.join("flow.vtu");
     let (reynolds, time) = (3000.0_f64, 0.05_f64);
@@ -525,9 +519,7 @@ fn a_run_hands_its_frames_on_as_it_goes() {
 /// and the series of the one frame written, and the file is as it was.
 #[test]
 fn a_run_stopped_after_its_first_frame_says_where_the_frames_are() {
-    let dir = std::env::temp_dir().join(format!("fwav-series-stopped-{}", std::process::id()));
-    std::fs::remove_dir_all(&dir).ok();
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::program::scratch("series-stopped");
     let series = dir.join("series");
     let series_arg = series.to_str().unwrap();
     let mut child = fwav_command(&plate_at_ten_degrees_for(

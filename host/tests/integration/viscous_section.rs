@@ -434,9 +434,7 @@ fn a_heave_given_as_deformation_is_the_rigid_plunge() {
 /// model cannot take are refused naming them.
 #[test]
 fn aero2d_runs_the_viscous_model() {
-    let dir = std::env::temp_dir().join(format!("fwav-viscous-cli-{}", std::process::id()));
-    std::fs::remove_dir_all(&dir).ok();
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::program::scratch("viscous-cli");
     let csv = dir.join("history.csv");
     let args = [
         "aero2d",

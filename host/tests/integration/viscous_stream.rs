@@ -186,9 +186,7 @@ fn the_wall_friction_of_a_thin_plate_in_the_stream_is_blasius() {
 ///   and a `--field` not named `.vtu`.
 #[test]
 fn aero2d_runs_a_body_at_rest_for_a_duration() {
-    let dir = std::env::temp_dir().join(format!("fwav-ns-duration-{}", std::process::id()));
-    std::fs::remove_dir_all(&dir).ok();
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::program::scratch("ns-duration");
     let circle = circle_file(&dir);
     let circle = circle.to_str().unwrap();
     let csv = dir.join("start.csv");
