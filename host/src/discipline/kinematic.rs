@@ -60,16 +60,23 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use crate::aeroelastic::kinematics::FlappingKinematics;
-use crate::optimize::anom::{Anom, AnomError, Goal};
+use crate::optimize::anom::{Anom, Goal};
 use crate::optimize::doe::{DoeError, OrthogonalArray};
-use crate::optimize::nsga2::{minimize, Bounds, Evaluation, Nsga2Config, Nsga2Error};
+use crate::optimize::nsga2::{minimize, Bounds, Evaluation, Nsga2Config};
 use crate::optimize::rsm::{fit_reduced, ReduceOptions, ReducedFit, RsmError};
 
 pub use super::design_space::DesignSpace;
+pub use error::KinematicError;
+pub use objective::{ObjectiveReference, Weights};
 
 use super::cache::EvaluationCache;
 use super::section::{SectionCase, SectionResult};
 use super::section_model::ModelledSection;
+
+mod error;
+mod objective;
+
+use objective::Objective;
 
 /// One direct evaluation.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -162,110 +169,6 @@ impl KinematicResult {
             .chain(&self.runs)
             .chain(self.candidates.iter().map(|c| &c.confirmation))
     }
-}
-
-/// Why the discipline stopped.
-#[derive(Debug, thiserror::Error)]
-pub enum KinematicError {
-    /// The initial design could not be evaluated.
-    #[error("the initial design's 2D run failed: {0}")]
-    Initial(String),
-    /// The initial design gives no net thrust, so it cannot be the
-    /// objective's reference (its ratios would flip sign).
-    #[error(
-        "the initial design's net thrust coefficient {ct_net:.4} (before the friction estimate \
-         {ct:.4}) and net efficiency {efficiency_net:.4} must be positive to serve as the \
-         objective's reference: start from kinematics that produce thrust (a higher frequency \
-         or amplitude)"
-    )]
-    NoNetThrust {
-        /// Net thrust coefficient (CT less friction).
-        ct_net: f64,
-        /// Thrust coefficient before the friction estimate (the LDVM's
-        /// inviscid one; the net one for the Navier–Stokes model).
-        ct: f64,
-        /// Net efficiency.
-        efficiency_net: f64,
-    },
-    /// The L18 array could not be laid out over the design space's
-    /// levels.
-    #[error("the L18 array over the design space: {0}")]
-    Array(#[from] DoeError),
-    /// Every row of the L18 array failed its 2D analysis, so there is
-    /// nothing to compare or fit.
-    #[error(
-        "every one of the {rows} L18 rows' 2D analyses failed, the first with: {first}; \
-         bring the design space's levels within what the section model can run"
-    )]
-    EveryRowFailed {
-        /// The rows run.
-        rows: usize,
-        /// Why the first row failed (as recorded, also in a cache).
-        first: String,
-    },
-    /// ANOM refused the rows' combined objectives.
-    #[error("ANOM of the L18 rows' combined objective: {0}")]
-    Anom(#[from] AnomError),
-    /// A response surface could not be fitted to the rows.
-    #[error("the {response} response surface over the L18 rows: {source}")]
-    Surface {
-        /// The response: `"thrust"` or `"efficiency"`.
-        response: &'static str,
-        /// Why the fit failed.
-        source: RsmError,
-    },
-    /// NSGA-II refused its bounds or settings.
-    #[error("NSGA-II on the response surfaces: {0}")]
-    Search(#[from] Nsga2Error),
-    /// Every design on the response surfaces' front violates the
-    /// actuator's limits.
-    #[error(
-        "NSGA-II found no design on the response surfaces that the actuator can fly with its \
-         reserve: widen the design space toward lower frequencies and amplitudes, or give the \
-         actuator more reach (gear ratio, spring, battery)"
-    )]
-    NothingFlyable,
-}
-
-/// The combined objective's reference: the net thrust coefficient and net
-/// efficiency the design's objectives are divided by (the first cycle's
-/// initial design's: see the module docs).
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct ObjectiveReference {
-    /// `CT_0`, net.
-    pub ct_net: f64,
-    /// `eta_0`, net.
-    pub efficiency_net: f64,
-}
-
-impl ObjectiveReference {
-    /// The reference a run's result gives: refused unless both are
-    /// positive (the ratios would flip sign).
-    ///
-    /// # Errors
-    /// [`KinematicError::NoNetThrust`].
-    pub fn of(result: &SectionResult) -> Result<Self, KinematicError> {
-        if !(result.ct_net > 0.0 && result.efficiency_net > 0.0) {
-            return Err(KinematicError::NoNetThrust {
-                ct_net: result.ct_net,
-                ct: result.ct,
-                efficiency_net: result.efficiency_net,
-            });
-        }
-        Ok(Self {
-            ct_net: result.ct_net,
-            efficiency_net: result.efficiency_net,
-        })
-    }
-}
-
-/// Weights of the combined objective.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Weights {
-    /// Weight of `CT / CT_0`.
-    pub thrust: f64,
-    /// Weight of `eta / eta_0`.
-    pub efficiency: f64,
 }
 
 /// Direct evaluations a run of the discipline makes: the initial design,
@@ -496,51 +399,6 @@ impl Evaluations<'_> {
         *done += 1;
         (self.progress)(*done, EVALUATIONS);
         Evaluated { design, result }
-    }
-}
-
-/// The combined objective, relative to the initial design's results, and
-/// the actuator's constraint.
-struct Objective<'a> {
-    weights: Weights,
-    reference: ObjectiveReference,
-    violation: Violation<'a>,
-}
-
-impl Objective<'_> {
-    /// The combined objective of a result, on the net thrust and net
-    /// efficiency.
-    fn combined(&self, r: &SectionResult) -> f64 {
-        self.weights.thrust * r.ct_net / self.reference.ct_net
-            + self.weights.efficiency * r.efficiency_net / self.reference.efficiency_net
-    }
-
-    /// The margin by which one evaluation's combined objective must
-    /// exceed another's, near `result`, to be better beyond the
-    /// evaluations' `scatter` (relative standard deviations of the net
-    /// thrust and efficiency, the flow model's [`window_scatter`]): one
-    /// standard deviation of the difference of two independent runs,
-    /// `√2 (w_ct s_ct CT/CT_0 + w_eta s_eta eta/eta_0)` (the two scatters
-    /// added as if fully correlated, the larger bound).
-    ///
-    /// [`window_scatter`]: crate::discipline::section_model::SectionFlowModel::window_scatter
-    fn margin(&self, result: &SectionResult, scatter: (f64, f64)) -> f64 {
-        let spread = self.weights.thrust * scatter.0 * result.ct_net / self.reference.ct_net
-            + self.weights.efficiency * scatter.1 * result.efficiency_net
-                / self.reference.efficiency_net;
-        std::f64::consts::SQRT_2 * spread.abs()
-    }
-
-    /// The combined objective of a run, None if it failed.
-    fn score(&self, e: &Evaluated) -> Option<f64> {
-        e.result.as_ref().ok().map(|r| self.combined(r))
-    }
-
-    /// The combined objective of the surfaces' objectives `[-CT_net,
-    /// -eta_net]`.
-    fn predicted(&self, o: &[f64]) -> f64 {
-        self.weights.thrust * -o[0] / self.reference.ct_net
-            + self.weights.efficiency * -o[1] / self.reference.efficiency_net
     }
 }
 
