@@ -9,25 +9,23 @@
 //! with the system analysis that writes it).
 
 use std::f64::consts::PI;
-use std::path::Path;
 
 use super::camber::CamberHistory;
 use super::friction::friction_history;
 use super::history::{cycle_mean_of, cycle_means, cycle_means_until, History};
 use super::ldvm::{FreeVortex, Ldvm, Settings};
 use super::motion::Motion;
-use super::naca::{read_points, Naca4, NacaError, TrailingEdge};
-use super::panel::DEFAULT_PANELS;
 use super::panel::{PanelSettings, PanelSolver, SectionShape, ShapeHistory};
 use super::theory::garrick_plunge;
 use super::viscous::{
-    FlowField, FrameSink, NoFrames, SectionPath, SurfaceLoads, ViscousSection, ViscousShape,
-    STILL_KICK_RATE,
+    FlowField, FrameSink, NoFrames, SectionPath, SurfaceLoads, ViscousSection, STILL_KICK_RATE,
 };
 use super::window::WindowStatistics;
 
 mod error;
+mod section_model;
 pub use error::CaseError;
+pub use section_model::{check_contour_history, SectionModel};
 
 /// Fewest chord stations a thin section's deformation is resampled onto.
 const MIN_CAMBER_STATIONS: usize = 21;
@@ -87,161 +85,6 @@ pub const PERIODIC_CHANGE: f64 = 0.1;
 /// work (its efficiency is undefined): a section that does not move has
 /// exactly zero; a plunge of 1e-4 chords at k = 1 still has about 1e-8.
 const NO_INPUT_POWER: f64 = 1e-12;
-
-/// The section and, with it, the solver.
-#[derive(Clone, Debug, PartialEq)]
-pub enum SectionModel {
-    /// A thin line (flat plate, or the deforming mid-line): LDVM.
-    Flat,
-    /// A closed contour: the panel method.
-    Thick(SectionShape),
-    /// Laminar Navier–Stokes ([`super::viscous`]).
-    Viscous(ViscousSection),
-}
-
-impl SectionModel {
-    /// The section a name means: `flat`, a NACA 4-digit name (closed
-    /// trailing edge, [`DEFAULT_PANELS`] panels), or a point file (Selig
-    /// order or clockwise from the trailing edge, chords).
-    pub fn named(name: &str) -> Result<Self, CaseError> {
-        if name == "flat" {
-            return Ok(Self::Flat);
-        }
-        let points = match name.parse::<Naca4>() {
-            Ok(naca) if naca.thickness > MAX_NACA_THICKNESS => {
-                return Err(CaseError::TooThick {
-                    name: name.to_string(),
-                    thickness_percent: 100.0 * naca.thickness,
-                    max_percent: 100.0 * MAX_NACA_THICKNESS,
-                })
-            }
-            Ok(naca) => naca.points(DEFAULT_PANELS, TrailingEdge::Closed)?,
-            Err(naca) => {
-                let points = point_file(name, naca)?;
-                if points.len() < MIN_SECTION_POINTS {
-                    return Err(CaseError::TooFewPoints {
-                        path: name.to_string(),
-                        got: points.len(),
-                        min: MIN_SECTION_POINTS,
-                    });
-                }
-                points
-            }
-        };
-        Ok(Self::Thick(SectionShape::new(&points)?))
-    }
-
-    /// The section a name means to the viscous model: `flat` (a plate of
-    /// `plate_thickness` chords with semicircular ends), a NACA 4-digit
-    /// name or a point file (any closed contour, chords): a sharp trailing
-    /// edge is opened to [`super::viscous::TRAILING_EDGE_THICKNESS`], see
-    /// [`ViscousShape::from_points`].
-    pub fn named_viscous(name: &str, plate_thickness: f64) -> Result<ViscousShape, CaseError> {
-        Self::named_viscous_deforming(name, plate_thickness, None)
-    }
-
-    /// [`Self::named_viscous`], its deformation `history` (if any) checked
-    /// against the section's points as given: a thick section's history
-    /// must be its whole contour at each sample ([`check_contour_history`];
-    /// the plate's mid-lines are checked by the run).
-    ///
-    /// # Errors
-    /// As [`Self::named_viscous`]; [`CaseError::ContourPoints`].
-    pub fn named_viscous_deforming(
-        name: &str,
-        plate_thickness: f64,
-        history: Option<&[Vec<(f64, f64)>]>,
-    ) -> Result<ViscousShape, CaseError> {
-        let Some(points) = Self::viscous_points(name)? else {
-            return Ok(ViscousShape::Plate(plate_thickness));
-        };
-        if let Some(samples) = history {
-            check_contour_history(&points, samples)?;
-        }
-        Ok(ViscousShape::from_points(&points)?)
-    }
-
-    /// The points a named section is drawn through for the viscous model,
-    /// as given (before a sharp trailing edge is opened): a NACA 4-digit
-    /// name's 401, the last repeating the first (400 distinct), a point
-    /// file's; `None` for `flat`, the plate.
-    fn viscous_points(name: &str) -> Result<Option<Vec<(f64, f64)>>, CaseError> {
-        if name == "flat" {
-            return Ok(None);
-        }
-        let points = match name.parse::<Naca4>() {
-            Ok(naca) => naca.points(2 * NACA_SIDE_POINTS, TrailingEdge::Closed)?,
-            Err(naca) => point_file(name, naca)?,
-        };
-        Ok(Some(points))
-    }
-
-    /// Whether it is the thin line.
-    pub fn is_flat(&self) -> bool {
-        matches!(self, Self::Flat)
-    }
-}
-
-/// Checks that each of a thick section's deformation `samples` gives as
-/// many points as `section`, as the deformation's samples must (its whole
-/// contour, point for point in the section's order: [`Case::deformation`]);
-/// a last point within `1e-9` of the contour's size of the first is
-/// counted on neither, as the panel method closes a contour
-/// ([`SectionShape::new`]). The Navier–Stokes model runs the samples'
-/// shapes, so this count is what ties them to the section it names: the
-/// panel method checks its vertices alike
-/// ([`crate::aero2d::panel::PanelError::HistoryMismatch`]). A history of
-/// another section drawn on as many points still passes.
-///
-/// # Errors
-/// [`CaseError::ContourPoints`] naming the first sample that differs.
-pub fn check_contour_history(
-    section: &[(f64, f64)],
-    samples: &[Vec<(f64, f64)>],
-) -> Result<(), CaseError> {
-    let distinct = |points: &[(f64, f64)]| {
-        let size = points
-            .iter()
-            .map(|p| p.0.abs().max(p.1.abs()))
-            .fold(0.0_f64, f64::max);
-        match (points.first(), points.last()) {
-            (Some(a), Some(b))
-                if points.len() > 1 && (a.0 - b.0).hypot(a.1 - b.1) <= 1e-9 * size =>
-            {
-                points.len() - 1
-            }
-            _ => points.len(),
-        }
-    };
-    let expected = distinct(section);
-    match samples
-        .iter()
-        .map(|s| distinct(s))
-        .enumerate()
-        .find(|&(_, found)| found != expected)
-    {
-        Some((sample, found)) => Err(CaseError::ContourPoints {
-            sample,
-            found,
-            expected,
-        }),
-        None => Ok(()),
-    }
-}
-
-/// The points of the section file `name`, or, when there is no such
-/// file, why `name` is no section (it was not a NACA name either:
-/// `naca`).
-fn point_file(name: &str, naca: NacaError) -> Result<Vec<(f64, f64)>, CaseError> {
-    let path = Path::new(name);
-    if !path.exists() {
-        return Err(CaseError::SectionName {
-            name: name.to_string(),
-            naca,
-        });
-    }
-    Ok(read_points(path)?.points)
-}
 
 /// One 2D analysis.
 #[derive(Clone, Debug, PartialEq)]
@@ -684,6 +527,9 @@ impl CaseRun {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::aero2d::naca::{Naca4, TrailingEdge};
+    use crate::aero2d::panel::DEFAULT_PANELS;
+    use crate::aero2d::viscous::ViscousShape;
 
     /// A deformation history without a sample is refused by every model
     /// alike, before a step (the LDVM's message spoke of a period, the
@@ -701,32 +547,6 @@ mod tests {
             };
             let err = case.run().unwrap_err();
             assert!(matches!(err, CaseError::NoDeformationSamples), "{err:?}");
-        }
-    }
-
-    /// A thick section's history must give its whole contour at every
-    /// sample: as many points as the section, a closing point that
-    /// repeats the first (to rounding) counted on neither side; the first
-    /// sample that differs is named.
-    #[test]
-    fn a_contour_history_is_held_to_the_sections_points() {
-        let square = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
-        let closed: Vec<(f64, f64)> = square.iter().chain(&square[..1]).copied().collect();
-        let moved: Vec<(f64, f64)> = square.iter().map(|&(x, y)| (x, y + 0.1)).collect();
-        assert!(check_contour_history(&square, &[closed.clone(), moved.clone()]).is_ok());
-        assert!(check_contour_history(&closed, &[square.to_vec(), moved.clone()]).is_ok());
-        // Closed to rounding, as a file's last point may be.
-        let mut rounded = closed.clone();
-        rounded[4].1 += 1e-12;
-        assert!(check_contour_history(&square, &[rounded]).is_ok());
-        let short = square[..3].to_vec();
-        match check_contour_history(&closed, &[moved, short.clone(), short]) {
-            Err(CaseError::ContourPoints {
-                sample: 1,
-                found: 3,
-                expected: 4,
-            }) => {}
-            other => panic!("{other:?}"),
         }
     }
 
