@@ -42,7 +42,8 @@ enum Command {
         /// Print the report as JSON.
         #[arg(long)]
         json: bool,
-        /// Draw commanded vs measured angle, current and duty to this PNG.
+        /// Draw commanded vs measured angle, current and duty to this PNG
+        /// (a file that exists is refused).
         #[arg(long)]
         plot: Option<PathBuf>,
     },
@@ -133,6 +134,13 @@ fn run(cli: Cli) -> Result<ExitCode> {
             json,
             plot,
         } => {
+            if let Some(png) = plot.as_ref().filter(|p| p.symlink_metadata().is_ok()) {
+                anyhow::bail!(
+                    "--plot {}: the file exists (an existing file is never overwritten); \
+                     choose a new name or remove it",
+                    png.display()
+                );
+            }
             let plant = load_plant(plant.as_deref())?;
             let text = std::fs::read_to_string(&path)
                 .with_context(|| format!("cannot read {}", path.display()))?;

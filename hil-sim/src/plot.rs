@@ -22,6 +22,10 @@ pub enum PlotError {
     /// The plotting backend failed otherwise (its message).
     #[error("{0}")]
     Backend(String),
+    /// Something has the picture's name: it is left as it was (an
+    /// existing file is never overwritten).
+    #[error("{0} exists, and is left as it is (an existing file is never overwritten): choose a new name or remove it")]
+    Exists(std::path::PathBuf),
 }
 
 /// The bitmap backend's errors, whose own text is Rust's debug form
@@ -47,8 +51,42 @@ impl From<DrawingAreaErrorKind<BitMapBackendError>> for PlotError {
     }
 }
 
-/// Draws the last second of `trace` to `png`.
+/// Draws the last second of `trace` to the new file `png`: the picture
+/// is drawn under a temporary name beside it and takes the name only if
+/// nothing has it ([`PlotError::Exists`]), so that a file there, or made
+/// meanwhile, is never replaced.
 pub fn draw(trace: &[TracePoint], png: &Path) -> Result<(), PlotError> {
+    if png.symlink_metadata().is_ok() {
+        return Err(PlotError::Exists(png.to_path_buf()));
+    }
+    let dir = match png.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    // The encoder reads the format from the extension.
+    let mut builder = tempfile::Builder::new();
+    // A file anyone may read, as the umask allows (a temporary file's own
+    // default is its owner's only).
+    #[cfg(unix)]
+    builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
+    let temporary = builder
+        .prefix(".hil-sim-plot.")
+        .suffix(".partial.png")
+        .tempfile_in(dir)
+        .map_err(|e| PlotError::File(Box::new(e)))?;
+    draw_to(trace, temporary.path())?;
+    temporary.persist_noclobber(png).map_err(|e| {
+        if e.error.kind() == std::io::ErrorKind::AlreadyExists {
+            PlotError::Exists(png.to_path_buf())
+        } else {
+            PlotError::File(Box::new(e.error))
+        }
+    })?;
+    Ok(())
+}
+
+/// Draws the last second of `trace` to `png`, whatever is there.
+fn draw_to(trace: &[TracePoint], png: &Path) -> Result<(), PlotError> {
     let end = trace.last().map_or(0.0, |p| p.sample.time_s);
     let shown: Vec<&TracePoint> = trace
         .iter()

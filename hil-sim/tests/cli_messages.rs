@@ -152,3 +152,43 @@ fn a_picture_that_cannot_be_written_is_named_without_debug_text() {
         "{stderr}"
     );
 }
+
+/// A picture is never drawn over a file (the mission's "no user file
+/// overwritten"; until 2026-12-07 `--plot` replaced whatever had the
+/// name): a taken name is refused before the run, the file left as it
+/// was; a new name gets the picture, with no temporary file beside it,
+/// and the same run again is refused.
+#[test]
+fn a_picture_is_never_drawn_over_a_file() {
+    let scratch = Scratch::new("taken");
+    let scenario = scratch.file("short.toml", SCENARIO);
+    let mine = scratch.file("mine.png", "mine");
+    let out = hil_sim(&["run", &scenario, "--plot", &mine]);
+    let stderr = assert_plain_error(&out);
+    assert!(
+        stderr.contains("--plot") && stderr.contains(&mine),
+        "{stderr}"
+    );
+    assert!(stderr.contains("never overwritten"), "{stderr}");
+    assert!(out.stdout.is_empty(), "the run went on");
+    assert_eq!(std::fs::read_to_string(&mine).unwrap(), "mine");
+
+    let png = scratch.0.join("run.png");
+    let png = png.to_str().unwrap();
+    let out = hil_sim(&["run", &scenario, "--plot", png]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let bytes = std::fs::read(png).unwrap();
+    assert_eq!(&bytes[..4], b"\x89PNG");
+    let mut names: Vec<_> = std::fs::read_dir(&scratch.0)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["mine.png", "run.png", "short.toml"]);
+    assert_plain_error(&hil_sim(&["run", &scenario, "--plot", png]));
+    assert_eq!(std::fs::read(png).unwrap(), bytes);
+}

@@ -3,17 +3,62 @@
 //! (a rename within one directory is atomic on the file systems fwav runs
 //! on). A run killed at any moment leaves either the old file or the new
 //! one, and at worst a stray `.partial` that the next write replaces.
+//! That is for the files a run owns (a design run's directory).
+//!
+//! A file the user names (`--plot`, `--history`, an output directory's
+//! files) is never replaced: [`create_new`] and [`write_new`] make it
+//! under a temporary name beside its target and give it the target's
+//! name only if nothing has it (`tempfile`'s `persist_noclobber`, a link
+//! or a no-replace rename), so a file that was there, or was made while
+//! the run went on, is left as it was, and a killed run leaves no half
+//! file under the name. The commands also refuse such a name before
+//! they start, so that a long run is not lost at its end.
 
 use std::path::{Path, PathBuf};
 
+/// What a write does with a file that has its name already.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Existing {
+    /// Replace it: a file the run owns ([`write_atomic_to`]).
+    Replace,
+    /// Keep it and refuse: a file the user named ([`write_new`]).
+    Keep,
+}
+
 /// A file could not be written.
 #[derive(Debug, thiserror::Error)]
-#[error("writing {path}: {source}")]
-pub struct WriteError {
-    /// The file.
-    pub path: PathBuf,
-    /// The cause.
-    pub source: std::io::Error,
+pub enum WriteError {
+    /// Something has the name already, and is kept ([`Existing::Keep`]).
+    #[error(
+        "{path} exists, and is left as it is (an existing file is never overwritten): \
+         choose a new name or remove it"
+    )]
+    Exists {
+        /// The name.
+        path: PathBuf,
+    },
+    /// The file system refused (no such directory, no permission, disk
+    /// full).
+    #[error("writing {path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
+}
+
+/// Writes `contents` to `path` as `existing` says: atomically over what
+/// is there ([`write_atomic_to`]), or only if nothing is ([`write_new`]).
+pub fn write_to(
+    path: &Path,
+    contents: impl AsRef<[u8]>,
+    existing: Existing,
+) -> Result<(), WriteError> {
+    match existing {
+        Existing::Replace => write_atomic_to(path, contents),
+        Existing::Keep => write_new(path, contents),
+    }
 }
 
 /// Writes `contents` to `dir/name` atomically (module docs).
@@ -32,12 +77,81 @@ pub fn write_atomic(
 pub fn write_atomic_to(path: &Path, contents: impl AsRef<[u8]>) -> Result<(), WriteError> {
     let mut temporary = path.as_os_str().to_owned();
     temporary.push(".partial");
-    let error = |source| WriteError {
+    let error = |source| WriteError::Io {
         path: path.to_path_buf(),
         source,
     };
     std::fs::write(&temporary, contents).map_err(error)?;
     std::fs::rename(&temporary, path).map_err(error)
+}
+
+/// Makes the file `path`, which must not exist, by `make` and nothing
+/// else (module docs): `make` writes a temporary file beside `path`, whose
+/// name it is given (it ends in `path`'s extension, which some writers
+/// read the format from); the file then takes the name `path` if nothing
+/// has it, and is removed otherwise, or if `make` fails.
+///
+/// Errors: `make`'s, or [`WriteError`] (into `E`): `path` exists
+/// (before or after `make`: [`WriteError::Exists`]), or its directory
+/// cannot hold the file.
+pub fn create_new<E: From<WriteError>>(
+    path: &Path,
+    make: impl FnOnce(&Path) -> Result<(), E>,
+) -> Result<(), E> {
+    let taken = || WriteError::Exists {
+        path: path.to_path_buf(),
+    };
+    let io = |source| WriteError::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    if std::fs::symlink_metadata(path).is_ok() {
+        return Err(taken().into());
+    }
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let mut suffix = String::from(".partial");
+    if let Some(extension) = path.extension() {
+        suffix.push('.');
+        suffix.push_str(&extension.to_string_lossy());
+    }
+    let prefix = format!(
+        ".{}.",
+        path.file_name().unwrap_or_default().to_string_lossy()
+    );
+    let mut builder = tempfile::Builder::new();
+    // A file anyone may read, as the umask allows (a temporary file's own
+    // default is its owner's only).
+    #[cfg(unix)]
+    builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
+    let temporary = builder
+        .prefix(&prefix)
+        .suffix(&suffix)
+        .tempfile_in(dir)
+        .map_err(io)?;
+    // On failure the temporary file is removed when dropped.
+    make(temporary.path())?;
+    temporary.persist_noclobber(path).map_err(|e| {
+        if e.error.kind() == std::io::ErrorKind::AlreadyExists {
+            taken()
+        } else {
+            io(e.error)
+        }
+    })?;
+    Ok(())
+}
+
+/// Writes `contents` to `path`, which must not exist, as [`create_new`]
+/// does.
+pub fn write_new(path: &Path, contents: impl AsRef<[u8]>) -> Result<(), WriteError> {
+    create_new(path, |temporary| {
+        std::fs::write(temporary, contents).map_err(|source| WriteError::Io {
+            path: path.to_path_buf(),
+            source,
+        })
+    })
 }
 
 #[cfg(test)]
@@ -56,6 +170,74 @@ mod tests {
         assert!(!dir.join("a.txt.partial").exists());
         let e = write_atomic(&dir.join("missing"), "b.txt", "x").unwrap_err();
         assert!(e.to_string().contains("b.txt"), "{e}");
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    /// The names in `dir`, sorted.
+    fn names(dir: &Path) -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    }
+
+    /// A user's file is never replaced: not one there before, not one
+    /// made while the new one was being written; a failed or refused
+    /// write leaves no temporary file; a missing directory is named.
+    #[test]
+    fn a_new_file_never_replaces_one() {
+        let dir = std::env::temp_dir().join(format!("fwav-new-files-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        let mine = dir.join("plot.png");
+        std::fs::write(&mine, "mine").unwrap();
+        let e = write_new(&mine, "new").unwrap_err();
+        assert!(
+            matches!(&e, WriteError::Exists { path } if path == &mine),
+            "{e}"
+        );
+        assert!(e.to_string().contains("never overwritten"), "{e}");
+        assert_eq!(std::fs::read_to_string(&mine).unwrap(), "mine");
+        assert_eq!(names(&dir), ["plot.png"]);
+
+        // Made meanwhile: the maker's file is dropped, the other kept.
+        let late = dir.join("late.csv");
+        let e = create_new(&late, |temporary| {
+            assert!(temporary.to_string_lossy().ends_with(".csv"));
+            std::fs::write(temporary, "new").unwrap();
+            std::fs::write(&late, "theirs").unwrap();
+            Ok::<(), WriteError>(())
+        })
+        .unwrap_err();
+        assert!(matches!(e, WriteError::Exists { .. }), "{e}");
+        assert_eq!(std::fs::read_to_string(&late).unwrap(), "theirs");
+        assert_eq!(names(&dir), ["late.csv", "plot.png"]);
+
+        // A maker that fails leaves nothing.
+        let failed = dir.join("failed.png");
+        let e = create_new(&failed, |_| {
+            Err(WriteError::Io {
+                path: failed.clone(),
+                source: std::io::Error::other("the encoder gave up"),
+            })
+        })
+        .unwrap_err();
+        assert!(e.to_string().contains("the encoder gave up"), "{e}");
+        assert_eq!(names(&dir), ["late.csv", "plot.png"]);
+
+        // A new name gets the whole file, and only it is left.
+        let fresh = dir.join("history.csv");
+        write_new(&fresh, "t,cl\n").unwrap();
+        assert_eq!(std::fs::read_to_string(&fresh).unwrap(), "t,cl\n");
+        assert_eq!(names(&dir), ["history.csv", "late.csv", "plot.png"]);
+
+        let e = write_new(&dir.join("missing").join("b.txt"), "x").unwrap_err();
+        assert!(
+            matches!(&e, WriteError::Io { path, .. } if path.ends_with("missing/b.txt")),
+            "{e}"
+        );
         std::fs::remove_dir_all(&dir).ok();
     }
 }

@@ -16,6 +16,7 @@ mod cli {
     pub mod design;
     pub mod fly;
     pub mod kinematics;
+    pub mod new_files;
     pub mod progress;
     pub mod study;
     pub mod system;
@@ -136,7 +137,7 @@ enum Command {
         /// Serial port.
         #[arg(long)]
         port: String,
-        /// Log every sample to this CSV file.
+        /// Log every sample to this CSV file (a file that exists is refused).
         #[arg(long)]
         csv: Option<PathBuf>,
         /// One sample every N control steps (100 = 100 Hz at 10 kHz).

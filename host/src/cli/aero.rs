@@ -11,11 +11,14 @@ use fwav::aero2d::motion::Motion;
 use fwav::aero2d::viscous::{FlowField, FrameSink, ViscousSection};
 use fwav::aero2d::window::MIN_SHEDDING_PERIODS;
 use fwav::aeroelastic::handoff::SectionFile;
+use fwav::files::create_new;
 use fwav::output::flow_field_vtu::{write_flow_field, FlowSeries};
 use fwav::output::history_csv::write_history_csv;
 use fwav::output::section_plot::draw;
 use fwav::output::surface_csv::write_surface_csv;
 use indicatif::ProgressBar;
+
+use super::new_files::refuse_taken;
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -103,7 +106,7 @@ pub struct Aero2dArgs {
     #[arg(long)]
     pub deformation: Option<PathBuf>,
     /// Draw the wake (the vorticity, for `ns`) and the force histories to
-    /// this PNG.
+    /// this PNG (a file that exists is refused).
     #[arg(long)]
     pub plot: Option<PathBuf>,
     /// Write the load histories to this CSV (time in chords travelled,
@@ -251,8 +254,8 @@ fn check(a: &Aero2dArgs) -> Result<()> {
     Ok(())
 }
 
-/// Refuses, before the run, a data file to write that exists: the files
-/// are never overwritten, and a long viscous run is not lost to a name
+/// Refuses, before the run, a file to write that exists (the picture
+/// too): the files are never overwritten, and a long viscous run is not lost to a name
 /// found taken at its end (the writes refuse one made meanwhile too).
 /// And a `--field` not named `.vtu`, which ParaView would open with
 /// another reader; and a `--field-series` directory that is a file or
@@ -280,20 +283,16 @@ fn check_outputs(a: &Aero2dArgs) -> Result<()> {
             );
         }
     }
-    for (flag, path) in [
-        ("--history", &a.history),
-        ("--surface", &a.surface),
-        ("--field", &a.field),
-    ] {
-        if let Some(path) = path.as_ref().filter(|p| p.exists()) {
-            bail!(
-                "{flag} {}: the file exists (an existing file is never overwritten); \
-                 choose a new name or remove it",
-                path.display()
-            );
-        }
-    }
-    Ok(())
+    refuse_taken(
+        [
+            ("--plot", &a.plot),
+            ("--history", &a.history),
+            ("--surface", &a.surface),
+            ("--field", &a.field),
+        ]
+        .into_iter()
+        .filter_map(|(flag, path)| Some((flag, path.as_deref()?))),
+    )
 }
 
 /// The context of a data file's failed write (its cause follows it;
@@ -504,8 +503,10 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
     if let Some(png) = &a.plot {
         // A run of a given duration has no periods to mark.
         let period = a.duration.is_none().then_some(run.period);
-        draw(&run.history, &run.vortices, &run.body, period, png)
-            .with_context(|| format!("--plot {}", png.display()))?;
+        create_new(png, |temporary| {
+            draw(&run.history, &run.vortices, &run.body, period, temporary)
+        })
+        .with_context(|| format!("--plot {}", png.display()))?;
     }
     if let Some(csv) = &a.history {
         write_history_csv(&run.history, csv).with_context(|| not_written("--history", csv))?;

@@ -371,13 +371,34 @@ pub fn monitor(
     duration: Option<f64>,
 ) -> Result<()> {
     let stop = stop_signals()?;
-    let mut device = connect(path)?;
-    let mut csv = match csv {
-        Some(p) => {
-            let mut f = std::io::BufWriter::new(
-                std::fs::File::create(p)
-                    .with_context(|| format!("cannot create {}", p.display()))?,
-            );
+    // The log's name is checked before the link is opened: a file that
+    // exists is never overwritten.
+    let csv_file = match csv {
+        Some(p) => Some(
+            std::fs::OpenOptions::new()
+                .write(true)
+                .create_new(true)
+                .open(p)
+                .map_err(|e| match e.kind() {
+                    std::io::ErrorKind::AlreadyExists => anyhow::anyhow!(
+                        "--csv {}: the file exists (an existing file is never overwritten); \
+                         choose a new name or remove it",
+                        p.display()
+                    ),
+                    _ => anyhow::Error::new(e).context(format!("cannot create {}", p.display())),
+                })?,
+        ),
+        None => None,
+    };
+    let mut device = connect(path).inspect_err(|_| {
+        // The log was made above, empty: it goes with the run that failed.
+        if let Some(p) = csv {
+            let _ = std::fs::remove_file(p);
+        }
+    })?;
+    let mut csv = match csv_file {
+        Some(file) => {
+            let mut f = std::io::BufWriter::new(file);
             writeln!(f, "time_s,seq,commanded_deg,measured_deg,duty,current_a,amplitude_est_deg,frequency_est_hz")?;
             Some(f)
         }

@@ -14,8 +14,12 @@ use fwav::discipline::kinematic::{
     optimize_reporting, unconstrained, KinematicResult, Weights, EVALUATIONS,
 };
 use fwav::discipline::section::SectionCase;
+use fwav::files::create_new;
 use fwav::optimize::nsga2::Nsga2Config;
+use fwav::output::discipline_plot;
 use indicatif::ProgressBar;
+
+use super::new_files::refuse_taken_in;
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -32,7 +36,9 @@ pub struct KinematicsArgs {
     /// Keep evaluations in this file and reuse them on a rerun.
     #[arg(long)]
     pub cache: Option<PathBuf>,
-    /// Draw `main-effects.png` and `pareto.png` into this directory.
+    /// Draw `main-effects.png` and `pareto.png` into this directory
+    /// (created if missing; one that holds either is refused: they are
+    /// never overwritten).
     #[arg(long)]
     pub plot: Option<PathBuf>,
     /// Everything (runs, level means, surfaces, Pareto front, candidates)
@@ -41,12 +47,18 @@ pub struct KinematicsArgs {
     pub json: bool,
 }
 
+/// The pictures `--plot` gets.
+const PICTURES: [&str; 2] = ["main-effects.png", "pareto.png"];
+
 /// Runs the command.
 pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     let config = super::system::read_config(a.config.as_deref())?;
     let mut case = config.section_case();
     if let Some(path) = &a.section {
         case.deformation = SectionFile::read(path)?.samples;
+    }
+    if let Some(dir) = &a.plot {
+        refuse_taken_in("--plot", dir, &PICTURES, &[])?;
     }
     let cache = match &a.cache {
         Some(path) => EvaluationCache::kept_in(path)?,
@@ -94,12 +106,13 @@ pub fn run_command(a: &KinematicsArgs) -> Result<()> {
     }
     if let Some(dir) = &a.plot {
         std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-        fwav::output::discipline_plot::main_effects(
-            &result,
-            &config.design_space(),
-            &dir.join("main-effects.png"),
-        )?;
-        fwav::output::discipline_plot::pareto(&result, &dir.join("pareto.png"))?;
+        let space = config.design_space();
+        create_new(&dir.join(PICTURES[0]), |png| {
+            discipline_plot::main_effects(&result, &space, png)
+        })?;
+        create_new(&dir.join(PICTURES[1]), |png| {
+            discipline_plot::pareto(&result, png)
+        })?;
     }
     if a.json {
         let out = serde_json::json!({

@@ -9,7 +9,10 @@ use anyhow::{Context, Result};
 use fwav::aeroelastic::handoff;
 use fwav::aeroelastic::{run, SystemResult};
 use fwav::config::SystemConfig;
+use fwav::files::Existing;
 use fwav::output::wing_series::write_series;
+
+use super::new_files::refuse_taken_in;
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -24,7 +27,9 @@ pub struct SystemArgs {
     /// Write the results here: `section.json` (the mid-span section
     /// history, `fwav aero2d --deformation` format), `pressure.json` (the
     /// pressure jump per shell element over the last cycle), `steps.csv`,
-    /// and `wing.pvd`/`wake.pvd` with their `.vtu` files.
+    /// and `wing.pvd`/`wake.pvd` with their `.vtu` files (created if
+    /// missing; a directory that holds any of these files is refused:
+    /// they are never overwritten).
     #[arg(long)]
     pub out: Option<PathBuf>,
     /// Machine-readable summary on standard output.
@@ -52,6 +57,9 @@ pub fn run_command(a: &SystemArgs) -> Result<()> {
         config.analysis.rigid = true;
     }
     let wing = config.wing_model()?;
+    if let Some(dir) = &a.out {
+        refuse_taken_in("--out", dir, &WRITTEN, &SERIES)?;
+    }
     let show = !a.quiet && std::io::stderr().is_terminal();
     let started = Instant::now();
     let snapshot_every = if a.out.is_some() { 2 } else { 0 };
@@ -133,9 +141,24 @@ pub fn run_command(a: &SystemArgs) -> Result<()> {
     Ok(())
 }
 
+/// The files `--out` gets besides [`SERIES`]: the handoff's and the
+/// series' collections.
+const WRITTEN: [&str; 5] = [
+    handoff::FILES[0],
+    handoff::FILES[1],
+    handoff::FILES[2],
+    "wing.pvd",
+    "wake.pvd",
+];
+
+/// The numbered files `--out` gets (start, end of the name).
+const SERIES: [(&str, &str); 2] = [("wing-", ".vtu"), ("wake-", ".vtu")];
+
+/// Writes the results into `dir`, whose files were refused before the
+/// run if taken, and are not replaced if taken since.
 fn write_outputs(dir: &Path, elements: &[[usize; 4]], result: &SystemResult) -> Result<()> {
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-    handoff::write(dir, result)?;
-    write_series(dir, elements, &result.snapshots)?;
+    handoff::write(dir, result, Existing::Keep)?;
+    write_series(dir, elements, &result.snapshots, Existing::Keep)?;
     Ok(())
 }

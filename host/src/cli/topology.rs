@@ -8,11 +8,13 @@ use std::time::Instant;
 use anyhow::{Context, Result};
 use fwav::aeroelastic::handoff::PressureFile;
 use fwav::aeroelastic::run;
-use fwav::files::write_atomic;
+use fwav::files::{create_new, write_new, Existing};
 use fwav::output::layout_picture;
 use fwav::output::vtu::{self, Field};
 use fwav::topology::eslso::{optimize, DesignProblem, EslsoProgress, EslsoResult};
 use fwav::topology::pressure::PressureHistory;
+
+use super::new_files::refuse_taken_in;
 
 /// The command's options.
 #[derive(clap::Args)]
@@ -27,7 +29,8 @@ pub struct TopologyArgs {
     #[arg(long)]
     pub pressure: Option<PathBuf>,
     /// Write `layout.vtu`, `layout.png`, `cycles.csv` and `topology.json`
-    /// here.
+    /// here (created if missing; a directory that holds any of them is
+    /// refused: they are never overwritten).
     #[arg(long, default_value = "topology")]
     pub out: PathBuf,
     /// Machine-readable summary on standard output.
@@ -42,6 +45,7 @@ pub struct TopologyArgs {
 pub fn run_command(a: &TopologyArgs) -> Result<()> {
     let config = super::system::read_config(a.config.as_deref())?;
     let wing = config.wing_model()?;
+    refuse_taken_in("--out", &a.out, &WRITTEN, &[])?;
     let elements = wing.wing.mesh.elements.len();
     let show = !a.quiet && std::io::stderr().is_terminal();
     let started = Instant::now();
@@ -133,6 +137,11 @@ ESLSO cycle {}: strain energy {:.4e} J, mass fraction {:.3}, peak displacement {
     Ok(())
 }
 
+/// The files `--out` gets.
+const WRITTEN: [&str; 4] = ["layout.vtu", "layout.png", "cycles.csv", "topology.json"];
+
+/// Writes the results into `--out`, whose files were refused before the
+/// run if taken, and are not replaced if taken since.
 fn write_outputs(a: &TopologyArgs, problem: &DesignProblem, result: &EslsoResult) -> Result<()> {
     let dir = &a.out;
     std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
@@ -150,22 +159,20 @@ fn write_outputs(a: &TopologyArgs, problem: &DesignProblem, result: &EslsoResult
             Field::CellScalar("simp_density", &result.densities),
             Field::CellScalar("design_domain", &design),
         ],
+        Existing::Keep,
     )?;
-    layout_picture::planform(
-        &problem.mesh,
-        &result.layout,
-        &format!(
-            "carbon layout after {} ESLSO cycles{}",
-            result.cycles.len(),
-            if result.converged {
-                ""
-            } else {
-                " (not converged)"
-            }
-        ),
-        1200,
-        &dir.join("layout.png"),
-    )?;
+    let title = format!(
+        "carbon layout after {} ESLSO cycles{}",
+        result.cycles.len(),
+        if result.converged {
+            ""
+        } else {
+            " (not converged)"
+        }
+    );
+    create_new(&dir.join("layout.png"), |png| {
+        layout_picture::planform(&problem.mesh, &result.layout, &title, 1200, png)
+    })?;
     let mut csv = String::from(
         "cycle,strain_energy_j,mass_fraction,peak_displacement_m,newton_iterations,simp_iterations,simp_converged,simp_objective_j,changed,flip_margin,analysis_s,optimization_s\n",
     );
@@ -186,7 +193,7 @@ fn write_outputs(a: &TopologyArgs, problem: &DesignProblem, result: &EslsoResult
             c.optimization_s
         ));
     }
-    write_atomic(dir, "cycles.csv", csv)?;
+    write_new(&dir.join("cycles.csv"), csv)?;
     let text = serde_json::json!({
         "description": "ESLSO result: carbon (1) or mylar only (0) per shell element, the last SIMP densities, every cycle",
         "converged": result.converged,
@@ -195,6 +202,6 @@ fn write_outputs(a: &TopologyArgs, problem: &DesignProblem, result: &EslsoResult
         "cycles": result.cycles,
     })
     .to_string();
-    write_atomic(dir, "topology.json", text)?;
+    write_new(&dir.join("topology.json"), text)?;
     Ok(())
 }

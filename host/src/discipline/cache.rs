@@ -47,6 +47,9 @@ pub enum CacheError {
         /// Cause.
         source: std::io::Error,
     },
+    /// Writing the file.
+    #[error("evaluation cache: {0}")]
+    Write(#[from] crate::files::WriteError),
     /// Not a cache file.
     #[error("evaluation cache {path}: {message}")]
     Format {
@@ -144,10 +147,7 @@ impl EvaluationCache {
             path: path.display().to_string(),
             message: e.to_string(),
         })?;
-        crate::files::write_atomic_to(path, text).map_err(|e| CacheError::Io {
-            path: path.display().to_string(),
-            source: e.source,
-        })
+        Ok(crate::files::write_atomic_to(path, text)?)
     }
 
     /// Number of stored evaluations.

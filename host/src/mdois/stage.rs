@@ -32,7 +32,7 @@ use crate::discipline::kinematic::{
     optimize_reporting, KinematicError, KinematicResult, ObjectiveReference, Weights,
 };
 use crate::discipline::section::SectionCase;
-use crate::files::write_atomic;
+use crate::files::{write_atomic, Existing};
 use crate::optimize::nsga2::Nsga2Config;
 use crate::topology::eslso::{optimize_from, DesignProblem, EslsoProgress, EslsoResult};
 use crate::topology::pressure::PressureHistory;
@@ -172,7 +172,7 @@ impl Context<'_> {
         let steps_per_cycle = self.config.analysis.steps_per_cycle;
         let record = SystemRecord::of(design.kinematics, &result, steps_per_cycle);
         let path = self.cycle_path(cycle)?;
-        handoff::write(&path, &result)?;
+        handoff::write(&path, &result, Existing::Replace)?;
         let system_file = records::system::FORMAT.file;
         write_atomic(&path, system_file, record.to_json()?)?;
         let files = handoff::FILES

@@ -19,6 +19,10 @@ pub enum DrawingError {
     /// permission, disk full): the file system's or the encoder's reason.
     #[error("picture: cannot write the file: {0}")]
     File(Box<dyn Error + Send + Sync>),
+    /// The picture's name is taken, or its file could not be made
+    /// ([`crate::files::create_new`]).
+    #[error("picture: {0}")]
+    Write(#[from] crate::files::WriteError),
     /// The text could not be drawn (no font of the family found).
     #[error("picture: font: {0}")]
     Font(Box<dyn Error + Send + Sync>),

@@ -13,6 +13,8 @@ use std::fmt::Write as _;
 use std::io;
 use std::path::Path;
 
+use crate::files::Existing;
+
 use crate::shell::mesh::ShellMesh;
 
 /// A field to write: name and values (3 components a point for vectors).
@@ -76,9 +78,15 @@ pub enum VtuError {
 
 impl From<crate::files::WriteError> for VtuError {
     fn from(e: crate::files::WriteError) -> Self {
-        Self::Io {
-            path: e.path.display().to_string(),
-            source: e.source,
+        use crate::files::WriteError;
+        match e {
+            WriteError::Exists { path } => Self::Exists {
+                path: path.display().to_string(),
+            },
+            WriteError::Io { path, source } => Self::Io {
+                path: path.display().to_string(),
+                source,
+            },
         }
     }
 }
@@ -296,12 +304,18 @@ fn scalar_array(s: &mut String, name: &str, v: &[f64]) {
     s.push_str("\n</DataArray>\n");
 }
 
-/// Writes `mesh` with `fields` to `path` atomically
-/// ([`crate::files::write_atomic_to`]).
-pub fn write(path: &Path, mesh: &ShellMesh, fields: &[Field<'_>]) -> Result<(), VtuError> {
-    Ok(crate::files::write_atomic_to(
+/// Writes `mesh` with `fields` to `path` atomically, over a file there
+/// or not as `existing` says ([`crate::files::write_to`]).
+pub fn write(
+    path: &Path,
+    mesh: &ShellMesh,
+    fields: &[Field<'_>],
+    existing: Existing,
+) -> Result<(), VtuError> {
+    Ok(crate::files::write_to(
         path,
         to_string(mesh, fields)?,
+        existing,
     )?)
 }
 

@@ -6,17 +6,19 @@
 use std::path::{Path, PathBuf};
 
 use crate::aeroelastic::analysis::Snapshot;
+use crate::files::Existing;
 use crate::shell::mesh::ShellMesh;
 
 use super::vtu::{self, Field, VtuError};
 
 /// Writes `wing-NNNN.vtu`, `wake-NNNN.vtu`, `wing.pvd` and `wake.pvd` into
-/// `dir` (created if missing); `elements` are the shell elements. Returns
-/// the two `.pvd` paths.
+/// `dir` (created if missing), over files there or not as `existing`
+/// says; `elements` are the shell elements. Returns the two `.pvd` paths.
 pub fn write_series(
     dir: &Path,
     elements: &[[usize; 4]],
     snapshots: &[Snapshot],
+    existing: Existing,
 ) -> Result<[PathBuf; 2], VtuError> {
     let io = |path: &Path, source| VtuError::Io {
         path: path.display().to_string(),
@@ -35,6 +37,7 @@ pub fn write_series(
             &dir.join(&name),
             &wing,
             &[Field::CellScalar("pressure_jump_pa", &s.element_pressure)],
+            existing,
         )?;
         wing_entries.push((s.time, name));
         let (wake, strength) = wake_mesh(s);
@@ -43,13 +46,14 @@ pub fn write_series(
             &dir.join(&name),
             &wake,
             &[Field::CellScalar("circulation_m2_s", &strength)],
+            existing,
         )?;
         wake_entries.push((s.time, name));
     }
     let wing_pvd = dir.join("wing.pvd");
     let wake_pvd = dir.join("wake.pvd");
     for (path, entries) in [(&wing_pvd, &wing_entries), (&wake_pvd, &wake_entries)] {
-        crate::files::write_atomic_to(path, vtu::collection(entries))?;
+        crate::files::write_to(path, vtu::collection(entries), existing)?;
     }
     Ok([wing_pvd, wake_pvd])
 }

@@ -35,6 +35,7 @@ mod program;
 mod shell;
 mod study;
 mod topology;
+mod user_files;
 mod uvlm;
 mod validate;
 mod viscous_default_section;

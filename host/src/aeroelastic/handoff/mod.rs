@@ -19,7 +19,7 @@ use std::path::Path;
 
 use super::analysis::SystemResult;
 use crate::file_format::FormatError;
-use crate::files::{write_atomic, WriteError};
+use crate::files::{write_to, Existing, WriteError};
 
 pub use pressure::PressureFile;
 pub use section::SectionFile;
@@ -39,11 +39,20 @@ pub enum HandoffError {
 }
 
 /// Writes `section.json`, `pressure.json` and `steps.csv` of `result` into
-/// `dir` (which must exist), each atomically.
-pub fn write(dir: &Path, result: &SystemResult) -> Result<(), HandoffError> {
-    write_atomic(dir, FILES[0], SectionFile::of(result).to_json()?)?;
-    write_atomic(dir, FILES[1], PressureFile::of(result).to_json()?)?;
-    write_atomic(dir, FILES[2], steps_csv(result))?;
+/// `dir` (which must exist), each atomically, over files there or not as
+/// `existing` says.
+pub fn write(dir: &Path, result: &SystemResult, existing: Existing) -> Result<(), HandoffError> {
+    write_to(
+        &dir.join(FILES[0]),
+        SectionFile::of(result).to_json()?,
+        existing,
+    )?;
+    write_to(
+        &dir.join(FILES[1]),
+        PressureFile::of(result).to_json()?,
+        existing,
+    )?;
+    write_to(&dir.join(FILES[2]), steps_csv(result), existing)?;
     Ok(())
 }
 

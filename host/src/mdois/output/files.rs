@@ -8,7 +8,7 @@
 
 use std::path::Path;
 
-use crate::files::write_atomic;
+use crate::files::{write_atomic, Existing};
 use crate::mdois::error::DesignError;
 use crate::mdois::plant::designed_vehicle;
 use crate::mdois::profile::write_kinematics;
@@ -61,6 +61,7 @@ pub(crate) fn write_cycle_wing(
             Field::CellScalar("design_domain", &domain),
             Field::CellScalar("mean_pressure_jump_pa", &mean_pressure),
         ],
+        Existing::Replace,
     )
     .map_err(|source| DesignError::ParaView {
         file: vtu_name.clone(),
@@ -119,6 +120,7 @@ pub(crate) fn write_final(
             Field::CellScalar("simp_density", &simp),
             Field::CellScalar("design_domain", &domain),
         ],
+        Existing::Replace,
     )
     .map_err(|source| DesignError::ParaView {
         file: "topology.vtu".to_string(),
