@@ -25,6 +25,15 @@ pub struct ValidateArgs {
 
 /// Runs the command.
 pub fn run_command(a: &ValidateArgs) -> Result<()> {
+    if a.only.as_deref().is_some_and(|f| f.trim().is_empty()) {
+        // Every name contains the empty text: it would run all the cases
+        // (an hour), surely not what an empty argument meant.
+        bail!(
+            "--only {:?}: give part of a case's name (`fwav validate --list` lists them), \
+             or leave --only out to run every case",
+            a.only.as_deref().unwrap_or_default()
+        );
+    }
     let selected = validation::matching(a.only.as_deref());
     if selected.is_empty() {
         bail!(

@@ -103,3 +103,20 @@ fn unknown_filter_is_refused() {
         "{stderr}"
     );
 }
+
+/// An empty filter is refused at once: every name contains the empty
+/// text, so until 2026-12-07 `--only ""` ran every case (over a minute
+/// before it was stopped by hand) instead of saying what to give.
+#[test]
+fn an_empty_filter_is_refused() {
+    for empty in ["", " "] {
+        let out = fwav(&["validate", "--only", empty]);
+        assert_eq!(out.status.code(), Some(1));
+        assert!(out.stdout.is_empty());
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            stderr.contains("part of a case's name") && stderr.contains("--list"),
+            "{stderr}"
+        );
+    }
+}
