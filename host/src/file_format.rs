@@ -31,7 +31,7 @@ pub struct FileFormat {
 pub enum FormatError {
     /// Not JSON, or a key is missing, unknown or of the wrong type (the
     /// message has the line and column).
-    #[error("{file}: {error}")]
+    #[error("{file}: {}{error}", not_json(error))]
     Json {
         /// The kind of file, by its usual name.
         file: &'static str,
@@ -79,6 +79,15 @@ pub enum ReadError {
         /// What is wrong.
         error: FormatError,
     },
+}
+
+/// "not JSON: " before a parser's complaint about the syntax (a CSV or a
+/// picture given for a JSON file), nothing before one about the data.
+fn not_json(error: &serde_json::Error) -> &'static str {
+    match error.classify() {
+        serde_json::error::Category::Syntax | serde_json::error::Category::Eof => "not JSON: ",
+        _ => "",
+    }
 }
 
 /// A header value as a message shows it.
@@ -242,5 +251,13 @@ mod tests {
             KIND.parse::<Thing>("{").unwrap_err(),
             FormatError::Json { .. }
         ));
+        // A CSV given for the JSON file is called what it is not; a JSON
+        // file with a key of the wrong type is not.
+        let e = KIND.parse::<Thing>("time_s,fx_n\n0,1\n").unwrap_err();
+        assert!(e.to_string().starts_with("thing.json: not JSON: "), "{e}");
+        let e = KIND
+            .parse::<Thing>(r#"{"format": "fwav-thing", "format_version": 2, "value": []}"#)
+            .unwrap_err();
+        assert!(!e.to_string().contains("not JSON"), "{e}");
     }
 }
