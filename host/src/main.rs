@@ -13,6 +13,7 @@ use clap::{Parser, Subcommand};
 mod cli {
     pub mod actuator;
     pub mod aero;
+    pub mod confirm;
     pub mod design;
     pub mod fly;
     pub mod kinematics;

@@ -60,6 +60,7 @@
 
 use fwav_ns2d::{Complex64, Contour, FarStretch, Flow, GridSpec, SectionMap, MAX_FAR_GROWTH};
 
+pub mod cost;
 mod deflection;
 mod deforming;
 mod error;
@@ -70,6 +71,7 @@ mod surface;
 
 use super::history::History;
 use super::ldvm::FreeVortex;
+pub use cost::ViscousCost;
 pub use deflection::{DeflectionState, RigidDeflection, MAX_DEFLECTION_SAMPLES};
 pub use error::ViscousError;
 pub use field::{FlowField, FrameSink, NoFrames};
@@ -266,6 +268,8 @@ impl ViscousSection {
     /// The default rings: 256 from the wall to 30 chords, the first 200
     /// or so those of the exponential grid of 320 ([`Self::DEFAULT_FAR`]).
     pub const DEFAULT_RADIAL: usize = 256;
+    /// Nodes round the section of [`Self::new`].
+    pub const DEFAULT_AROUND: usize = 384;
     /// The default far stretch: near the wall the rings of the
     /// exponential grid of 320 (each cell 1.06 % larger than the one
     /// inside it on the default FWAV section), turning to 4.5 % a cell
@@ -338,7 +342,7 @@ impl ViscousSection {
     pub fn new(shape: ViscousShape) -> Self {
         Self {
             shape,
-            around: 384,
+            around: Self::DEFAULT_AROUND,
             radial: Self::DEFAULT_RADIAL,
             far: Some(Self::DEFAULT_FAR),
             outer_chords: 30.0,

@@ -8,7 +8,7 @@ use anyhow::{bail, Context, Result};
 use fwav::aero2d::case::{Case, CaseRun, SectionModel, MAX_DURATION_CHORDS, PERIODIC_CHANGE};
 use fwav::aero2d::friction::FWAV_REYNOLDS;
 use fwav::aero2d::motion::Motion;
-use fwav::aero2d::viscous::{FlowField, FrameSink, ViscousSection};
+use fwav::aero2d::viscous::{FlowField, FrameSink, ViscousCost, ViscousSection};
 use fwav::aero2d::window::MIN_SHEDDING_PERIODS;
 use fwav::aeroelastic::handoff::SectionFile;
 use fwav::files::create_new;
@@ -18,6 +18,7 @@ use fwav::output::section_plot::draw;
 use fwav::output::surface_csv::write_surface_csv;
 use indicatif::ProgressBar;
 
+use super::confirm::confirm_cost;
 use super::new_files::refuse_taken;
 
 /// The command's options.
@@ -137,6 +138,11 @@ pub struct Aero2dArgs {
     /// (default 50; 5.2 MB each on the default 384 × 256 grid).
     #[arg(long)]
     pub field_frames: Option<usize>,
+    /// Run a Navier–Stokes case whose memory, grid or field series is far
+    /// beyond the default's (without it such a run prints its estimate,
+    /// asks on a terminal and is refused otherwise).
+    #[arg(long)]
+    pub yes: bool,
     /// Machine-readable output.
     #[arg(long)]
     pub json: bool,
@@ -469,6 +475,17 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
     check_outputs(a)?;
     let case = case(a)?;
     case.check_work()?;
+    if let SectionModel::Viscous(section) = &case.section {
+        let cost = ViscousCost::of(section);
+        if cost.is_far_beyond_default() {
+            confirm_cost(
+                "Navier–Stokes run",
+                &cost,
+                a.yes,
+                "choose a coarser grid (--ns-around, --ns-radial) or fewer --field-frames",
+            )?;
+        }
+    }
     // The series is written as the run reaches each frame.
     let series = match &a.field_series {
         Some(dir) => {

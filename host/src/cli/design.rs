@@ -16,6 +16,8 @@ use fwav::mdois::lock::LOCK_FILE;
 use fwav::mdois::summary::Summary;
 use fwav::mdois::{Event, Outcome, Progress, Replace, RunDir, RunOptions, Stage};
 
+use super::confirm::confirm_cost;
+
 /// `fwav design`'s options.
 #[derive(clap::Args)]
 pub struct DesignArgs {
@@ -241,7 +243,16 @@ pub fn run_command(a: &DesignArgs) -> Result<()> {
         }
         None => {
             let config = super::system::read_config(a.config.as_deref())?;
-            confirm_cost(&CostEstimate::of(&config), a.yes)?;
+            let estimate = CostEstimate::of(&config);
+            if estimate.is_far_beyond_default() {
+                confirm_cost(
+                    "design run",
+                    &estimate,
+                    a.yes,
+                    "choose a coarser mesh ([wing] span_elements, chord_elements) or the LDVM \
+                     section model ([design] section_model = \"ldvm\")",
+                )?;
+            }
             let replace = Replace {
                 force: a.force,
                 inputs: a.config.iter().cloned().collect(),
@@ -285,32 +296,6 @@ pub fn run_command(a: &DesignArgs) -> Result<()> {
         Some(Outcome::Converged { .. }) | Some(Outcome::CycleCap { .. }) => Ok(()),
         None => bail!("the run stopped before its end"),
     }
-}
-
-/// Lets a run far beyond the built-in design's cost go ahead only with
-/// `--yes` or a "y" typed on a terminal; prints the estimate either way.
-fn confirm_cost(estimate: &CostEstimate, yes: bool) -> Result<()> {
-    if !estimate.is_far_beyond_default() {
-        return Ok(());
-    }
-    eprintln!("this design run needs {estimate}");
-    if yes {
-        return Ok(());
-    }
-    let stdin = std::io::stdin();
-    if stdin.is_terminal() {
-        eprint!("run it? [y/N] ");
-        let mut answer = String::new();
-        stdin.read_line(&mut answer)?;
-        if matches!(answer.trim(), "y" | "Y" | "yes") {
-            return Ok(());
-        }
-    }
-    bail!(
-        "not started: the run is far beyond the built-in design's cost; pass --yes to run it \
-         anyway, or choose a coarser mesh ([wing] span_elements, chord_elements) or the \
-         LDVM section model ([design] section_model = \"ldvm\")"
-    )
 }
 
 fn print_summary(s: &Summary, dir: &Path) {

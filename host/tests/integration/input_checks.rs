@@ -369,3 +369,47 @@ fn aero2d_refuses_an_empty_deformation_before_writing() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A Navier–Stokes run far beyond the default grid's cost says what it
+/// would take and is not started without `--yes` (nothing on standard
+/// input here, as in CI): the grid's limits allow 8192 × 8192 nodes,
+/// some 27 GB, more than this machine's 24, and until 2026-12-07 such a
+/// run started without a word (tried by hand). Nothing is written: not
+/// the `--field-series` directory, not `--history`.
+#[test]
+fn aero2d_ns_asks_before_a_run_far_beyond_the_default() {
+    let dir = scratch("ns-cost");
+    let series = dir.join("series");
+    let history = dir.join("history.csv");
+    let started = Instant::now();
+    let out = fwav(&[
+        "aero2d",
+        "--model",
+        "ns",
+        "--ns-around",
+        "8192",
+        "--ns-radial",
+        "8192",
+        "--field-series",
+        series.to_str().unwrap(),
+        "--history",
+        history.to_str().unwrap(),
+    ]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert!(
+        stderr.contains("67108864 grid nodes")
+            && stderr.contains("GB of memory")
+            && stderr.contains("GB of disk")
+            && stderr.contains("--yes")
+            && stderr.contains("--ns-around"),
+        "{stderr}"
+    );
+    assert!(
+        started.elapsed() < Duration::from_secs(30),
+        "not refused at once"
+    );
+    assert!(!series.exists() && !history.exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
