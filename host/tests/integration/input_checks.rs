@@ -413,3 +413,31 @@ fn aero2d_ns_asks_before_a_run_far_beyond_the_default() {
     assert!(!series.exists() && !history.exists());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A Navier–Stokes run that blows up says so in the command's terms: a
+/// plunge of 2 chords at k = 20 (the section at 80 times the stream's
+/// speed) is not finite after 39 steps on the default grid, and the
+/// error names the flags that change the step and the grid (until
+/// 2026-12-07 it said "take a smaller time step", which no flag is
+/// called). No result is printed.
+#[test]
+fn aero2d_ns_divergence_names_what_to_change() {
+    let out = fwav(&[
+        "aero2d",
+        "--model",
+        "ns",
+        "--reduced-frequency",
+        "20",
+        "--plunge-amplitude",
+        "2",
+    ]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert!(
+        stderr.contains("not finite")
+            && stderr.contains("--ns-courant (now 3)")
+            && stderr.contains("--ns-around"),
+        "{stderr}"
+    );
+}

@@ -15,6 +15,24 @@ pub enum ViscousError {
     /// The solver refused the case or diverged.
     #[error(transparent)]
     Solver(#[from] NsError),
+    /// The flow was not finite after a step of the run
+    /// (`NsError::Diverged`, told in the command's terms).
+    #[error(
+        "the flow is not finite at t = {time:.4} chords travelled (step {step}, a time step of \
+         {dt:.3e}): the step is beyond the scheme's stability or the grid cannot resolve the \
+         flow; give a smaller --ns-courant (now {courant}), a finer grid (--ns-around, \
+         --ns-radial) or a gentler motion"
+    )]
+    Diverged {
+        /// The time reached, chords travelled.
+        time: f64,
+        /// The step number.
+        step: usize,
+        /// The time step used, chords travelled.
+        dt: f64,
+        /// The largest Courant number the steps were chosen for.
+        courant: f64,
+    },
     /// The flow at `time` could not be handed on
     /// ([`super::FrameSink::take`]); the run stopped there.
     #[error("the flow at {time:.4} chords travelled could not be kept: {source}")]

@@ -3,7 +3,7 @@
 //! at a fixed interval, across a spin-up's hand-over from one grid to
 //! the next ([`March`]).
 
-use fwav_ns2d::Flow;
+use fwav_ns2d::{Flow, NsError};
 
 use super::{FlowField, FrameSink, History, SectionPath, ViscousError, MAX_VISCOUS_STEPS};
 
@@ -251,7 +251,15 @@ impl March {
             // step that crosses a sample time.
             let before =
                 (flow.time() + dt >= self.next - 1e-12).then(|| (flow.time(), coefficients(flow)));
-            flow.step(dt)?;
+            flow.step(dt).map_err(|e| match e {
+                NsError::Diverged { time, step, dt } => ViscousError::Diverged {
+                    time,
+                    step,
+                    dt,
+                    courant,
+                },
+                e => e.into(),
+            })?;
             self.steps += 1;
             taken += 1;
             self.frame(flow, frames)?;
