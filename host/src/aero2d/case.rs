@@ -18,7 +18,8 @@ use super::motion::Motion;
 use super::panel::{PanelSettings, PanelSolver, SectionShape, ShapeHistory};
 use super::theory::garrick_plunge;
 use super::viscous::{
-    FlowField, FrameSink, NoFrames, SectionPath, SurfaceLoads, ViscousSection, STILL_KICK_RATE,
+    load_interval, FlowField, FrameSink, NoFrames, SectionPath, SurfaceLoads, ViscousSection,
+    STILL_KICK_RATE,
 };
 use super::window::WindowStatistics;
 
@@ -50,6 +51,11 @@ pub const MAX_STEPS: usize = 20_000;
 /// about 100 diameters at Re 100 (`fwav_ns2d::cases::CylinderWake` runs
 /// 150).
 pub const MAX_DURATION_CHORDS: f64 = 1000.0;
+
+/// The shortest run without a period, in load sample intervals: four,
+/// so that its second half, which is reported, holds two samples at
+/// least.
+const SHORTEST_DURATION_SAMPLES: f64 = 4.0;
 
 /// Thickest NACA section the panel method takes, chords. Measured on
 /// NACA 00TT plunging at h = 0.05, k = 1 (5 cycles, 160 panels): up to
@@ -283,6 +289,20 @@ impl Case {
                 return Err(CaseError::Duration {
                     duration,
                     max: MAX_DURATION_CHORDS,
+                });
+            }
+            // Its report is of the second half: two samples at least.
+            let k = if self.is_still() {
+                0.0
+            } else {
+                self.motion.reduced_frequency
+            };
+            let interval = load_interval(k, duration);
+            if duration < SHORTEST_DURATION_SAMPLES * interval {
+                return Err(CaseError::DurationTooShort {
+                    duration,
+                    interval,
+                    min: SHORTEST_DURATION_SAMPLES * interval,
                 });
             }
             return Ok(());
@@ -548,6 +568,30 @@ mod tests {
             let err = case.run().unwrap_err();
             assert!(matches!(err, CaseError::NoDeformationSamples), "{err:?}");
         }
+    }
+
+    /// A run without a period too short for its report (two load samples
+    /// over its second half) is refused before it runs, with the shortest
+    /// that reports: until 2026-12-07 `fwav aero2d --model ns --duration
+    /// 0.02` ran, then said only "give a longer --duration". A body at
+    /// rest samples by its duration, so any duration reports.
+    #[test]
+    fn a_duration_too_short_to_report_is_refused_before_the_run() {
+        let viscous = || SectionModel::Viscous(ViscousSection::new(ViscousShape::Plate(0.04)));
+        let with = |h0: f64, duration: f64| Case {
+            duration: Some(duration),
+            ..plunge(viscous(), h0, 1.0)
+        };
+        match with(0.05, 0.02).check_work() {
+            Err(CaseError::DurationTooShort { interval, min, .. }) => {
+                // A 200th of the period pi / k.
+                assert!((interval - std::f64::consts::PI / 200.0).abs() < 1e-15);
+                assert!((min - 4.0 * interval).abs() < 1e-15);
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(with(0.05, 0.063).check_work().is_ok());
+        assert!(with(0.0, 1e-3).check_work().is_ok());
     }
 
     fn plunge(section: SectionModel, h0: f64, k: f64) -> Case {

@@ -75,6 +75,7 @@ pub use cost::ViscousCost;
 pub use deflection::{DeflectionState, RigidDeflection, MAX_DEFLECTION_SAMPLES};
 pub use error::ViscousError;
 pub use field::{FlowField, FrameSink, NoFrames};
+pub(crate) use march::load_interval;
 use march::March;
 pub use path::{SectionPath, STILL_KICK_CHORDS, STILL_KICK_RATE};
 pub use surface::SurfaceLoads;

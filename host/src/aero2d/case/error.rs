@@ -79,6 +79,21 @@ pub enum CaseError {
         /// The longest allowed ([`super::MAX_DURATION_CHORDS`]).
         max: f64,
     },
+    /// A duration whose second half, which the report is of, would hold
+    /// fewer than two load samples.
+    #[error(
+        "a duration of {duration} chords travelled leaves fewer than two load samples over its \
+         second half, which is reported (a sample every {interval:.4} chords, a 200th of the \
+         motion's period): give at least {min:.3}"
+    )]
+    DurationTooShort {
+        /// The duration asked, chords travelled.
+        duration: f64,
+        /// The load samples' interval, chords travelled.
+        interval: f64,
+        /// The shortest duration that reports, chords travelled.
+        min: f64,
+    },
     /// The viscous model refused the case or failed.
     #[error(transparent)]
     Viscous(#[from] ViscousError),

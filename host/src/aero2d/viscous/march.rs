@@ -134,17 +134,23 @@ pub(super) struct March {
     last_frame_time: f64,
 }
 
+/// The interval of a run's load samples, chords travelled: a 200th of
+/// the period of a motion of reduced frequency `reduced_frequency`, or a
+/// 2000th of `duration` without a period (`reduced_frequency` 0).
+pub(crate) fn load_interval(reduced_frequency: f64, duration: f64) -> f64 {
+    if reduced_frequency > 0.0 {
+        std::f64::consts::PI / reduced_frequency / SAMPLES_PER_PERIOD
+    } else {
+        duration / 2000.0
+    }
+}
+
 impl March {
     /// A run of `path` to `duration` at steps of Courant number
     /// `courant`, sampling every `period / 200` (or `duration / 2000`
     /// without a period), from the first sample.
     pub(super) fn new(path: SectionPath, duration: f64, courant: f64) -> Self {
-        let k = path.reduced_frequency();
-        let sample = if k > 0.0 {
-            std::f64::consts::PI / k / SAMPLES_PER_PERIOD
-        } else {
-            duration / 2000.0
-        };
+        let sample = load_interval(path.reduced_frequency(), duration);
         Self {
             path,
             courant,
