@@ -134,12 +134,10 @@ fn run(cli: Cli) -> Result<ExitCode> {
             json,
             plot,
         } => {
-            if let Some(png) = plot.as_ref().filter(|p| p.symlink_metadata().is_ok()) {
-                anyhow::bail!(
-                    "--plot {}: the file exists (an existing file is never overwritten); \
-                     choose a new name or remove it",
-                    png.display()
-                );
+            if let Some(png) = &plot {
+                // Before the run: the picture is drawn at its end.
+                fwav_hil_sim::plot::check_new(png)
+                    .with_context(|| format!("--plot {}", png.display()))?;
             }
             let plant = load_plant(plant.as_deref())?;
             let text = std::fs::read_to_string(&path)

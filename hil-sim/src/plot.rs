@@ -51,11 +51,10 @@ impl From<DrawingAreaErrorKind<BitMapBackendError>> for PlotError {
     }
 }
 
-/// Draws the last second of `trace` to the new file `png`: the picture
-/// is drawn under a temporary name beside it and takes the name only if
-/// nothing has it ([`PlotError::Exists`]), so that a file there, or made
-/// meanwhile, is never replaced.
-pub fn draw(trace: &[TracePoint], png: &Path) -> Result<(), PlotError> {
+/// Checks that `png` can be made new, before a run that ends by drawing
+/// it: nothing has the name ([`PlotError::Exists`]) and its directory is
+/// one ([`PlotError::File`]). Returns the directory.
+pub fn check_new(png: &Path) -> Result<&Path, PlotError> {
     if png.symlink_metadata().is_ok() {
         return Err(PlotError::Exists(png.to_path_buf()));
     }
@@ -63,6 +62,21 @@ pub fn draw(trace: &[TracePoint], png: &Path) -> Result<(), PlotError> {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
+    match std::fs::metadata(dir) {
+        Ok(m) if m.is_dir() => Ok(dir),
+        Ok(_) => Err(PlotError::File(
+            format!("{} is not a directory", dir.display()).into(),
+        )),
+        Err(e) => Err(PlotError::File(Box::new(e))),
+    }
+}
+
+/// Draws the last second of `trace` to the new file `png`: the picture
+/// is drawn under a temporary name beside it and takes the name only if
+/// nothing has it ([`PlotError::Exists`]), so that a file there, or made
+/// meanwhile, is never replaced.
+pub fn draw(trace: &[TracePoint], png: &Path) -> Result<(), PlotError> {
+    let dir = check_new(png)?;
     // The encoder reads the format from the extension.
     let mut builder = tempfile::Builder::new();
     // A file anyone may read, as the umask allows (a temporary file's own
@@ -73,13 +87,13 @@ pub fn draw(trace: &[TracePoint], png: &Path) -> Result<(), PlotError> {
         .prefix(".hil-sim-plot.")
         .suffix(".partial.png")
         .tempfile_in(dir)
-        .map_err(|e| PlotError::File(Box::new(e)))?;
+        .map_err(|e| PlotError::File(e.kind().to_string().into()))?;
     draw_to(trace, temporary.path())?;
     temporary.persist_noclobber(png).map_err(|e| {
         if e.error.kind() == std::io::ErrorKind::AlreadyExists {
             PlotError::Exists(png.to_path_buf())
         } else {
-            PlotError::File(Box::new(e.error))
+            PlotError::File(e.error.kind().to_string().into())
         }
     })?;
     Ok(())

@@ -3,16 +3,19 @@
 //! (a rename within one directory is atomic on the file systems fwav runs
 //! on). A run killed at any moment leaves either the old file or the new
 //! one, and at worst a stray `.partial` that the next write replaces.
-//! That is for the files a run owns (a design run's directory).
+//! That is for the files a run owns (a design run's directory,
+//! [`Existing::Replace`]).
 //!
-//! A file the user names (`--plot`, `--history`, an output directory's
-//! files) is never replaced: [`create_new`] and [`write_new`] make it
-//! under a temporary name beside its target and give it the target's
-//! name only if nothing has it (`tempfile`'s `persist_noclobber`, a link
-//! or a no-replace rename), so a file that was there, or was made while
+//! A file the user names (`--plot`, an output directory's files) is
+//! never replaced: [`create_new`] and [`write_new`] make it under a
+//! temporary name beside its target and give it the target's name only
+//! if nothing has it (`tempfile`'s `persist_noclobber`: a no-replace
+//! rename, or a link where the file system has none; one with neither
+//! cannot take such files), so a file that was there, or was made while
 //! the run went on, is left as it was, and a killed run leaves no half
-//! file under the name. The commands also refuse such a name before
-//! they start, so that a long run is not lost at its end.
+//! file under the name (at worst a hidden `.NAME.*.partial` beside it).
+//! The commands also refuse such a name before they start, so that a
+//! long run is not lost at its end.
 
 use std::path::{Path, PathBuf};
 
@@ -126,21 +129,37 @@ pub fn create_new<E: From<WriteError>>(
     // default is its owner's only).
     #[cfg(unix)]
     builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
+    // The directory's own error, not one naming the temporary file.
+    std::fs::metadata(dir).map_err(io)?;
     let temporary = builder
         .prefix(&prefix)
         .suffix(&suffix)
         .tempfile_in(dir)
-        .map_err(io)?;
+        .map_err(|e| io(without_path(e)))?;
     // On failure the temporary file is removed when dropped.
     make(temporary.path())?;
     temporary.persist_noclobber(path).map_err(|e| {
         if e.error.kind() == std::io::ErrorKind::AlreadyExists {
             taken()
         } else {
-            io(e.error)
+            io(without_path(e.error))
         }
     })?;
     Ok(())
+}
+
+/// `tempfile`'s error without the temporary file's name it adds (a name
+/// the user never gave): the system's error, or its kind.
+fn without_path(e: std::io::Error) -> std::io::Error {
+    let code = e
+        .get_ref()
+        .and_then(|inner| inner.source())
+        .and_then(|source| source.downcast_ref::<std::io::Error>())
+        .and_then(std::io::Error::raw_os_error);
+    match code {
+        Some(code) => std::io::Error::from_raw_os_error(code),
+        None => e.kind().into(),
+    }
 }
 
 /// Writes `contents` to `path`, which must not exist, as [`create_new`]
@@ -238,6 +257,8 @@ mod tests {
             matches!(&e, WriteError::Io { path, .. } if path.ends_with("missing/b.txt")),
             "{e}"
         );
+        // The system's reason, not the temporary file's name.
+        assert!(!e.to_string().contains(".partial"), "{e}");
         std::fs::remove_dir_all(&dir).ok();
     }
 }

@@ -262,6 +262,8 @@ fn the_core_flies_on_the_emulated_cortex_m4_through_fwav_and_survives_garbage() 
     // commanded 11 Hz and +-30 deg (within 0.05 Hz and 2%) on two lines in
     // a row.
     let csv = std::env::temp_dir().join(format!("fwav-emulated-{}.csv", std::process::id()));
+    // A leftover of an earlier run would be refused: never written over.
+    std::fs::remove_file(&csv).ok();
     let csv_arg = csv.to_str().expect("UTF-8 temp path");
     let mut monitor = Running::spawn(&["monitor", "--port", &usb, "--csv", csv_arg]);
     let flying = monitor.wait_for(2, Duration::from_secs(60), |l| {

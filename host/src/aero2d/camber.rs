@@ -64,7 +64,7 @@ pub enum CamberError {
 /// A mid-line's length as the message shows it: four decimals, or in
 /// powers of ten when that would print a line of digits or zeros.
 fn shown_length(length: f64) -> String {
-    if (1e-3..1e4).contains(&length.abs()) {
+    if length == 0.0 || (1e-3..1e4).contains(&length.abs()) {
         format!("{length:.4}")
     } else {
         format!("{length:.3e}")

@@ -5,10 +5,12 @@ use std::io::IsTerminal as _;
 use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
-use fwav::aero2d::case::{Case, CaseRun, SectionModel, MAX_DURATION_CHORDS, PERIODIC_CHANGE};
+use fwav::aero2d::case::{
+    Case, CaseError, CaseRun, SectionModel, MAX_DURATION_CHORDS, PERIODIC_CHANGE,
+};
 use fwav::aero2d::friction::FWAV_REYNOLDS;
 use fwav::aero2d::motion::Motion;
-use fwav::aero2d::viscous::{FlowField, FrameSink, ViscousCost, ViscousSection};
+use fwav::aero2d::viscous::{FlowField, FrameSink, ViscousCost, ViscousError, ViscousSection};
 use fwav::aero2d::window::MIN_SHEDDING_PERIODS;
 use fwav::aeroelastic::handoff::SectionFile;
 use fwav::files::create_new;
@@ -503,10 +505,21 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         bar.finish_and_clear();
     }
     let series = outputs.series;
+    // The library's advice on a blow-up, in this command's flags.
+    let flags = match &run {
+        Err(CaseError::Viscous(ViscousError::Diverged { .. })) => {
+            " (the Courant number: --ns-courant; the grid: --ns-around, --ns-radial)"
+        }
+        _ => "",
+    };
     let run = run.with_context(|| {
         let case = match &a.deformation {
-            Some(path) => format!("--section {} --deformation {}", a.section, path.display()),
-            None => format!("--section {}", a.section),
+            Some(path) => format!(
+                "--section {} --deformation {}{flags}",
+                a.section,
+                path.display()
+            ),
+            None => format!("--section {}{flags}", a.section),
         };
         match &series {
             Some(s) if !s.is_empty() => format!(

@@ -12,6 +12,7 @@ use anyhow::{bail, Context, Result};
 use fwav::config::cost::CostEstimate;
 use fwav::config::template::commented_toml;
 use fwav::config::SystemConfig;
+use fwav::files::Existing;
 use fwav::mdois::lock::LOCK_FILE;
 use fwav::mdois::summary::Summary;
 use fwav::mdois::{Event, Outcome, Progress, Replace, RunDir, RunOptions, Stage};
@@ -67,21 +68,20 @@ pub struct InitArgs {
 
 /// Runs `fwav init`.
 pub fn init(a: &InitArgs) -> Result<()> {
-    if a.out.exists() && !a.force {
+    if a.out.file_name().is_none() {
+        bail!("{} is not a file name", a.out.display());
+    }
+    if a.out.symlink_metadata().is_ok() && !a.force {
         bail!("{} exists; use --force to overwrite it", a.out.display());
     }
     let text = commented_toml(&SystemConfig::default())?;
-    let dir = match a.out.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => PathBuf::from("."),
+    // Without --force a file made meanwhile is kept too.
+    let existing = if a.force {
+        Existing::Replace
+    } else {
+        Existing::Keep
     };
-    let name = a
-        .out
-        .file_name()
-        .with_context(|| format!("{} is not a file name", a.out.display()))?
-        .to_string_lossy()
-        .into_owned();
-    fwav::files::write_atomic(&dir, &name, text)?;
+    fwav::files::write_to(&a.out, text, existing)?;
     println!(
         "wrote {}: the built-in FWAV's configuration; edit it and run `fwav design --config {}`",
         a.out.display(),

@@ -374,20 +374,16 @@ pub fn monitor(
     // The log's name is checked before the link is opened: a file that
     // exists is never overwritten.
     let csv_file = match csv {
-        Some(p) => Some(
-            std::fs::OpenOptions::new()
+        Some(p) => {
+            super::new_files::refuse_taken([("--csv", p)])?;
+            // New only: one made since the check is refused too.
+            let file = std::fs::OpenOptions::new()
                 .write(true)
                 .create_new(true)
                 .open(p)
-                .map_err(|e| match e.kind() {
-                    std::io::ErrorKind::AlreadyExists => anyhow::anyhow!(
-                        "--csv {}: the file exists (an existing file is never overwritten); \
-                         choose a new name or remove it",
-                        p.display()
-                    ),
-                    _ => anyhow::Error::new(e).context(format!("cannot create {}", p.display())),
-                })?,
-        ),
+                .with_context(|| format!("--csv {}: cannot create it", p.display()))?;
+            Some(file)
+        }
         None => None,
     };
     let mut device = connect(path).inspect_err(|_| {

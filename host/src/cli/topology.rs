@@ -45,13 +45,20 @@ pub struct TopologyArgs {
 pub fn run_command(a: &TopologyArgs) -> Result<()> {
     let config = super::system::read_config(a.config.as_deref())?;
     let wing = config.wing_model()?;
-    refuse_taken_in("--out", &a.out, &WRITTEN, &[])?;
     let elements = wing.wing.mesh.elements.len();
+    // The inputs are checked before the outputs' names.
+    let given = match &a.pressure {
+        Some(path) => Some(
+            PressureHistory::from_file(PressureFile::read(path)?, elements)
+                .with_context(|| format!("{}", path.display()))?,
+        ),
+        None => None,
+    };
+    refuse_taken_in("--out", &a.out, &WRITTEN, &[])?;
     let show = !a.quiet && std::io::stderr().is_terminal();
     let started = Instant::now();
-    let pressure = match &a.pressure {
-        Some(path) => PressureHistory::from_file(PressureFile::read(path)?, elements)
-            .with_context(|| format!("{}", path.display()))?,
+    let pressure = match given {
+        Some(pressure) => pressure,
         None => {
             let result = run(
                 &wing,

@@ -4,17 +4,17 @@
 //! (e.g. density, strain energy): ASCII in double precision
 //! ([`quads_to_string`]), or binary in single precision
 //! ([`quads_to_binary`]: under a third of the size, for series of large
-//! grids). [`write()`] writes to a temporary file and renames it, so a
-//! reader never sees half a file (the design run's own directory);
-//! [`write_new`] and [`write_new_bytes`] refuse a file that exists (a
-//! path the user named).
+//! grids). [`write()`] writes through a temporary file, so a reader
+//! never sees half a file, over a file there (the design run's own
+//! directory) or not (an output directory the user named) as its
+//! [`Existing`] says; [`write_new`] and [`write_new_bytes`] refuse a file
+//! that exists (a path the user named).
 
 use std::fmt::Write as _;
 use std::io;
 use std::path::Path;
 
 use crate::files::Existing;
-
 use crate::shell::mesh::ShellMesh;
 
 /// A field to write: name and values (3 components a point for vectors).

@@ -112,6 +112,8 @@ fn aero2d_reports_thrust_beside_garrick() {
 
     // --plot draws a PNG.
     let png = std::env::temp_dir().join(format!("fwav-aero2d-{}.png", std::process::id()));
+    // A leftover of an earlier run is never drawn over.
+    std::fs::remove_file(&png).ok();
     let out = fwav(&["aero2d", "--cycles", "2", "--plot", png.to_str().unwrap()]);
     assert!(
         out.status.success(),
@@ -175,8 +177,7 @@ fn aero2d_reports_thrust_beside_garrick() {
 /// --deformation`), the ParaView series; a bad field is named.
 #[test]
 fn system_analysis_writes_what_the_disciplines_take() {
-    let dir = std::env::temp_dir().join(format!("fwav-system-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::program::scratch("system");
     let config = dir.join("wing.toml");
     std::fs::write(
         &config,
@@ -326,6 +327,8 @@ fn system_analysis_writes_what_the_disciplines_take() {
         config.to_str().unwrap(),
         "--pressure",
         pressure_file.to_str().unwrap(),
+        "--out",
+        dir.join("refused").to_str().unwrap(),
     ]);
     assert!(!bad.status.success());
     let stderr = String::from_utf8_lossy(&bad.stderr);
@@ -347,8 +350,7 @@ fn system_analysis_writes_what_the_disciplines_take() {
 /// bad `[design]` level set is named.
 #[test]
 fn kinematics_runs_the_discipline_and_reuses_its_evaluations() {
-    let dir = std::env::temp_dir().join(format!("fwav-kinematics-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::program::scratch("kinematics");
     let cache = dir.join("evaluations.json");
     let run = || {
         let out = fwav(&["kinematics", "--cache", cache.to_str().unwrap(), "--json"]);

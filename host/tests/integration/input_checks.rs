@@ -436,7 +436,8 @@ fn aero2d_ns_divergence_names_what_to_change() {
     assert!(out.stdout.is_empty());
     assert!(
         stderr.contains("not finite")
-            && stderr.contains("--ns-courant (now 3)")
+            && stderr.contains("a smaller Courant number (now 3)")
+            && stderr.contains("the Courant number: --ns-courant")
             && stderr.contains("--ns-around"),
         "{stderr}"
     );

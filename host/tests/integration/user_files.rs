@@ -6,10 +6,13 @@
 //! name gets the whole file, readable as any file the user makes, with no
 //! temporary file left beside it. `fwav aero2d`'s data files (`--history`,
 //! `--surface`, `--field`) are tested in `viscous_field` and
-//! `input_checks`; here are the pictures and the output directories,
-//! which were overwritten until 2026-12-07 (tried by hand: `--plot`,
-//! `system-analysis --out`, `topology --out`, `kinematics --plot` and
-//! `monitor --csv` each replaced a file called "mine").
+//! `input_checks`; here are the pictures, the output directories and
+//! the monitor's log. Until 2026-12-07 `aero2d --plot`, `system-analysis
+//! --out`, `topology --out` and `kinematics --plot` each replaced a file
+//! called "mine" (tried by hand), and `monitor --csv` opened its log with
+//! `File::create`, which empties a file there, once the link was open (read
+//! in the code: these tests have no device, so they show that the
+//! refusal now comes before the link is opened).
 
 use std::path::Path;
 
@@ -66,6 +69,16 @@ fn every_command_refuses_a_name_that_is_taken_before_it_runs() {
         &plot,
         &dir,
         &["plot.png"],
+    );
+
+    // A picture whose directory is missing: refused before the run too.
+    let nowhere = dir.join("missing").join("plot.png");
+    let out = fwav(&["aero2d", "--plot", &arg(&nowhere)]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        out.stdout.is_empty() && stderr.contains("is not a directory"),
+        "{stderr}"
     );
 
     // An output directory, by a fixed name and by a numbered series'.

@@ -84,7 +84,8 @@ pub enum CaseError {
     #[error(
         "a duration of {duration} chords travelled leaves fewer than two load samples over its \
          second half, which is reported (a sample every {interval:.4} chords, a 200th of the \
-         motion's period): give at least {min:.3}"
+         motion's period): give at least {}",
+        rounded_up(*.min)
     )]
     DurationTooShort {
         /// The duration asked, chords travelled.
@@ -201,4 +202,16 @@ pub enum CaseError {
         /// How far a vortex may be, chords.
         reach: f64,
     },
+}
+
+/// `x` rounded up to three significant digits, as a refusal shows a
+/// least value: shown rounded down it would be refused again.
+fn rounded_up(x: f64) -> String {
+    if !(x.is_finite() && x > 0.0) {
+        return format!("{x}");
+    }
+    let digits = 2 - x.log10().floor() as i32;
+    let scale = 10f64.powi(digits);
+    let up = (x * scale).ceil() / scale;
+    format!("{up:.*}", digits.max(0) as usize)
 }

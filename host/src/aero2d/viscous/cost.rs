@@ -94,9 +94,9 @@ impl ViscousCost {
 }
 
 impl fmt::Display for ViscousCost {
-    /// `about 27 GB of memory for 67108864 nodes (683 times the default
-    /// grid's 98304, which take 0.05 GB), and 36 GB of disk for the field
-    /// series`.
+    /// `about 26.9 GB of memory for 67108864 grid nodes (683 times the
+    /// default grid's 98304, which take 0.05 GB; …), and 20.8 GB of disk
+    /// for the field series`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,

@@ -12,7 +12,7 @@ use fwav_ns2d::{FarStretch, MAX_FAR_GROWTH};
 /// Why a viscous run cannot be done.
 #[derive(Debug, thiserror::Error)]
 pub enum ViscousError {
-    /// The solver refused the case or diverged.
+    /// The solver refused the case (its divergence is [`Self::Diverged`]).
     #[error(transparent)]
     Solver(#[from] NsError),
     /// The flow was not finite after a step of the run
@@ -20,8 +20,8 @@ pub enum ViscousError {
     #[error(
         "the flow is not finite at t = {time:.4} chords travelled (step {step}, a time step of \
          {dt:.3e}): the step is beyond the scheme's stability or the grid cannot resolve the \
-         flow; give a smaller --ns-courant (now {courant}), a finer grid (--ns-around, \
-         --ns-radial) or a gentler motion"
+         flow; step at a smaller Courant number (now {courant}), on a finer grid, or move the \
+         section more gently"
     )]
     Diverged {
         /// The time reached, chords travelled.
