@@ -24,12 +24,18 @@ pub fn refuse_taken<'a>(files: impl IntoIterator<Item = (&'a str, &'a Path)>) ->
             Some(d) if !d.as_os_str().is_empty() => d,
             _ => Path::new("."),
         };
-        if !std::fs::metadata(dir).is_ok_and(|m| m.is_dir()) {
-            bail!(
-                "{flag} {}: {} is not a directory; make it first, or choose another",
+        match std::fs::metadata(dir) {
+            Ok(m) if m.is_dir() => {}
+            Ok(_) => bail!(
+                "{flag} {}: {} is not a directory; choose another",
                 path.display(),
                 dir.display()
-            );
+            ),
+            Err(e) => bail!(
+                "{flag} {}: its directory {}: {e}; make it first, or choose another",
+                path.display(),
+                dir.display()
+            ),
         }
     }
     Ok(())

@@ -77,7 +77,7 @@ fn every_command_refuses_a_name_that_is_taken_before_it_runs() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
     assert!(
-        out.stdout.is_empty() && stderr.contains("is not a directory"),
+        out.stdout.is_empty() && stderr.contains("No such file or directory"),
         "{stderr}"
     );
 
