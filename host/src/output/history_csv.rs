@@ -2,23 +2,20 @@
 //! script: `time, cl, ct, cp` (time in chords travelled, coefficients on
 //! `1/2 rho U^2 c`, `U^3` for the power), one row a sample.
 
-use std::io::Write;
+use std::fmt::Write as _;
 use std::path::Path;
 
 use crate::aero2d::history::History;
+use crate::files::{write_new, WriteError};
 
 /// Writes `history` to `path`, a new file: an existing one is refused
-/// (`ErrorKind::AlreadyExists`), never overwritten.
+/// ([`WriteError::Exists`]), never overwritten, and the file appears
+/// whole ([`write_new`]).
 ///
 /// # Errors
-/// The file system's.
-pub fn write_history_csv(history: &History, path: &Path) -> std::io::Result<()> {
-    let file = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(path)?;
-    let mut out = std::io::BufWriter::new(file);
-    writeln!(out, "time,cl,ct,cp")?;
+/// [`WriteError`]: the name is taken, or the file system refused.
+pub fn write_history_csv(history: &History, path: &Path) -> Result<(), WriteError> {
+    let mut text = String::from("time,cl,ct,cp\n");
     for (((t, cl), ct), cp) in history
         .time
         .iter()
@@ -26,7 +23,7 @@ pub fn write_history_csv(history: &History, path: &Path) -> std::io::Result<()> 
         .zip(&history.ct)
         .zip(&history.cp)
     {
-        writeln!(out, "{t},{cl},{ct},{cp}")?;
+        let _ = writeln!(text, "{t},{cl},{ct},{cp}");
     }
-    out.flush()
+    write_new(path, text)
 }

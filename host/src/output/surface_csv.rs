@@ -5,28 +5,23 @@
 //! `1/2 rho U^2`), one row a wall node, counter-clockwise round the
 //! section, after a comment line with the time.
 
-use std::io::Write;
+use std::fmt::Write as _;
 use std::path::Path;
 
 use crate::aero2d::viscous::SurfaceLoads;
+use crate::files::{write_new, WriteError};
 
 /// Writes `surface` to `path`, a new file: an existing one is refused
-/// (`ErrorKind::AlreadyExists`), never overwritten.
+/// ([`WriteError::Exists`]), never overwritten, and the file appears
+/// whole ([`write_new`]).
 ///
 /// # Errors
-/// The file system's.
-pub fn write_surface_csv(surface: &SurfaceLoads, path: &Path) -> std::io::Result<()> {
-    let file = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(path)?;
-    let mut out = std::io::BufWriter::new(file);
-    writeln!(
-        out,
-        "# wall loads at U t / c = {} (cp: p - p_inf on 1/2 rho U^2)",
+/// [`WriteError`]: the name is taken, or the file system refused.
+pub fn write_surface_csv(surface: &SurfaceLoads, path: &Path) -> Result<(), WriteError> {
+    let mut text = format!(
+        "# wall loads at U t / c = {} (cp: p - p_inf on 1/2 rho U^2)\ns,x,y,cp,cf_x,cf_y\n",
         surface.time
-    )?;
-    writeln!(out, "s,x,y,cp,cf_x,cf_y")?;
+    );
     for (((s, (x, y)), cp), (fx, fy)) in surface
         .arc
         .iter()
@@ -34,7 +29,7 @@ pub fn write_surface_csv(surface: &SurfaceLoads, path: &Path) -> std::io::Result
         .zip(&surface.cp)
         .zip(&surface.cf)
     {
-        writeln!(out, "{s},{x},{y},{cp},{fx},{fy}")?;
+        let _ = writeln!(text, "{s},{x},{y},{cp},{fx},{fy}");
     }
-    out.flush()
+    write_new(path, text)
 }

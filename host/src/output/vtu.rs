@@ -320,9 +320,7 @@ pub fn write(
 }
 
 /// Writes the quadrilaterals `quads` of `points` with `fields` to
-/// `path`, which must not exist: a file there is refused, not replaced
-/// ([`VtuError::Exists`]). A write that fails part way removes what it
-/// wrote.
+/// `path`, which must not exist, as [`write_new_bytes`] does.
 pub fn write_new(
     path: &Path,
     points: &[[f64; 3]],
@@ -333,31 +331,11 @@ pub fn write_new(
 }
 
 /// Writes `bytes` (a file's whole contents) to `path`, which must not
-/// exist: a file there is refused, not replaced ([`VtuError::Exists`]).
-/// A write that fails part way removes what it wrote.
+/// exist: a file there, or one made meanwhile, is refused, not replaced
+/// ([`VtuError::Exists`]); the file appears whole
+/// ([`crate::files::write_new`]).
 pub fn write_new_bytes(path: &Path, bytes: &[u8]) -> Result<(), VtuError> {
-    use std::io::Write as _;
-    let io_error = |source| VtuError::Io {
-        path: path.display().to_string(),
-        source,
-    };
-    let mut file = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(path)
-        .map_err(|e| match e.kind() {
-            std::io::ErrorKind::AlreadyExists => VtuError::Exists {
-                path: path.display().to_string(),
-            },
-            _ => io_error(e),
-        })?;
-    file.write_all(bytes)
-        .and_then(|()| file.sync_all())
-        .map_err(|e| {
-            // The name was ours (created above): take back the part written.
-            let _ = std::fs::remove_file(path);
-            io_error(e)
-        })
+    Ok(crate::files::write_new(path, bytes)?)
 }
 
 /// A `.pvd` time collection of `entries` (time, file name relative to
