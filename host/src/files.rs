@@ -111,10 +111,7 @@ pub fn create_new<E: From<WriteError>>(
     if std::fs::symlink_metadata(path).is_ok() {
         return Err(taken().into());
     }
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
+    let dir = directory_of(path);
     let mut suffix = String::from(".partial");
     if let Some(extension) = path.extension() {
         suffix.push('.');
@@ -146,6 +143,15 @@ pub fn create_new<E: From<WriteError>>(
         }
     })?;
     Ok(())
+}
+
+/// The directory `path` is in: its parent, or the current directory for
+/// a bare name.
+pub fn directory_of(path: &Path) -> &Path {
+    match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    }
 }
 
 /// `tempfile`'s error without the temporary file's name it adds (a name

@@ -8,6 +8,7 @@
 use std::path::Path;
 
 use anyhow::{bail, Result};
+use fwav::files::directory_of;
 
 /// Refuses the first of `files` (`(flag, path)`) that exists, or whose
 /// directory does not, naming its flag.
@@ -20,10 +21,7 @@ pub fn refuse_taken<'a>(files: impl IntoIterator<Item = (&'a str, &'a Path)>) ->
                 path.display()
             );
         }
-        let dir = match path.parent() {
-            Some(d) if !d.as_os_str().is_empty() => d,
-            _ => Path::new("."),
-        };
+        let dir = directory_of(path);
         match std::fs::metadata(dir) {
             Ok(m) if m.is_dir() => {}
             Ok(_) => bail!(

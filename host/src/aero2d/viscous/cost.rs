@@ -66,6 +66,11 @@ fn default_nodes() -> usize {
     ViscousSection::DEFAULT_AROUND * ViscousSection::DEFAULT_RADIAL
 }
 
+/// Peak memory of a run on `nodes` grid nodes, bytes (module docs).
+fn memory_bytes(nodes: usize) -> f64 {
+    BASE_BYTES + BYTES_PER_NODE * nodes as f64
+}
+
 impl ViscousCost {
     /// The estimate for `section` (module docs), its `field_frames`
     /// frames included.
@@ -73,7 +78,7 @@ impl ViscousCost {
         let nodes = section.around * section.radial;
         Self {
             nodes,
-            memory_bytes: BASE_BYTES + BYTES_PER_NODE * nodes as f64,
+            memory_bytes: memory_bytes(nodes),
             series_bytes: SERIES_BYTES_PER_NODE * (nodes * section.field_frames) as f64,
         }
     }
@@ -107,7 +112,7 @@ impl fmt::Display for ViscousCost {
             self.nodes,
             self.nodes_ratio(),
             default_nodes(),
-            (BASE_BYTES + BYTES_PER_NODE * default_nodes() as f64) / 1e9,
+            memory_bytes(default_nodes()) / 1e9,
         )?;
         if self.series_bytes > 0.0 {
             write!(
