@@ -7,6 +7,7 @@ use std::process::ExitCode;
 use anyhow::{Context, Result};
 use clap::{Parser, Subcommand};
 use fwav_actuator::params::{PlantParams, DEFAULT_PLANT_TOML};
+use fwav_hil_sim::metrics::Report;
 use fwav_hil_sim::scenario::{self, Scenario};
 use fwav_hil_sim::serve::Server;
 
@@ -152,37 +153,8 @@ fn run(cli: Cli) -> Result<ExitCode> {
             if json {
                 println!("{}", serde_json::to_string_pretty(&report)?);
             } else {
-                println!("{}: {:.1} s simulated", path.display(), report.duration_s);
-                println!(
-                    "  target {:.2} Hz, {:.2} deg; over the last {} cycles:",
-                    report.target_frequency_hz, report.target_amplitude_deg, report.measured_cycles
-                );
-                println!(
-                    "  amplitude error {:+.3} %, frequency error {:+.4} %, phase lag {:+.2} deg, RMS tracking error {:.2} %",
-                    report.amplitude_error_pct,
-                    report.frequency_error_pct,
-                    report.phase_lag_deg,
-                    report.rms_tracking_error_pct
-                );
-                println!(
-                    "  current peak {:.3} A (limit {:.2} A), RMS {:.3} A; battery {:.3} W, {:.4} J per cycle",
-                    report.peak_current_a,
-                    report.current_limit_a,
-                    report.rms_current_a,
-                    report.battery_power_w,
-                    report.energy_per_cycle_j
-                );
-                println!(
-                    "  steady state: current peak {:.3} A, terminal voltage peak {:.3} V, duty saturated {:.1} % of the time",
-                    report.steady_peak_current_a,
-                    report.steady_peak_voltage_v,
-                    report.duty_saturated_pct
-                );
-                if report.duty_saturated_pct > 0.0 {
-                    println!(
-                        "  the drive is out of voltage: the profile is not followed at every instant (only its fundamental may be); this demand is beyond the actuator"
-                    );
-                }
+                println!("{}: {} s simulated", path.display(), report.duration_s);
+                print_steady(&report, &scenario);
                 println!(
                     "  energy balance residual {:.2e} %",
                     report.energy_balance_residual_pct
@@ -212,4 +184,59 @@ fn run(cli: Cli) -> Result<ExitCode> {
         }
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// The steady-state lines of a report: its window, the tracking, the
+/// current and the battery, or why the run has none.
+fn print_steady(report: &Report, scenario: &Scenario) {
+    let first_fault = scenario.faults.iter().map(|f| f.at_s).reduce(f64::min);
+    let before = match first_fault {
+        Some(t) => format!("before its end and its first fault at {t:.3} s"),
+        None => "before its end".to_owned(),
+    };
+    let Some(steady) = &report.steady else {
+        println!("  no steady-state numbers: the run holds no whole reference cycle {before}");
+        println!(
+            "  current peak {:.3} A (limit {:.2} A)",
+            report.peak_current_a, report.current_limit_a
+        );
+        return;
+    };
+    let window = if report.measured_cycles < report.cycles_asked {
+        format!(
+            "the last {} cycles ({} asked; the run holds no more whole ones {before})",
+            report.measured_cycles, report.cycles_asked
+        )
+    } else {
+        format!("the last {} cycles", report.measured_cycles)
+    };
+    println!(
+        "  target {:.2} Hz, {:.2} deg; over {window}:",
+        steady.target_frequency_hz, steady.target_amplitude_deg
+    );
+    let frequency = steady.frequency_error_pct.map_or(
+        "frequency error not measured (fewer than two upward crossings of the mean)".to_owned(),
+        |e| format!("frequency error {e:+.4} %"),
+    );
+    println!(
+        "  amplitude error {:+.3} %, {frequency}, phase lag {:+.2} deg, RMS tracking error {:.2} %",
+        steady.amplitude_error_pct, steady.phase_lag_deg, steady.rms_tracking_error_pct
+    );
+    println!(
+        "  current peak {:.3} A (limit {:.2} A), RMS {:.3} A; battery {:.3} W, {:.4} J per cycle",
+        report.peak_current_a,
+        report.current_limit_a,
+        steady.rms_current_a,
+        steady.battery_power_w,
+        steady.energy_per_cycle_j
+    );
+    println!(
+        "  steady state: current peak {:.3} A, terminal voltage peak {:.3} V, duty saturated {:.1} % of the time",
+        steady.steady_peak_current_a, steady.steady_peak_voltage_v, steady.duty_saturated_pct
+    );
+    if steady.duty_saturated_pct > 0.0 {
+        println!(
+            "  the drive is out of voltage: the profile is not followed at every instant (only its fundamental may be); this demand is beyond the actuator"
+        );
+    }
 }

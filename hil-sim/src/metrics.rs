@@ -60,22 +60,55 @@ pub struct Report {
     pub duration_s: f64,
     /// Seed of the sensor noise.
     pub seed: u64,
-    /// Reference cycles in the steady-state window.
+    /// Reference cycles in the steady-state window: the scenario's
+    /// `measure_cycles`, or fewer when the run holds fewer whole cycles
+    /// before its end and its first fault.
     pub measured_cycles: u32,
+    /// The cycles the scenario asked to measure (`measure_cycles`).
+    pub cycles_asked: u32,
+    /// The numbers of the steady-state window; `None` (absent from the
+    /// JSON) when the run holds no whole reference cycle before its end
+    /// and its first fault, so there is nothing to measure them over.
+    #[serde(flatten)]
+    pub steady: Option<SteadyState>,
+    /// Largest |motor current| while running, A.
+    pub peak_current_a: f64,
+    /// The controller's current limit, A.
+    pub current_limit_a: f64,
+    /// Energy balance E_in - (losses + dE_stored) over the run, % of E_in.
+    pub energy_balance_residual_pct: f64,
+    /// Per segment change: cycles until the per-cycle amplitude stays within
+    /// 2% of the (ramping) target; null if never.
+    pub settle_cycles: Vec<Option<u32>>,
+    /// From link silence to the wing at rest (|angle| < 1 deg for good), s.
+    pub time_to_rest_after_link_silence_s: Option<f64>,
+    /// From an encoder-loss or stall fault to the bridge disarmed, s.
+    pub time_to_disarm_after_fault_s: Option<f64>,
+    /// Armed at the end.
+    pub armed_at_end: bool,
+    /// Latched faults at the end.
+    pub faults_at_end: String,
+}
+
+/// The numbers of the steady-state window: the last `measured_cycles`
+/// whole reference cycles before the run's end and its first fault.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SteadyState {
     /// Target frequency in the window, Hz.
     pub target_frequency_hz: f64,
     /// Target amplitude in the window, deg.
     pub target_amplitude_deg: f64,
     /// (measured - target) / target fundamental amplitude, %.
     pub amplitude_error_pct: f64,
-    /// (measured - target) / target frequency, %.
-    pub frequency_error_pct: f64,
+    /// (measured - target) / target frequency, %; `None` (null) when the
+    /// wing crossed its mean upward fewer than twice in the window (one
+    /// cycle measured, or a wing that barely moves), which leaves no
+    /// period to measure.
+    pub frequency_error_pct: Option<f64>,
     /// Phase lag of the wing behind the target, deg.
     pub phase_lag_deg: f64,
     /// RMS of (angle - target) over the window / target amplitude, %.
     pub rms_tracking_error_pct: f64,
-    /// Largest |motor current| while running, A.
-    pub peak_current_a: f64,
     /// Largest |motor current| in the steady-state window, A.
     pub steady_peak_current_a: f64,
     /// Largest |terminal voltage| of the motor in the steady-state window,
@@ -90,25 +123,10 @@ pub struct Report {
     pub duty_saturated_pct: f64,
     /// RMS motor current over the window, A.
     pub rms_current_a: f64,
-    /// The controller's current limit, A.
-    pub current_limit_a: f64,
     /// Mean battery power over the window, W.
     pub battery_power_w: f64,
     /// Battery energy per flapping cycle in the window, J.
     pub energy_per_cycle_j: f64,
-    /// Energy balance E_in - (losses + dE_stored) over the run, % of E_in.
-    pub energy_balance_residual_pct: f64,
-    /// Per segment change: cycles until the per-cycle amplitude stays within
-    /// 2% of the (ramping) target; null if never.
-    pub settle_cycles: Vec<Option<u32>>,
-    /// From link silence to the wing at rest (|angle| < 1 deg for good), s.
-    pub time_to_rest_after_link_silence_s: Option<f64>,
-    /// From an encoder-loss or stall fault to the bridge disarmed, s.
-    pub time_to_disarm_after_fault_s: Option<f64>,
-    /// Armed at the end.
-    pub armed_at_end: bool,
-    /// Latched faults at the end.
-    pub faults_at_end: String,
 }
 
 /// Lock-in sums over a range of the trace: (a, b, a_ref, b_ref, T).
@@ -157,56 +175,22 @@ impl Report {
             .count();
         let starts = cycle_starts(&trace[..usable]);
         let n = (scenario.measure_cycles as usize).min(starts.len().saturating_sub(1));
-        let (lo, hi) = if n > 0 {
-            (starts[starts.len() - 1 - n], starts[starts.len() - 1])
-        } else {
-            (0, usable)
-        };
-        let window = &trace[lo..hi];
-
-        let (a, b, ar, br, t) = lock_in(window, dt);
-        let amplitude = a.hypot(b);
-        let target_amplitude = ar.hypot(br);
-        let lag = ((-b).atan2(a) - (-br).atan2(ar) + PI).rem_euclid(2.0 * PI) - PI;
-        let last = window.last().copied();
-        let target_frequency = last.map_or(0.0, |p| p.frequency_hz);
-        let frequency = measured_frequency(window, dt);
-        let rms_err = rms(window.iter().map(|p| p.sample.angle_rad - p.target_rad));
+        let steady = (n > 0).then(|| {
+            let window = &trace[starts[starts.len() - 1 - n]..starts[starts.len() - 1]];
+            SteadyState::over(window, n, dt)
+        });
         let running = trace.iter().filter(|p| p.sample.armed);
         let peak_current = running
             .map(|p| p.sample.current_a.abs())
             .fold(0.0, f64::max);
-
-        let battery_window = match (window.first(), window.last()) {
-            (Some(first), Some(last)) => last.sample.battery_j - first.sample.battery_j,
-            _ => 0.0,
-        };
         Self {
             duration_s: scenario.duration_s,
             seed: plant.sensors.seed,
             measured_cycles: n as u32,
-            target_frequency_hz: target_frequency,
-            target_amplitude_deg: target_amplitude.to_degrees(),
-            amplitude_error_pct: 100.0 * (amplitude - target_amplitude) / target_amplitude,
-            frequency_error_pct: 100.0 * (frequency - target_frequency) / target_frequency,
-            phase_lag_deg: lag.to_degrees(),
-            rms_tracking_error_pct: 100.0 * rms_err / target_amplitude,
+            cycles_asked: scenario.measure_cycles,
+            steady,
             peak_current_a: peak_current,
-            steady_peak_current_a: window
-                .iter()
-                .map(|p| p.sample.current_a.abs())
-                .fold(0.0, f64::max),
-            steady_peak_voltage_v: window
-                .iter()
-                .map(|p| p.sample.terminal_v.abs())
-                .fold(0.0, f64::max),
-            duty_saturated_pct: 100.0
-                * window.iter().filter(|p| p.sample.duty.abs() >= 1.0).count() as f64
-                / window.len().max(1) as f64,
-            rms_current_a: rms(window.iter().map(|p| p.sample.current_a)),
             current_limit_a: f64::from(sim.fc.params().get(ParamId::CurrentLimit)),
-            battery_power_w: battery_window / t.max(f64::MIN_POSITIVE),
-            energy_per_cycle_j: battery_window / (n.max(1) as f64),
             energy_balance_residual_pct: 100.0
                 * balance_residual(start_ledger, start_stored, &sim.plant),
             settle_cycles: settle_cycles(&trace[..usable], dt),
@@ -226,13 +210,54 @@ impl Report {
     }
 }
 
+impl SteadyState {
+    /// The numbers over `window`, `cycles` whole reference cycles of
+    /// control periods `dt` s long.
+    fn over(window: &[TracePoint], cycles: usize, dt: f64) -> Self {
+        let (a, b, ar, br, t) = lock_in(window, dt);
+        let amplitude = a.hypot(b);
+        let target_amplitude = ar.hypot(br);
+        let lag = ((-b).atan2(a) - (-br).atan2(ar) + PI).rem_euclid(2.0 * PI) - PI;
+        let target_frequency = window.last().map_or(0.0, |p| p.frequency_hz);
+        let rms_err = rms(window.iter().map(|p| p.sample.angle_rad - p.target_rad));
+        let battery = match (window.first(), window.last()) {
+            (Some(first), Some(last)) => last.sample.battery_j - first.sample.battery_j,
+            _ => 0.0,
+        };
+        Self {
+            target_frequency_hz: target_frequency,
+            target_amplitude_deg: target_amplitude.to_degrees(),
+            amplitude_error_pct: 100.0 * (amplitude - target_amplitude) / target_amplitude,
+            frequency_error_pct: measured_frequency(window, dt)
+                .map(|f| 100.0 * (f - target_frequency) / target_frequency),
+            phase_lag_deg: lag.to_degrees(),
+            rms_tracking_error_pct: 100.0 * rms_err / target_amplitude,
+            steady_peak_current_a: window
+                .iter()
+                .map(|p| p.sample.current_a.abs())
+                .fold(0.0, f64::max),
+            steady_peak_voltage_v: window
+                .iter()
+                .map(|p| p.sample.terminal_v.abs())
+                .fold(0.0, f64::max),
+            duty_saturated_pct: 100.0
+                * window.iter().filter(|p| p.sample.duty.abs() >= 1.0).count() as f64
+                / window.len().max(1) as f64,
+            rms_current_a: rms(window.iter().map(|p| p.sample.current_a)),
+            battery_power_w: battery / t.max(f64::MIN_POSITIVE),
+            energy_per_cycle_j: battery / cycles as f64,
+        }
+    }
+}
+
 fn rms(values: impl Iterator<Item = f64>) -> f64 {
     let (sum, n) = values.fold((0.0, 0usize), |(s, n), v| (s + v * v, n + 1));
     (sum / n.max(1) as f64).sqrt()
 }
 
-/// Mean frequency from upward crossings of the mean (interpolated).
-fn measured_frequency(window: &[TracePoint], dt: f64) -> f64 {
+/// Mean frequency from upward crossings of the mean (interpolated); `None`
+/// with fewer than two crossings.
+fn measured_frequency(window: &[TracePoint], dt: f64) -> Option<f64> {
     let ups: Vec<f64> = window
         .windows(2)
         .filter_map(|w| {
@@ -244,8 +269,10 @@ fn measured_frequency(window: &[TracePoint], dt: f64) -> f64 {
         })
         .collect();
     match (ups.first(), ups.last()) {
-        (Some(first), Some(last)) if ups.len() >= 2 => (ups.len() - 1) as f64 / (last - first),
-        _ => 0.0,
+        (Some(first), Some(last)) if ups.len() >= 2 => {
+            Some((ups.len() - 1) as f64 / (last - first))
+        }
+        _ => None,
     }
 }
 

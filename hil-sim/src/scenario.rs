@@ -81,7 +81,9 @@ pub struct Scenario {
     /// Host heartbeat period, s.
     #[serde(default = "default_heartbeat")]
     pub heartbeat_s: f64,
-    /// Steady-state metrics over this many final reference cycles.
+    /// Steady-state metrics over this many final reference cycles (at
+    /// least 1; fewer are measured when the run holds fewer whole cycles
+    /// before its end and its first fault, and the report says so).
     #[serde(default = "default_cycles")]
     pub measure_cycles: u32,
     /// Profile end action.
@@ -122,6 +124,9 @@ pub enum ScenarioError {
         /// The cap, s.
         max: f64,
     },
+    /// No cycle to measure the steady state over.
+    #[error("measure_cycles = 0: the steady-state numbers are measured over whole reference cycles; give 1 or more (the default is {})", default_cycles())]
+    MeasureCycles,
     /// The heartbeat period is not a positive, finite number of seconds.
     #[error("heartbeat_s = {heartbeat_s} is not a positive, finite number of seconds")]
     Heartbeat {
@@ -162,8 +167,8 @@ impl Scenario {
         Ok(s)
     }
 
-    /// Checks the values: the run's length, the heartbeat period, and that
-    /// every fault fires inside the run (a supply drop with its voltage).
+    /// Checks the values: the run's length, the heartbeat period, at least
+    /// one cycle to measure, and that every fault fires inside the run (a supply drop with its voltage).
     pub fn check(&self) -> Result<(), ScenarioError> {
         // Written so that NaN fails.
         if !(self.duration_s > 0.0 && self.duration_s < MAX_DURATION_S) {
@@ -176,6 +181,9 @@ impl Scenario {
             return Err(ScenarioError::Heartbeat {
                 heartbeat_s: self.heartbeat_s,
             });
+        }
+        if self.measure_cycles == 0 {
+            return Err(ScenarioError::MeasureCycles);
         }
         for (index, fault) in self.faults.iter().enumerate() {
             if !(0.0..self.duration_s).contains(&fault.at_s) {

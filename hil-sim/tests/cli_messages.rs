@@ -192,3 +192,32 @@ fn a_picture_is_never_drawn_over_a_file() {
     assert_plain_error(&hil_sim(&["run", &scenario, "--plot", png]));
     assert_eq!(std::fs::read(png).unwrap(), bytes);
 }
+
+/// A run too short to hold a whole reference cycle prints that it has no
+/// steady-state numbers, not numbers over none (it printed "over the last
+/// 0 cycles" and a frequency error of -100 %).
+#[test]
+fn a_run_without_a_whole_cycle_prints_no_steady_numbers() {
+    let dir = Scratch::new("short-run");
+    let scenario = dir.file(
+        "short.toml",
+        &SCENARIO.replace("duration_s = 0.5", "duration_s = 0.05"),
+    );
+    let out = hil_sim(&["run", &scenario]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    assert!(
+        stdout.contains(
+            "no steady-state numbers: the run holds no whole reference cycle before its end"
+        ),
+        "{stdout}"
+    );
+    for nonsense in [
+        "0 cycles",
+        "amplitude error",
+        "frequency error",
+        "J per cycle",
+    ] {
+        assert!(!stdout.contains(nonsense), "{nonsense:?} in {stdout}");
+    }
+}
