@@ -82,6 +82,7 @@ use std::f64::consts::PI;
 use std::fmt;
 
 use fwav_protocol::ParamId;
+use fwav_settings::Shown;
 use serde::Serialize;
 
 use crate::params::{ConfigError, PlantParams};
@@ -113,7 +114,7 @@ pub enum FeasibilityError {
     #[error("plant parameters: {0}")]
     Params(#[from] ConfigError),
     /// A field of the demand is out of range or not a number.
-    #[error("flapping demand: {field} = {value} is outside {range}")]
+    #[error("flapping demand: {field} = {} is outside {range}", Shown(*value))]
     Demand {
         /// The field, e.g. `frequency_hz`.
         field: &'static str,
@@ -124,7 +125,7 @@ pub enum FeasibilityError {
     },
     /// A field of the actuator limits or of the device envelope is out of
     /// range or not a number.
-    #[error("limits: {field} = {value} is outside {range}")]
+    #[error("limits: {field} = {} is outside {range}", Shown(*value))]
     Limits {
         /// The field, e.g. `current_a`.
         field: &'static str,
@@ -290,8 +291,11 @@ pub fn demand_waveform(
     p: &PlantParams,
     demand: &FlappingDemand,
 ) -> Result<Vec<DemandSample>, FeasibilityError> {
-    p.validate()?;
+    // The demand first: a vehicle's plant carries a spring tuned to the
+    // demand's frequency, which a NaN frequency makes NaN, so the plant's
+    // check would name the spring for the frequency's fault.
     demand.validate()?;
+    p.validate()?;
     let m = SAMPLES_PER_CYCLE;
     let w = 2.0 * PI * demand.frequency_hz;
     let a = demand.amplitude_deg.to_radians();

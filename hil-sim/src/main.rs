@@ -9,7 +9,7 @@ use clap::{Parser, Subcommand};
 use fwav_actuator::params::{PlantParams, DEFAULT_PLANT_TOML};
 use fwav_hil_sim::metrics::Report;
 use fwav_hil_sim::scenario::{self, Scenario};
-use fwav_hil_sim::serve::Server;
+use fwav_hil_sim::serve::{ServeError, Server};
 
 #[derive(Parser)]
 #[command(
@@ -30,7 +30,7 @@ enum Command {
         #[arg(long)]
         plant: Option<PathBuf>,
         /// Simulated seconds per wall-clock second.
-        #[arg(long, default_value_t = 1.0)]
+        #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
         speed: f64,
     },
     /// Run a scenario headless in simulated time and print its metrics.
@@ -120,7 +120,10 @@ fn run(cli: Cli) -> Result<ExitCode> {
         }
         Command::Serve { plant, speed } => {
             let plant = load_plant(plant.as_deref())?;
-            let mut server = Server::new(&plant, speed)?;
+            let mut server = Server::new(&plant, speed).map_err(|e| match e {
+                ServeError::Speed { .. } => anyhow::Error::new(e).context("--speed"),
+                e => e.into(),
+            })?;
             println!("{}", server.path());
             eprintln!(
                 "hil-sim: virtual flight controller on {} ({}x real time); Ctrl-C stops",

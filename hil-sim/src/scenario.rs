@@ -22,6 +22,7 @@ use fwav_fc_core::reference::ReferenceGenerator;
 use fwav_link::{Link, LinkError};
 use fwav_protocol::document::{ProfileDocument, SegmentDocument, FORMAT, FORMAT_VERSION};
 use fwav_protocol::{Command, EndAction, Limits, Profile};
+use fwav_settings::Shown;
 use serde::{Deserialize, Serialize};
 
 use crate::metrics::{Report, TracePoint};
@@ -117,7 +118,7 @@ pub enum ScenarioError {
     #[error("the simulated flight controller: {0}")]
     Link(#[from] LinkError),
     /// The run's length is not a positive number of seconds below the cap.
-    #[error("duration_s = {duration_s} is outside 0 < duration_s < {max} s")]
+    #[error("duration_s = {} is outside 0 < duration_s < {} s", Shown(*duration_s), Shown(*max))]
     Duration {
         /// The value given.
         duration_s: f64,
@@ -128,13 +129,13 @@ pub enum ScenarioError {
     #[error("measure_cycles = 0: the steady-state numbers are measured over whole reference cycles; give 1 or more (the default is {})", default_cycles())]
     MeasureCycles,
     /// The heartbeat period is not a positive, finite number of seconds.
-    #[error("heartbeat_s = {heartbeat_s} is not a positive, finite number of seconds")]
+    #[error("heartbeat_s = {} is not a positive, finite number of seconds", Shown(*heartbeat_s))]
     Heartbeat {
         /// The value given.
         heartbeat_s: f64,
     },
     /// A fault whose time is not inside the run never fires.
-    #[error("faults[{index}] ({kind}): at_s = {at_s} is outside the run: a fault fires at 0 <= at_s < duration_s = {duration_s} s")]
+    #[error("faults[{index}] ({kind}): at_s = {} is outside the run: a fault fires at 0 <= at_s < duration_s = {} s", Shown(*at_s), Shown(*duration_s))]
     FaultTime {
         /// Its position in `faults`, from 0.
         index: usize,
@@ -147,7 +148,7 @@ pub enum ScenarioError {
     },
     /// A supply drop without the voltage it drops to, or with one that is
     /// not a positive number of volts.
-    #[error("faults[{index}] (supply_drop): battery_v = {} must be given as the battery's voltage after the drop, a positive number of volts", battery_v.map_or("(missing)".to_owned(), |v| v.to_string()))]
+    #[error("faults[{index}] (supply_drop): battery_v = {} must be given as the battery's voltage after the drop, a positive number of volts", battery_v.map_or("(missing)".to_owned(), |v| Shown(v).to_string()))]
     Battery {
         /// Its position in `faults`, from 0.
         index: usize,

@@ -5,6 +5,7 @@ use std::io::{ErrorKind, Read, Write};
 use std::time::{Duration, Instant};
 
 use fwav_actuator::params::PlantParams;
+use fwav_settings::Shown;
 use serialport::{SerialPort, TTYPort};
 
 use crate::sim::Simulator;
@@ -18,6 +19,13 @@ pub enum ServeError {
     /// Reading or writing it failed.
     #[error("pseudo-terminal I/O: {0}")]
     Io(#[from] std::io::Error),
+    /// A pace that is not a positive, finite number (it was taken as 1
+    /// without a word, and printed as given).
+    #[error("a pace of {} simulated seconds per wall-clock second: give a positive, finite number (1 is real time, 10 ten times faster)", Shown(*speed))]
+    Speed {
+        /// The pace given.
+        speed: f64,
+    },
 }
 
 /// A virtual flight controller on a pseudo-terminal.
@@ -31,8 +39,12 @@ pub struct Server {
 }
 
 impl Server {
-    /// Creates the pty pair; `speed` is simulated seconds per wall second.
+    /// Creates the pty pair; `speed` is simulated seconds per wall second,
+    /// positive and finite.
     pub fn new(plant: &PlantParams, speed: f64) -> Result<Self, ServeError> {
+        if !(speed > 0.0 && speed.is_finite()) {
+            return Err(ServeError::Speed { speed });
+        }
         let (mut master, slave) = TTYPort::pair()?;
         master.set_timeout(Duration::from_millis(0))?;
         let path = slave.name().unwrap_or_default();
@@ -46,7 +58,7 @@ impl Server {
             master,
             _slave: slave,
             path,
-            speed: if speed > 0.0 { speed } else { 1.0 },
+            speed,
         })
     }
 

@@ -155,9 +155,9 @@ fn fly(p: &PlantParams, d: &FlappingDemand) -> Report {
 /// the fundamental amplitude within 2%, the current under the controller's
 /// limit.
 fn flown(r: &Report) -> bool {
-    steady(&r).duty_saturated_pct == 0.0
-        && steady(&r).amplitude_error_pct.abs() < 2.0
-        && steady(&r).steady_peak_current_a < r.current_limit_a
+    steady(r).duty_saturated_pct == 0.0
+        && steady(r).amplitude_error_pct.abs() < 2.0
+        && steady(r).steady_peak_current_a < r.current_limit_a
 }
 
 /// The smallest margin of the three: below 0 the demand is beyond the

@@ -121,15 +121,21 @@ fn a_missing_scenario_is_reported_once() {
 }
 
 /// A duration too long is called too long, with its key, value and
-/// range (it said "must be positive").
+/// range (it said "must be positive"); a mistyped exponent is shown as
+/// written (1e300 was a line of 301 digits).
 #[test]
 fn a_too_long_duration_is_named_with_its_range() {
     let scratch = Scratch::new("long");
-    let scenario = scratch.file("long.toml", &SCENARIO.replace("0.5", "1e6"));
-    let stderr = assert_plain_error(&hil_sim(&["run", &scenario]));
-    assert!(stderr.contains("duration_s = 1000000"), "{stderr}");
-    assert!(stderr.contains("< 100000 s"), "{stderr}");
-    assert!(!stderr.contains("positive"), "{stderr}");
+    for (value, shown) in [
+        ("1e6", "duration_s = 1e6 "),
+        ("1e300", "duration_s = 1e300 "),
+    ] {
+        let scenario = scratch.file("long.toml", &SCENARIO.replace("0.5", value));
+        let stderr = assert_plain_error(&hil_sim(&["run", &scenario]));
+        assert!(stderr.contains(shown), "{stderr}");
+        assert!(stderr.contains("< 100000 s"), "{stderr}");
+        assert!(!stderr.contains("positive"), "{stderr}");
+    }
 }
 
 /// A picture that cannot be written names the file and the OS's reason,
@@ -219,5 +225,21 @@ fn a_run_without_a_whole_cycle_prints_no_steady_numbers() {
         "J per cycle",
     ] {
         assert!(!stdout.contains(nonsense), "{nonsense:?} in {stdout}");
+    }
+}
+
+/// `hil-sim serve --speed -1` (or 0, NaN) ran at real time while saying
+/// "-1x real time"; a pace that is not a positive, finite number is now
+/// refused, naming the flag.
+#[test]
+fn a_bad_pace_is_refused() {
+    for speed in ["-1", "0", "nan", "inf"] {
+        let out = hil_sim(&["serve", "--speed", speed]);
+        let stderr = assert_plain_error(&out);
+        assert!(
+            stderr.contains("--speed: a pace of") && stderr.contains("positive, finite"),
+            "{speed}: {stderr}"
+        );
+        assert!(out.stdout.is_empty(), "{speed}: the pty was made");
     }
 }

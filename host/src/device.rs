@@ -8,6 +8,8 @@ use fwav_protocol::{
     TelemetryConfig,
 };
 
+use fwav_settings::Shown;
+
 use crate::link::{Link, LinkError};
 
 /// Why an operation on the device failed.
@@ -32,12 +34,13 @@ pub enum DeviceError {
         name: String,
     },
     /// A parameter value outside its range.
-    #[error("{name} = {value} is outside {min}..={max} {unit}")]
+    #[error("{name} = {} is outside {min}..={max} {unit}", Shown(*value))]
     ParamOutOfRange {
         /// Parameter name.
         name: &'static str,
-        /// Value given.
-        value: f32,
+        /// Value given (as given: one beyond an `f32`'s range is not shown
+        /// as `inf`).
+        value: f64,
         /// Smallest allowed.
         min: f32,
         /// Largest allowed.
@@ -121,12 +124,15 @@ impl<P: Read + Write> Device<P> {
     }
 
     /// Sets a parameter by its command-line name, checked locally first.
-    pub fn set_param(&mut self, name: &str, value: f32) -> Result<(), DeviceError> {
+    pub fn set_param(&mut self, name: &str, value: f64) -> Result<(), DeviceError> {
         let id = ParamId::from_name(name).ok_or_else(|| DeviceError::UnknownParam {
             name: name.to_owned(),
         })?;
         let info = id.info();
-        if !id.accepts(value) {
+        // The wire carries an f32: 1e300 becomes inf, which `accepts`
+        // refuses; the error shows the value given.
+        let sent = value as f32;
+        if !id.accepts(sent) {
             return Err(DeviceError::ParamOutOfRange {
                 name: info.name,
                 value,
@@ -137,7 +143,7 @@ impl<P: Read + Write> Device<P> {
         }
         Ok(self
             .link
-            .command(Command::SetParam(ParamValue { id, value }))?)
+            .command(Command::SetParam(ParamValue { id, value: sent }))?)
     }
 
     /// Arms; returns the session whose heartbeats ([`Device::heartbeat`])

@@ -27,6 +27,7 @@ mod cli {
 use fwav::profile_file::ProfileFile;
 use fwav_protocol::document::ProfileDocument;
 use fwav_protocol::{Limits, MAX_FRAME_LEN, MAX_SEGMENTS, PROTOCOL_VERSION, SCHEMA_HASH};
+use fwav_settings::Shown;
 
 #[derive(Parser)]
 #[command(
@@ -349,22 +350,24 @@ fn print_profile(loaded: &ProfileFile) {
     if !doc.description.is_empty() {
         println!("  {}", doc.description);
     }
+    // The file's own numbers, in powers of ten where long: a mistyped
+    // 1e300 is shown as written, not as 301 digits or the wire's `inf`.
     println!(
         "  {} segment(s), {:.2} s per pass, then {}",
         doc.segments.len(),
-        loaded.profile.duration_s(),
+        Shown(doc.segments.iter().map(|s| s.duration_s).sum()),
         doc.on_end
     );
     println!("  #  frequency_hz  amplitude_deg  mean_deg  duration_s  ramp_s  downstroke");
     for (i, s) in doc.segments.iter().enumerate() {
         println!(
             "  {i:<2} {:>12.3} {:>14.2} {:>9.2} {:>11.3} {:>7.3} {:>11.3}",
-            s.frequency_hz,
-            s.amplitude_deg,
-            s.mean_deg,
-            s.duration_s,
-            s.ramp_s,
-            s.downstroke_fraction
+            Shown(s.frequency_hz),
+            Shown(s.amplitude_deg),
+            Shown(s.mean_deg),
+            Shown(s.duration_s),
+            Shown(s.ramp_s),
+            Shown(s.downstroke_fraction)
         );
     }
 }

@@ -134,8 +134,9 @@ pub enum ProfileError {
         /// [`MAX_SEGMENTS`].
         max: u32,
     },
-    /// A field is NaN or infinite.
-    #[error("segment {segment}: {field} is not a finite number")]
+    /// A field is NaN or infinite as the wire's `f32` holds it (a
+    /// profile file's 1e300 is finite in the file but not on the wire).
+    #[error("segment {segment}: {field} is not a finite number (NaN, infinite, or beyond the link's 32-bit range of +-3.4e38)")]
     NotFinite {
         /// Segment index.
         segment: u8,

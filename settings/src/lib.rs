@@ -38,13 +38,16 @@
 //! - [`range`]: allowed ranges as data and their text.
 //! - [`setting`]: a declared key, a table of them, and the check.
 //! - [`template`]: the commented TOML template.
+//! - [`shown`]: a real number as a message shows it ([`Shown`]).
 
 #![warn(missing_docs)]
 
 pub mod range;
 pub mod setting;
+pub mod shown;
 pub mod template;
 
 pub use range::{Allowed, Bound, Integers, Interval, Limits};
 pub use setting::{Setting, SettingError, Table, Value};
+pub use shown::Shown;
 pub use template::{Template, TemplateError};

@@ -5,6 +5,8 @@
 
 use std::fmt;
 
+use crate::shown::Shown;
+
 /// One side of a real interval.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Bound {
@@ -93,13 +95,13 @@ impl fmt::Display for Interval {
     /// large bounds in exponent form (`1e-12`).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.low {
-            Bound::Closed(l) => write!(f, "[{}", Number(l))?,
-            Bound::Open(l) => write!(f, "({}", Number(l))?,
+            Bound::Closed(l) => write!(f, "[{}", Shown(l))?,
+            Bound::Open(l) => write!(f, "({}", Shown(l))?,
             Bound::Unbounded => f.write_str("(-inf")?,
         }
         match self.high {
-            Bound::Closed(h) => write!(f, ", {}]", Number(h)),
-            Bound::Open(h) => write!(f, ", {})", Number(h)),
+            Bound::Closed(h) => write!(f, ", {}]", Shown(h)),
+            Bound::Open(h) => write!(f, ", {})", Shown(h)),
             Bound::Unbounded => f.write_str(", inf)"),
         }
     }
@@ -200,21 +202,6 @@ impl fmt::Display for Limits {
             write!(f, " {}", self.unit)?;
         }
         Ok(())
-    }
-}
-
-/// A bound as text: shortest round-trip decimal, exponent form below
-/// 1e-3 and from 1e6 on.
-struct Number(f64);
-
-impl fmt::Display for Number {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let x = self.0;
-        if x != 0.0 && x.is_finite() && !(1e-3..1e6).contains(&x.abs()) {
-            write!(f, "{x:e}")
-        } else {
-            write!(f, "{x}")
-        }
     }
 }
 

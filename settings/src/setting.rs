@@ -5,6 +5,7 @@
 use std::fmt;
 
 use crate::range::{Allowed, Limits};
+use crate::shown::Shown;
 
 /// A setting's value as read from the parsed file, for the check and the
 /// error.
@@ -42,11 +43,12 @@ impl Value {
 }
 
 impl fmt::Display for Value {
-    /// Reals in shortest round-trip form (`-3`, `0.25`), sequences as
-    /// `[40, 30, 20]`, words quoted.
+    /// Reals in shortest round-trip form (`-3`, `0.25`; powers of ten
+    /// where that is long, `1e300`: [`Shown`]), sequences as `[40, 30,
+    /// 20]`, words quoted.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Value::Real(x) => write!(f, "{x}"),
+            Value::Real(x) => write!(f, "{}", Shown(*x)),
             Value::Integer(n) => write!(f, "{n}"),
             Value::Reals(xs) => {
                 f.write_str("[")?;
@@ -54,7 +56,7 @@ impl fmt::Display for Value {
                     if i > 0 {
                         f.write_str(", ")?;
                     }
-                    write!(f, "{x}")?;
+                    write!(f, "{}", Shown(*x))?;
                 }
                 f.write_str("]")
             }

@@ -6,6 +6,8 @@
 //! the system analysis (mid-span section x, y over a period) enters the 2D
 //! analysis, after it is expressed in the chord frame.
 
+use fwav_settings::Shown;
+
 /// Why a camber history is refused.
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum CamberError {
@@ -47,10 +49,10 @@ pub enum CamberError {
     /// A mid-line sample much longer or shorter than the chord
     /// ([`MIDLINE_STRETCH`]).
     #[error(
-        "sample {sample}'s mid-line is {} chords long: a section's mid-line keeps the \
+        "sample {sample}'s mid-line is {:.4} chords long: a section's mid-line keeps the \
          chord's length within {}% (a system analysis's within 0.25%); check the sample, cut \
          short or scaled, or the file's units (chords)",
-        shown_length(*.length),
+        Shown(*.length),
         100.0 * MIDLINE_STRETCH
     )]
     MidlineLength {
@@ -59,16 +61,6 @@ pub enum CamberError {
         /// Its length along the points, chords.
         length: f64,
     },
-}
-
-/// A mid-line's length as the message shows it: four decimals, or in
-/// powers of ten when that would print a line of digits or zeros.
-fn shown_length(length: f64) -> String {
-    if length == 0.0 || (1e-3..1e4).contains(&length.abs()) {
-        format!("{length:.4}")
-    } else {
-        format!("{length:.3e}")
-    }
 }
 
 /// How far a mid-line sample's length may differ from the chord, as a
@@ -404,7 +396,10 @@ mod tests {
         // The length as a reader takes it in: four decimals, or a power of
         // ten where they would print 300 digits (a coordinate of 1e300,
         // tried by hand on 2026-12-07).
-        for (length, shown) in [(0.8335, "is 0.8335 chords"), (2e300, "is 2.000e300 chords")] {
+        for (length, shown) in [
+            (0.8335, "is 0.8335 chords"),
+            (2e300, "is 2.0000e300 chords"),
+        ] {
             let e = CamberError::MidlineLength { sample: 0, length };
             assert!(e.to_string().contains(shown), "{e}");
         }

@@ -327,12 +327,13 @@ impl Case {
             return Ok(());
         }
         let default_dt = Settings::default().dt;
+        let settings = self.settings();
         Err(CaseError::TooManySteps {
             reduced_frequency: self.motion.reduced_frequency,
             period: self.period(),
             cycles: self.cycles,
-            dt: self.settings().dt,
-            steps,
+            dt: settings.dt,
+            steps: (settings.duration / settings.dt).round(),
             max: MAX_STEPS,
             min_reduced_frequency: f64::from(self.cycles) * PI / (MAX_STEPS as f64 * default_dt),
         })
@@ -669,6 +670,7 @@ mod tests {
     #[test]
     fn endless_cases_are_refused_with_the_reduced_frequency_that_fits() {
         let e = plunge(SectionModel::Flat, 0.05, 1e-3).run().unwrap_err();
+        let text = e.to_string();
         let CaseError::TooManySteps {
             steps,
             min_reduced_frequency,
@@ -677,7 +679,9 @@ mod tests {
         else {
             panic!("{e}")
         };
-        assert!(steps > 1_000_000, "{steps}");
+        assert!(steps > 1e6, "{steps}");
+        // The count as a person reads it, in powers of ten past a million.
+        assert!(text.contains("take 1.047198e6 time steps"), "{text}");
         let fits = plunge(SectionModel::Flat, 0.05, min_reduced_frequency * 1.001);
         assert!(fits.steps() <= MAX_STEPS && fits.check_work().is_ok());
         let zero = plunge(SectionModel::Flat, 0.05, 0.0);

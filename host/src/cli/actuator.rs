@@ -27,10 +27,10 @@ pub struct ActuatorArgs {
     #[arg(long)]
     pub plant: Option<PathBuf>,
     /// Flapping frequency, Hz.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub frequency_hz: f64,
     /// Flapping amplitude (half the stroke), deg.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub amplitude_deg: f64,
     /// Mean flapping angle, deg.
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]

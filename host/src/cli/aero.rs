@@ -18,6 +18,7 @@ use fwav::output::flow_field_vtu::{write_flow_field, FlowSeries};
 use fwav::output::history_csv::write_history_csv;
 use fwav::output::section_plot::draw;
 use fwav::output::surface_csv::write_surface_csv;
+use fwav_settings::Shown;
 use indicatif::ProgressBar;
 
 use super::confirm::confirm_cost;
@@ -90,7 +91,7 @@ pub struct Aero2dArgs {
     pub duration: Option<f64>,
     /// Critical leading-edge suction parameter: shed leading-edge vortices
     /// beyond it (LDVM). Off when not given.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub lesp_critical: Option<f64>,
     /// Chord Reynolds number: of the laminar skin-friction estimate of the
     /// inviscid models, of the flow in the Navier–Stokes model (default:
@@ -202,7 +203,7 @@ fn check(a: &Aero2dArgs) -> Result<()> {
     }
     if let Some(c) = a.ns_courant {
         if !(0.1..=10.0).contains(&c) {
-            bail!("--ns-courant {c} must be in [0.1, 10]");
+            bail!("--ns-courant {} must be in [0.1, 10]", Shown(c));
         }
     }
     if a.model == FlowModel::Ns
@@ -217,13 +218,13 @@ fn check(a: &Aero2dArgs) -> Result<()> {
     if !(a.reduced_frequency > 0.0 && a.reduced_frequency <= 20.0) {
         bail!(
             "--reduced-frequency {} must be in (0, 20]",
-            a.reduced_frequency
+            Shown(a.reduced_frequency)
         );
     }
     if !(-2.0..=2.0).contains(&a.plunge_amplitude) {
         bail!(
             "--plunge-amplitude {} must be within +-2 chords",
-            a.plunge_amplitude
+            Shown(a.plunge_amplitude)
         );
     }
     if !((-60.0..=60.0).contains(&a.pitch_amplitude_deg)
@@ -234,7 +235,7 @@ fn check(a: &Aero2dArgs) -> Result<()> {
     if !(a.pitch_phase_deg.is_finite() && (0.0..=1.0).contains(&a.pivot)) {
         bail!(
             "--pivot {} must be in [0, 1] chords and --pitch-phase-deg finite",
-            a.pivot
+            Shown(a.pivot)
         );
     }
     if let Some(d) = a.duration {
@@ -245,7 +246,10 @@ fn check(a: &Aero2dArgs) -> Result<()> {
             );
         }
         if !(d > 0.0 && d <= MAX_DURATION_CHORDS) {
-            bail!("--duration {d} must be in (0, {MAX_DURATION_CHORDS}] chords travelled");
+            bail!(
+                "--duration {} must be in (0, {MAX_DURATION_CHORDS}] chords travelled",
+                Shown(d)
+            );
         }
     }
     if a.cycles < 2 || a.cycles > 50 {
@@ -253,11 +257,11 @@ fn check(a: &Aero2dArgs) -> Result<()> {
     }
     if let Some(l) = a.lesp_critical {
         if !(l > 0.0 && l < 10.0) {
-            bail!("--lesp-critical {l} must be in (0, 10)");
+            bail!("--lesp-critical {} must be in (0, 10)", Shown(l));
         }
     }
     if !(100.0..=1e8).contains(&a.reynolds) {
-        bail!("--reynolds {} must be in [100, 1e8]", a.reynolds);
+        bail!("--reynolds {} must be in [100, 1e8]", Shown(a.reynolds));
     }
     Ok(())
 }

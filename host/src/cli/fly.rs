@@ -319,7 +319,7 @@ pub fn fc(path: &str, action: &str, sets: &[String], json: bool) -> Result<()> {
             let (name, value) = set
                 .split_once('=')
                 .with_context(|| format!("--set {set:?}: expected name=value"))?;
-            let value: f32 = value
+            let value: f64 = value
                 .trim()
                 .parse()
                 .with_context(|| format!("--set {set:?}: {value:?} is not a number"))?;

@@ -58,7 +58,7 @@ pub struct ExecutorArgs {
     #[arg(long)]
     pub mem: Option<String>,
     /// Slurm: seconds between two looks at the queue (default 10).
-    #[arg(long, value_name = "SECONDS")]
+    #[arg(long, value_name = "SECONDS", allow_negative_numbers = true)]
     pub poll: Option<f64>,
     /// Run cases far beyond the built-in design's cost.
     #[arg(long)]

@@ -88,7 +88,7 @@ fn aero2d_refuses_an_endless_case_at_once() {
     let stderr = text(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
     assert!(
-        stderr.contains("1047198 time steps") && stderr.contains("at least 0.052"),
+        stderr.contains("1.047198e6 time steps") && stderr.contains("at least 0.052"),
         "{stderr}"
     );
     // Refused before any step (the run itself would take hours).
@@ -153,6 +153,12 @@ fn design_refuses_values_that_cannot_run_before_writing_anything() {
             "[wing]\n",
             "[flight]\ndensity_kg_m3 = 1000\n[wing]\n",
             "flight.density_kg_m3 = 1000 is outside [0.01, 5] kg/m^3",
+        ),
+        // A mistyped exponent: shown as written, not as 301 digits.
+        (
+            "[wing]\n",
+            "[flight]\ndensity_kg_m3 = 1e300\n[wing]\n",
+            "flight.density_kg_m3 = 1e300 is outside [0.01, 5] kg/m^3",
         ),
     ];
     for (i, (from, to, expected)) in cases.iter().enumerate() {
@@ -441,4 +447,53 @@ fn aero2d_ns_divergence_names_what_to_change() {
             && stderr.contains("--ns-around"),
         "{stderr}"
     );
+}
+
+/// A mistyped exponent came back as a line of 301 digits (an `f64`'s
+/// `{}`): `--reynolds 1e300`, an actuator demand of 1e308 deg. Each is
+/// now shown as written. The actuator also blamed a NaN frequency on the
+/// spring tuned to it ("transmission.spring_nm_per_rad = NaN"), and took
+/// a negative amplitude for an unknown argument ("unexpected argument
+/// '-3'"); both are now named for what they are.
+#[test]
+fn bad_numbers_are_named_as_written() {
+    for (args, expected) in [
+        (
+            &["aero2d", "--reynolds", "1e300"][..],
+            "--reynolds 1e300 must be in [100, 1e8]",
+        ),
+        (
+            &["aero2d", "--model", "ns", "--duration", "1e-300"][..],
+            "a duration of 1e-300 chords travelled leaves fewer than two load samples",
+        ),
+        (
+            &[
+                "actuator",
+                "--frequency-hz",
+                "11",
+                "--amplitude-deg",
+                "1e308",
+            ][..],
+            "amplitude_deg = 1e308 is outside [0, 180] deg",
+        ),
+        (
+            &["actuator", "--frequency-hz", "nan", "--amplitude-deg", "30"][..],
+            "frequency_hz = NaN is outside (0, 1000] Hz",
+        ),
+        (
+            &["actuator", "--frequency-hz", "11", "--amplitude-deg", "-30"][..],
+            "amplitude_deg = -30 is outside [0, 180] deg",
+        ),
+    ] {
+        let out = fwav(args);
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
+        assert!(stderr.contains(expected), "{args:?}: {stderr}");
+        let longest_digits = stderr
+            .split(|c: char| !c.is_ascii_digit())
+            .map(str::len)
+            .max();
+        assert!(longest_digits < Some(20), "{args:?}: {stderr}");
+        assert!(out.stdout.is_empty(), "{args:?}: {}", text(&out.stdout));
+    }
 }

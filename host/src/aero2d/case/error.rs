@@ -1,6 +1,8 @@
 //! Why a 2D case cannot be set up or run ([`CaseError`]): each variant
 //! carries what was found and says what to change.
 
+use fwav_settings::Shown;
+
 use crate::aero2d::camber::CamberError;
 use crate::aero2d::naca::{NacaError, PointsError};
 use crate::aero2d::panel::{PanelError, ShapeError};
@@ -70,8 +72,9 @@ pub enum CaseError {
     DurationNeedsNs,
     /// A duration out of range.
     #[error(
-        "a duration of {duration} chords travelled: give more than 0 and at most {max} (a \
-         cylinder's wake settles within about 100 diameters)"
+        "a duration of {} chords travelled: give more than 0 and at most {max} (a \
+         cylinder's wake settles within about 100 diameters)",
+        Shown(*.duration)
     )]
     Duration {
         /// The duration asked, chords travelled.
@@ -82,9 +85,10 @@ pub enum CaseError {
     /// A duration whose second half, which the report is of, would hold
     /// fewer than two load samples.
     #[error(
-        "a duration of {duration} chords travelled leaves fewer than two load samples over its \
+        "a duration of {} chords travelled leaves fewer than two load samples over its \
          second half, which is reported (a sample every {interval:.4} chords, a 200th of the \
          motion's period): give at least {}",
+        Shown(*.duration),
         rounded_up(*.min)
     )]
     DurationTooShort {
@@ -128,10 +132,13 @@ pub enum CaseError {
     },
     /// A case whose periods are so long that it would take too many steps.
     #[error(
-        "reduced frequency {reduced_frequency}: a period is {period:.0} chords travelled, so \
-         {cycles} cycles take {steps} time steps of {dt} chords (at most {max} are allowed, \
-         a run's time growing faster than its steps); use a reduced frequency of at least \
-         {min_reduced_frequency:.3} or fewer cycles"
+        "reduced frequency {}: a period is {:.0} chords travelled, so {cycles} cycles take \
+         {} time steps of {dt} chords (at most {max} are allowed, a run's time growing \
+         faster than its steps); use a reduced frequency of at least \
+         {min_reduced_frequency:.3} or fewer cycles",
+        Shown(*.reduced_frequency),
+        Shown(*.period),
+        Shown(*.steps)
     )]
     TooManySteps {
         /// The reduced frequency.
@@ -142,8 +149,9 @@ pub enum CaseError {
         cycles: u32,
         /// The time step, chords travelled.
         dt: f64,
-        /// Steps the case would take.
-        steps: usize,
+        /// Steps the case would take (a real number: a reduced frequency
+        /// of 1e-300 asks for some 1e303, beyond any integer type).
+        steps: f64,
         /// The most allowed ([`super::MAX_STEPS`]).
         max: usize,
         /// The smallest reduced frequency that fits for these cycles.
@@ -152,10 +160,12 @@ pub enum CaseError {
     /// A Navier–Stokes case whose cycles travel farther than the model
     /// runs ([`super::MAX_DURATION_CHORDS`], as for a duration).
     #[error(
-        "reduced frequency {reduced_frequency}: a period is {period:.0} chords travelled, so \
-         {cycles} cycles are {chords:.0} chords, more than the Navier–Stokes model runs ({max}, \
-         as for --duration); use a reduced frequency of at least {min_reduced_frequency:.3} or \
-         fewer cycles"
+        "reduced frequency {}: a period is {:.0} chords travelled, so {cycles} cycles are {:.0} \
+         chords, more than the Navier–Stokes model runs ({max}, as for --duration); use a \
+         reduced frequency of at least {min_reduced_frequency:.3} or fewer cycles",
+        Shown(*.reduced_frequency),
+        Shown(*.period),
+        Shown(*.chords)
     )]
     TooLong {
         /// The reduced frequency.

@@ -259,6 +259,31 @@ fn upload_refuses_a_duration_that_is_not_a_positive_number_of_seconds() {
     }
 }
 
+/// `fwav fc params --set current_limit=1e300` named the value `inf` (the
+/// `f32` the wire carries); the error shows it as typed, and the device
+/// keeps its limit.
+#[test]
+fn a_parameter_beyond_the_wire_is_named_as_typed() {
+    let board = VirtualBoard::start();
+    let out = super::fwav(&[
+        "fc",
+        "--port",
+        &board.path,
+        "params",
+        "--set",
+        "current_limit=1e300",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("current_limit = 1e300 is outside 0..=50 A"),
+        "{stderr}"
+    );
+    let out = super::fwav(&["fc", "--port", &board.path, "params", "--json"]);
+    let params: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert_eq!(params["current_limit [A]"], 1.5, "{params}");
+}
+
 /// `fwav upload --start | head -1`: once the reader has gone, the pilot's
 /// next status line cannot be written; it stops the wing first and then
 /// ends with that error (exit 1), instead of being killed by SIGPIPE with

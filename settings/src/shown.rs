@@ -1,0 +1,85 @@
+//! A real number as a message shows a value someone gave.
+//!
+//! Rust's `{}` writes an `f64` in full decimal, so a mistyped `1e300`
+//! came back in an error as a line of 301 digits, and `1e-300` as 300
+//! zeros. [`Shown`] writes the same shortest round-trip form as `{}`
+//! where that is short (`-3`, `0.25`, `15000`), and powers of ten
+//! (`1e300`, `2.5e-9`) where it is not; a precision (`{:.3}`) and a
+//! width (`{:>10.3}`) apply to either.
+//!
+//! ```
+//! use fwav_settings::Shown;
+//!
+//! assert_eq!(Shown(15000.0).to_string(), "15000");
+//! assert_eq!(Shown(1e300).to_string(), "1e300");
+//! assert_eq!(Shown(-2.5e-9).to_string(), "-2.5e-9");
+//! assert_eq!(format!("{:.3}", Shown(0.25)), "0.250");
+//! assert_eq!(format!("{:>10.3}", Shown(1e300)), " 1.000e300");
+//! assert_eq!(format!("{:>9.3}", Shown(11.0)), "   11.000");
+//! assert_eq!(Shown(f64::NAN).to_string(), "NaN");
+//! ```
+
+use std::fmt;
+
+/// A real number shown in plain decimals when its magnitude is in
+/// `[1e-3, 1e6)` (or it is 0, infinite or NaN), in powers of ten
+/// otherwise. See the module docs. The declared ranges' bounds are shown
+/// so too (`[100, 1e8]`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Shown(pub f64);
+
+/// The magnitudes written in plain decimals: six digits before the point
+/// at most, and no more than two zeros after it before the first digit.
+const PLAIN: std::ops::Range<f64> = 1e-3..1e6;
+
+impl fmt::Display for Shown {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let x = self.0;
+        let plain = x == 0.0 || !x.is_finite() || PLAIN.contains(&x.abs());
+        let text = match (plain, f.precision()) {
+            (true, None) => format!("{x}"),
+            (true, Some(p)) => format!("{x:.p$}"),
+            (false, None) => format!("{x:e}"),
+            (false, Some(p)) => format!("{x:.p$e}"),
+        };
+        let width = f.width().unwrap_or(0);
+        match f.align() {
+            Some(fmt::Alignment::Left) => write!(f, "{text:<width$}"),
+            Some(fmt::Alignment::Center) => write!(f, "{text:^width$}"),
+            Some(fmt::Alignment::Right) | None => write!(f, "{text:>width$}"),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every magnitude at the edges of the plain range, and the values a
+    /// message meets.
+    #[test]
+    fn long_numbers_are_written_in_powers_of_ten() {
+        for (x, text) in [
+            (0.0, "0"),
+            (-0.0, "-0"),
+            (1e-3, "0.001"),
+            (9.99e-4, "9.99e-4"),
+            (999_999.0, "999999"),
+            (1e6, "1e6"),
+            (1e308, "1e308"),
+            (-1e-300, "-1e-300"),
+            (f64::INFINITY, "inf"),
+            (f64::NEG_INFINITY, "-inf"),
+            (0.1 + 0.2, "0.30000000000000004"),
+        ] {
+            assert_eq!(Shown(x).to_string(), text, "{x:e}");
+        }
+        assert_eq!(format!("{:<8.1}|", Shown(2.0)), "2.0     |");
+        assert_eq!(format!("{:.2}", Shown(1e300)), "1.00e300");
+        // Every number shown parses back to the value (the shortest
+        // round-trip form, in either notation).
+        for x in [1e300, 2.5e-9, 123456.789, 1e-3, 3e7] {
+            assert_eq!(Shown(x).to_string().parse::<f64>().unwrap(), x);
+        }
+    }
+}
