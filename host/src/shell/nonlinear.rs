@@ -162,8 +162,20 @@ impl<'a> NonlinearStatic<'a> {
     }
 }
 
-fn norm(v: &[f64]) -> f64 {
-    v.iter().map(|x| x * x).sum::<f64>().sqrt()
+/// The Euclidean norm of a force or residual vector, N (or N m).
+///
+/// Summed plainly as it always was, so that every result stays the same
+/// to the bit; where the squares overflow (a pressure file of 1e160 Pa) it
+/// is taken again by faer's scaled sum. The plain sum's `inf` made the
+/// load's norm infinite, every residual 0 against it, and the analysis
+/// "converge" at rest: a strain energy of 0 reported as a design.
+pub(crate) fn norm(v: &[f64]) -> f64 {
+    let plain = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    if plain.is_finite() || v.iter().any(|x| !x.is_finite()) {
+        plain
+    } else {
+        faer::ColRef::from_slice(v).norm_l2()
+    }
 }
 
 /// The element internal forces summed over the global DOFs.
@@ -283,5 +295,22 @@ impl<'s> TangentWorkspace<'s> {
         self.factor
             .as_ref()
             .ok_or_else(|| AssemblyError::Singular("no factorization".into()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::norm;
+
+    /// The plain sum where it is finite, the scaled one where the squares
+    /// overflow (1e160 squared is beyond an f64), and NaN or infinite
+    /// entries left as they are.
+    #[test]
+    fn the_norm_survives_forces_whose_squares_overflow() {
+        assert_eq!(norm(&[3.0, 4.0]), 5.0);
+        let big = norm(&[3e160, 4e160]);
+        assert!((big / 5e160 - 1.0).abs() < 1e-15, "{big:e}");
+        assert!(norm(&[f64::NAN, 1.0]).is_nan());
+        assert_eq!(norm(&[f64::INFINITY, 1.0]), f64::INFINITY);
     }
 }

@@ -28,7 +28,7 @@ use super::dynamics::GeneralizedAlpha;
 use super::element::NODE_DOFS;
 use super::material::Section;
 use super::mesh::ShellMesh;
-use super::nonlinear::{internal_force, summed_forces, NonlinearError, TangentWorkspace};
+use super::nonlinear::{internal_force, norm, summed_forces, NonlinearError, TangentWorkspace};
 use super::structure::Structure;
 
 /// The largest nodal rotation a Newton correction may make, rad.
@@ -345,14 +345,18 @@ impl<'a> NonlinearTransient<'a> {
         let inertia: Vec<f64> = (0..n).map(|i| self.mass[i] * acc[i]).collect();
         let residual: Vec<f64> = (0..n).map(|i| load[i] - inertia[i] - internal[i]).collect();
         let free = map.restrict(&residual);
-        let norm = free_norm(&free);
+        let out_of_balance = norm(&free);
         // Relative to the largest of the forces in balance.
-        let scale = free_norm(&map.restrict(load))
-            .max(free_norm(&map.restrict(&inertia)))
-            .max(free_norm(&map.restrict(&internal)))
+        let scale = norm(&map.restrict(load))
+            .max(norm(&map.restrict(&inertia)))
+            .max(norm(&map.restrict(&internal)))
             .max(self.reference_force)
             .max(f64::MIN_POSITIVE);
-        Balance { free, norm, scale }
+        Balance {
+            free,
+            norm: out_of_balance,
+            scale,
+        }
     }
 
     /// A Newton correction of `iterate` against the out-of-balance force
@@ -510,10 +514,6 @@ pub fn follower_pressure_loads(
         elements: mesh.elements.clone(),
     };
     Ok(assembly::pressure_loads(&moved, pressure)?)
-}
-
-fn free_norm(v: &[f64]) -> f64 {
-    v.iter().map(|x| x * x).sum::<f64>().sqrt()
 }
 
 #[cfg(test)]

@@ -27,7 +27,7 @@ use crate::shell::corotational::Configuration;
 use crate::shell::dynamics::GeneralizedAlpha;
 use crate::shell::material::Section;
 use crate::shell::mesh::ShellMesh;
-use crate::shell::nonlinear::{NonlinearError, TangentWorkspace};
+use crate::shell::nonlinear::{norm, NonlinearError, TangentWorkspace};
 use crate::shell::nonlinear_dynamics::{
     follower_pressure_loads, DynamicState, NonlinearTransient, Predictor,
 };
@@ -187,7 +187,7 @@ pub fn nonlinear_response(
     let mut reference_force = 0.0f64;
     for sample in &pressure.samples {
         let free = map.restrict(&follower_pressure_loads(mesh, &initial, sample)?);
-        reference_force = reference_force.max(free.iter().map(|v| v * v).sum::<f64>().sqrt());
+        reference_force = reference_force.max(norm(&free));
     }
     let stepper = Stepper::new(mesh, sections, fixed, s, reference_force, dt)?;
     let transient = &stepper.transient;

@@ -497,3 +497,51 @@ fn bad_numbers_are_named_as_written() {
         assert!(out.stdout.is_empty(), "{args:?}: {}", text(&out.stdout));
     }
 }
+
+/// A pressure history far beyond any wing's (one element at 1e160 Pa: a
+/// file in the wrong units, or broken) used to give a design: the squared
+/// forces overflowed, the load's norm was infinite, every residual 0
+/// against it, and `fwav topology` printed "strain energy 0.0000e0 J ...
+/// converged" with exit 0. The analysis now fails, saying it did not
+/// converge, and nothing is reported as a layout.
+#[test]
+fn topology_of_a_pressure_beyond_any_wing_is_an_error_not_a_layout() {
+    let dir = scratch("huge-pressure");
+    let analysis = dir.join("sa");
+    let out = fwav(&[
+        "system-analysis",
+        "--quiet",
+        "--config",
+        COARSE,
+        "--out",
+        analysis.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let path = analysis.join("pressure.json");
+    let mut history: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    history["samples"][0][0] = serde_json::json!(1e160);
+    let huge = dir.join("huge.json");
+    std::fs::write(&huge, history.to_string()).unwrap();
+    let layout = dir.join("layout");
+    let out = fwav(&[
+        "topology",
+        "--quiet",
+        "--config",
+        COARSE,
+        "--pressure",
+        huge.to_str().unwrap(),
+        "--out",
+        layout.to_str().unwrap(),
+    ]);
+    let stderr = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}{}", text(&out.stdout));
+    assert!(stderr.contains("did not converge"), "{stderr}");
+    assert!(
+        !text(&out.stdout).contains("converged"),
+        "{}",
+        text(&out.stdout)
+    );
+    assert!(!layout.join("topology.json").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
