@@ -15,6 +15,7 @@ mod cli {
     pub mod aero;
     pub mod confirm;
     pub mod design;
+    pub mod doubtful;
     pub mod fly;
     pub mod kinematics;
     pub mod new_files;
@@ -211,7 +212,7 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
-        Err(e) if e.is::<cli::aero::Doubtful>() => {
+        Err(e) if e.is::<cli::doubtful::Doubtful>() => {
             eprintln!("warning: {e}");
             ExitCode::from(2)
         }

@@ -119,7 +119,11 @@ pub enum SystemError {
         message: String,
     },
     /// The coupled solution blew up.
-    #[error("the coupled solution diverged at t = {time:.5} s (step {step}): {what}")]
+    #[error(
+        "the coupled solution diverged at t = {time:.5} s (step {step}): {what}; the motion is \
+         more than this wing takes: lower the frequency or the amplitude, stiffen the wing, or \
+         take more steps a cycle ([analysis] steps_per_cycle)"
+    )]
     Diverged {
         /// Time, s.
         time: f64,
@@ -444,7 +448,21 @@ impl<'a> Coupling<'a> {
         let mut iterations = 0;
         loop {
             iterations += 1;
-            let (surface, solution) = self.aerodynamics(motion, &u, &v)?;
+            let (surface, solution) =
+                self.aerodynamics(motion, &u, &v)
+                    .map_err(|e| match (e, &self.structure) {
+                        // The deformed wing folded onto itself or its
+                        // wake: the coupled solution, not the lattice, failed.
+                        (SystemError::Aerodynamics(UvlmError::Singular), Some(_)) => {
+                            SystemError::Diverged {
+                                time,
+                                step,
+                                what: "the circulation (the deformed lattice's influence \
+                                       matrix is singular)",
+                            }
+                        }
+                        (e, _) => e,
+                    })?;
             let (Some(s), Some(st)) = (&self.structure, state) else {
                 return Ok(Converged {
                     surface,

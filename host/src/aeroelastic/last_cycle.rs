@@ -1,12 +1,58 @@
 //! What a system analysis's result says about its last flapping cycle
 //! beyond the cycle means: the tip's deflection amplitude, the drive's mean
-//! power, the coupling effort. Methods on [`SystemResult`], used by `fwav
+//! power, the coupling effort, and why its numbers may not be trusted
+//! ([`Doubt`]). Methods on [`SystemResult`], used by `fwav
 //! system-analysis` and by the MDOIS records alike.
 //!
 //! May import: [`super::analysis`] and [`super::kinematics`].
 
 use super::analysis::{StepRecord, SystemResult};
 use super::kinematics::FlappingKinematics;
+
+/// Largest change of the mean CT between the last two cycles, relative to
+/// the larger of the last cycle's mean CT and its CT swing (as `fwav
+/// aero2d` judges a 2D run: a near-zero mean does not magnify it), for
+/// which an analysis is periodic. Measured (2026-12-07): the built-in FWAV
+/// changes by 0.4 %, the coarse test wing (`configs/coarse.toml`) by
+/// 1.6 %; the coarse wing at 20 Hz, +-40 deg, whose tip swung farther
+/// than its span, by 20 %.
+pub const PERIODIC_CHANGE: f64 = 0.1;
+
+/// Why a system analysis's numbers are not to be trusted. The numbers are
+/// still shown, with the doubt beside them.
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+pub enum Doubt {
+    /// The last two cycles disagree ([`PERIODIC_CHANGE`]).
+    #[error(
+        "the result is not periodic: the mean CT changed by {:.0}% of its size or swing between \
+         the last two cycles (more than {:.0}%); run more cycles ([analysis] cycles, {cycles} \
+         now), or the motion is more than this wing takes",
+        100.0 * change,
+        100.0 * PERIODIC_CHANGE
+    )]
+    NotPeriodic {
+        /// The change, relative to the larger of the mean CT and its swing.
+        change: f64,
+        /// The cycles simulated.
+        cycles: usize,
+    },
+    /// The tip's flapwise deflection amplitude is larger than the
+    /// semi-span: no wing that does not stretch reaches that far from its
+    /// undeformed place, so the shell has left the range of its model.
+    #[error(
+        "the wing tip swung {:.0} mm either way on a {:.0} mm semi-span, farther than a wing \
+         that does not stretch can reach: the structure has left its model's range; lower the \
+         frequency or the amplitude, or stiffen the wing",
+        1e3 * amplitude_m,
+        1e3 * semi_span_m
+    )]
+    TipBeyondSpan {
+        /// The tip's deflection amplitude, m.
+        amplitude_m: f64,
+        /// The wing's semi-span, m.
+        semi_span_m: f64,
+    },
+}
 
 /// Coupling sub-iterations over a whole analysis.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -38,6 +84,47 @@ impl SystemResult {
                 (l.min(z), h.max(z))
             });
         0.5 * (high - low)
+    }
+
+    /// The change of the mean CT from the cycle before the last to the
+    /// last, relative to the larger of the last cycle's mean CT and its CT
+    /// swing; `None` with fewer than two cycles of `steps_per_cycle`.
+    pub fn ct_change_of_swing(&self, steps_per_cycle: usize) -> Option<f64> {
+        let n = steps_per_cycle;
+        let total = self.steps.len();
+        if n == 0 || total < 2 * n {
+            return None;
+        }
+        let mean = |cycle: &[StepRecord]| cycle.iter().map(|s| s.ct).sum::<f64>() / n as f64;
+        let last = &self.steps[total - n..];
+        let (low, high) = last
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), s| {
+                (l.min(s.ct), h.max(s.ct))
+            });
+        let change = (mean(last) - mean(&self.steps[total - 2 * n..total - n])).abs();
+        let scale = mean(last).abs().max(high - low);
+        Some(if change == 0.0 { 0.0 } else { change / scale })
+    }
+
+    /// Why this result's numbers are not to be trusted, if at all: an
+    /// analysis of `cycles` cycles of `steps_per_cycle` steps, of a wing
+    /// of `semi_span_m`.
+    pub fn doubts(&self, steps_per_cycle: usize, cycles: usize, semi_span_m: f64) -> Vec<Doubt> {
+        let mut doubts = Vec::new();
+        if let Some(change) = self.ct_change_of_swing(steps_per_cycle) {
+            if change > PERIODIC_CHANGE || change.is_nan() {
+                doubts.push(Doubt::NotPeriodic { change, cycles });
+            }
+        }
+        let amplitude_m = self.tip_deflection_amplitude_m(steps_per_cycle);
+        if amplitude_m >= semi_span_m || amplitude_m.is_nan() {
+            doubts.push(Doubt::TipBeyondSpan {
+                amplitude_m,
+                semi_span_m,
+            });
+        }
+        doubts
     }
 
     /// Mean power the drive puts in over the last cycle (drive torque

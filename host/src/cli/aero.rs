@@ -22,6 +22,7 @@ use fwav_settings::Shown;
 use indicatif::ProgressBar;
 
 use super::confirm::confirm_cost;
+use super::doubtful::Doubtful;
 use super::new_files::refuse_taken;
 
 /// The command's options.
@@ -169,12 +170,6 @@ const MAX_FIELD_FRAMES: usize = 500;
 
 /// The efficiency of a section that does no work.
 const UNDEFINED_EFFICIENCY: &str = "undefined (no input power)";
-
-/// The results were printed, but they are doubtful (not periodic): the
-/// program says why on standard error and exits with status 2.
-#[derive(Debug, thiserror::Error)]
-#[error("{0}")]
-pub struct Doubtful(pub String);
 
 fn check(a: &Aero2dArgs) -> Result<()> {
     if (a.section != "flat" || a.model == FlowModel::Ns) && a.lesp_critical.is_some() {
@@ -705,7 +700,7 @@ fn report_cycles(a: &Aero2dArgs, case: &Case, run: &CaseRun) -> Result<()> {
         print_text(a, case, run);
     }
     match doubt {
-        Some(message) => Err(Doubtful(message).into()),
+        Some(message) => Err(Doubtful(vec![message]).into()),
         None => Ok(()),
     }
 }

@@ -12,6 +12,7 @@ use fwav::config::SystemConfig;
 use fwav::files::Existing;
 use fwav::output::wing_series::write_series;
 
+use super::doubtful::Doubtful;
 use super::new_files::refuse_taken_in;
 
 /// The command's options.
@@ -91,6 +92,15 @@ pub fn run_command(a: &SystemArgs) -> Result<()> {
     let (mean_sub, max_sub) = (coupling.mean, coupling.max);
     let tip_amplitude = result.tip_deflection_amplitude_m(steps_per_cycle);
     let drive_power = result.mean_drive_power_w(&config.kinematics(), steps_per_cycle);
+    let doubts: Vec<String> = result
+        .doubts(
+            steps_per_cycle,
+            config.analysis.cycles,
+            config.wing.semi_span_m,
+        )
+        .iter()
+        .map(ToString::to_string)
+        .collect();
     if a.json {
         let summary = serde_json::json!({
             "model": if config.analysis.rigid { "uvlm, rigid wing" } else { "uvlm + shell (floating frame), strongly coupled" },
@@ -111,6 +121,7 @@ pub fn run_command(a: &SystemArgs) -> Result<()> {
             "seconds_per_cycle": seconds / config.analysis.cycles as f64,
             "seconds_per_step": seconds / steps as f64,
             "out": a.out.as_ref().map(|p| p.display().to_string()),
+            "doubts": doubts,
         });
         println!("{summary:#}");
     } else {
@@ -138,7 +149,11 @@ pub fn run_command(a: &SystemArgs) -> Result<()> {
             println!("results in {}", dir.display());
         }
     }
-    Ok(())
+    if doubts.is_empty() {
+        Ok(())
+    } else {
+        Err(Doubtful(doubts).into())
+    }
 }
 
 /// The files `--out` gets besides [`SERIES`]: the handoff's and the

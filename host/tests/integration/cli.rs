@@ -201,6 +201,8 @@ fn system_analysis_writes_what_the_disciplines_take() {
     let summary: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert!(summary["mean_ct"].as_f64().unwrap() > 0.0, "{summary}");
     assert!(summary["tip_deflection_amplitude_m"].as_f64().unwrap() > 0.0);
+    // Periodic, the tip well inside the span: nothing doubtful.
+    assert_eq!(summary["doubts"], serde_json::json!([]), "{summary}");
     for file in [
         "section.json",
         "pressure.json",
