@@ -10,6 +10,7 @@ use fwav_actuator::params::{PlantParams, DEFAULT_PLANT_TOML};
 use fwav_hil_sim::metrics::Report;
 use fwav_hil_sim::scenario::{self, Scenario};
 use fwav_hil_sim::serve::{ServeError, Server};
+use fwav_settings::Shown;
 
 #[derive(Parser)]
 #[command(
@@ -128,7 +129,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
             eprintln!(
                 "hil-sim: virtual flight controller on {} ({}x real time); Ctrl-C stops",
                 server.path(),
-                speed
+                Shown(speed)
             );
             server.run(|| false)?;
         }
@@ -156,7 +157,11 @@ fn run(cli: Cli) -> Result<ExitCode> {
             if json {
                 println!("{}", serde_json::to_string_pretty(&report)?);
             } else {
-                println!("{}: {} s simulated", path.display(), report.duration_s);
+                println!(
+                    "{}: {} s simulated",
+                    path.display(),
+                    Shown(report.duration_s)
+                );
                 print_steady(&report, &scenario);
                 println!(
                     "  energy balance residual {:.2e} %",
@@ -221,10 +226,14 @@ fn print_steady(report: &Report, scenario: &Scenario) {
         "frequency error not measured (fewer than two upward crossings of the mean)".to_owned(),
         |e| format!("frequency error {e:+.4} %"),
     );
-    println!(
-        "  amplitude error {:+.3} %, {frequency}, phase lag {:+.2} deg, RMS tracking error {:.2} %",
-        steady.amplitude_error_pct, steady.phase_lag_deg, steady.rms_tracking_error_pct
-    );
+    if steady.target_amplitude_deg > 0.0 {
+        println!(
+            "  amplitude error {:+.3} %, {frequency}, phase lag {:+.2} deg, RMS tracking error {:.2} %",
+            steady.amplitude_error_pct, steady.phase_lag_deg, steady.rms_tracking_error_pct
+        );
+    } else {
+        println!("  the target does not move (amplitude 0): no tracking errors to measure");
+    }
     println!(
         "  current peak {:.3} A (limit {:.2} A), RMS {:.3} A; battery {:.3} W, {:.4} J per cycle",
         report.peak_current_a,

@@ -98,7 +98,9 @@ pub struct SteadyState {
     pub target_frequency_hz: f64,
     /// Target amplitude in the window, deg.
     pub target_amplitude_deg: f64,
-    /// (measured - target) / target fundamental amplitude, %.
+    /// (measured - target) / target fundamental amplitude, %; NaN (null
+    /// in the JSON) when the target does not move (amplitude 0), as the
+    /// phase lag and the tracking error then are.
     pub amplitude_error_pct: f64,
     /// (measured - target) / target frequency, %; `None` (null) when the
     /// wing crossed its mean upward fewer than twice in the window (one
@@ -146,10 +148,13 @@ fn lock_in(points: &[TracePoint], dt: f64) -> (f64, f64, f64, f64, f64) {
     (k * acc.0, k * acc.1, k * acc.2, k * acc.3, acc.4)
 }
 
-/// Indices where the target's cycle phase wraps (a new cycle starts).
+/// Indices where a reference cycle starts: the run's first point, where
+/// the profile starts at phase 0, and each where the phase wraps.
 fn cycle_starts(points: &[TracePoint]) -> Vec<usize> {
-    (1..points.len())
-        .filter(|&i| points[i].phase < points[i - 1].phase)
+    let first = points.first().filter(|p| p.phase == 0.0).map(|_| 0);
+    first
+        .into_iter()
+        .chain((1..points.len()).filter(|&i| points[i].phase < points[i - 1].phase))
         .collect()
 }
 

@@ -19,14 +19,19 @@ pub enum ServeError {
     /// Reading or writing it failed.
     #[error("pseudo-terminal I/O: {0}")]
     Io(#[from] std::io::Error),
-    /// A pace that is not a positive, finite number (it was taken as 1
-    /// without a word, and printed as given).
-    #[error("a pace of {} simulated seconds per wall-clock second: give a positive, finite number (1 is real time, 10 ten times faster)", Shown(*speed))]
+    /// A pace outside [`PACE`] (a pace of 0 or less was taken as 1
+    /// without a word, and printed as given; 1e-30 overflowed the wait).
+    #[error("a pace of {} simulated seconds per wall-clock second: give one from {} to {} (1 is real time, 10 ten times faster)", Shown(*speed), PACE.start(), PACE.end())]
     Speed {
         /// The pace given.
         speed: f64,
     },
 }
+
+/// The paces a server runs at, simulated seconds per wall-clock second: a
+/// thousandth of real time to a thousand times it (the simulator's own
+/// speed, `cargo bench -p fwav-hil-sim`, bounds how fast it really goes).
+pub const PACE: std::ops::RangeInclusive<f64> = 1e-3..=1e3;
 
 /// A virtual flight controller on a pseudo-terminal.
 pub struct Server {
@@ -40,9 +45,9 @@ pub struct Server {
 
 impl Server {
     /// Creates the pty pair; `speed` is simulated seconds per wall second,
-    /// positive and finite.
+    /// in [`PACE`].
     pub fn new(plant: &PlantParams, speed: f64) -> Result<Self, ServeError> {
-        if !(speed > 0.0 && speed.is_finite()) {
+        if !PACE.contains(&speed) {
             return Err(ServeError::Speed { speed });
         }
         let (mut master, slave) = TTYPort::pair()?;

@@ -229,15 +229,21 @@ fn a_run_without_a_whole_cycle_prints_no_steady_numbers() {
 }
 
 /// `hil-sim serve --speed -1` (or 0, NaN) ran at real time while saying
-/// "-1x real time"; a pace that is not a positive, finite number is now
-/// refused, naming the flag.
+/// "-1x real time", and 1e-30 overflowed the wait (a panic); a pace outside
+/// a thousandth to a thousand times real time is now refused, naming the
+/// flag and the value as written.
 #[test]
 fn a_bad_pace_is_refused() {
-    for speed in ["-1", "0", "nan", "inf"] {
+    for speed in ["-1", "0", "nan", "inf", "1e-30", "1e300"] {
         let out = hil_sim(&["serve", "--speed", speed]);
         let stderr = assert_plain_error(&out);
+        let shown = match speed {
+            "nan" => "NaN",
+            other => other,
+        };
         assert!(
-            stderr.contains("--speed: a pace of") && stderr.contains("positive, finite"),
+            stderr.contains(&format!("--speed: a pace of {shown} simulated seconds"))
+                && stderr.contains("give one from 0.001 to 1000"),
             "{speed}: {stderr}"
         );
         assert!(out.stdout.is_empty(), "{speed}: the pty was made");

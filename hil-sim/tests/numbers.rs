@@ -243,21 +243,25 @@ fn energy_balances_with_switching_pwm() {
 /// `measure_cycles = 0` is refused. (Control periods of 100 us; 11 Hz.)
 #[test]
 fn steady_state_numbers_are_measured_over_whole_cycles_only() {
-    // 0.15 s: the reference's phase wraps once (at 1/11 s), so no cycle
-    // lies whole between two wraps.
-    let r = fly(&cruise(0.15), &PlantParams::default());
+    // 0.08 s: less than the first cycle (1/11 s), which starts with the
+    // run.
+    let r = fly(&cruise(0.08), &PlantParams::default());
     assert_eq!((r.measured_cycles, r.cycles_asked), (0, 10));
     assert!(r.steady.is_none(), "{r:#?}");
     let json = serde_json::to_value(&r).unwrap();
     assert!(json.get("amplitude_error_pct").is_none(), "{json}");
     assert!(json.get("peak_current_a").is_some(), "{json}");
 
-    // 3 s: 32 wraps, so 31 whole cycles, all of them measured when 100
-    // are asked.
+    // 0.15 s holds the first cycle whole.
+    let r = fly(&cruise(0.15), &PlantParams::default());
+    assert_eq!((r.measured_cycles, r.cycles_asked), (1, 10));
+
+    // 3 s: the first cycle and 32 wraps, so 32 whole cycles, all of them
+    // measured when 100 are asked.
     let mut long = cruise(3.0);
     long.measure_cycles = 100;
     let r = fly(&long, &PlantParams::default());
-    assert_eq!((r.measured_cycles, r.cycles_asked), (31, 100));
+    assert_eq!((r.measured_cycles, r.cycles_asked), (32, 100));
     assert!(steady(&r).amplitude_error_pct.abs() < 2.0, "{r:#?}");
     let json = serde_json::to_value(&r).unwrap();
     assert!(json.get("amplitude_error_pct").is_some(), "{json}");

@@ -33,6 +33,7 @@ pub mod link;
 pub mod mdois;
 pub mod optimize;
 pub mod output;
+pub mod periodicity;
 pub mod port;
 pub mod profile_file;
 pub mod shell;

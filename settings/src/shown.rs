@@ -4,8 +4,11 @@
 //! came back in an error as a line of 301 digits, and `1e-300` as 300
 //! zeros. [`Shown`] writes the same shortest round-trip form as `{}`
 //! where that is short (`-3`, `0.25`, `15000`), and powers of ten
-//! (`1e300`, `2.5e-9`) where it is not; a precision (`{:.3}`) and a
-//! width (`{:>10.3}`) apply to either.
+//! (`1e300`, `2.5e-9`) where it is not. The formatter's flags apply to
+//! either as to an `f64`: a width and alignment with their fill
+//! (`{:>10.3}`), `+`, and zero padding. A precision is the digits after
+//! the point, of the number or of its mantissa (`{:.2}` of 1e300 is
+//! `1.00e300`).
 //!
 //! ```
 //! use fwav_settings::Shown;
@@ -36,18 +39,33 @@ impl fmt::Display for Shown {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let x = self.0;
         let plain = x == 0.0 || !x.is_finite() || PLAIN.contains(&x.abs());
-        let text = match (plain, f.precision()) {
+        let mut text = match (plain, f.precision()) {
             (true, None) => format!("{x}"),
             (true, Some(p)) => format!("{x:.p$}"),
             (false, None) => format!("{x:e}"),
             (false, Some(p)) => format!("{x:.p$e}"),
         };
-        let width = f.width().unwrap_or(0);
-        match f.align() {
-            Some(fmt::Alignment::Left) => write!(f, "{text:<width$}"),
-            Some(fmt::Alignment::Center) => write!(f, "{text:^width$}"),
-            Some(fmt::Alignment::Right) | None => write!(f, "{text:>width$}"),
+        if f.sign_plus() && !text.starts_with('-') && !x.is_nan() {
+            text.insert(0, '+');
         }
+        let width = f.width().unwrap_or(0);
+        let length = text.chars().count();
+        if length >= width {
+            return f.write_str(&text);
+        }
+        let pad = width - length;
+        if f.sign_aware_zero_pad() && x.is_finite() {
+            let sign = usize::from(text.starts_with(['+', '-']));
+            text.insert_str(sign, &"0".repeat(pad));
+            return f.write_str(&text);
+        }
+        let fill = |n: usize| f.fill().to_string().repeat(n);
+        let (before, after) = match f.align() {
+            Some(fmt::Alignment::Left) => (0, pad),
+            Some(fmt::Alignment::Center) => (pad / 2, pad - pad / 2),
+            Some(fmt::Alignment::Right) | None => (pad, 0),
+        };
+        write!(f, "{}{text}{}", fill(before), fill(after))
     }
 }
 
@@ -76,6 +94,21 @@ mod tests {
         }
         assert_eq!(format!("{:<8.1}|", Shown(2.0)), "2.0     |");
         assert_eq!(format!("{:.2}", Shown(1e300)), "1.00e300");
+        // The formatter's sign, fill and zero padding, as f64's own.
+        assert_eq!(format!("{:+.3}", Shown(0.5)), "+0.500");
+        assert_eq!(format!("{:+}", Shown(-2e9)), "-2e9");
+        assert_eq!(format!("{:*>8}", Shown(1.5)), "*****1.5");
+        assert_eq!(format!("{:^7}", Shown(1.5)), "  1.5  ");
+        assert_eq!(format!("{:08.3}", Shown(-1.5)), "-001.500");
+        assert_eq!(format!("{:+08.1}", Shown(2e9)), "+002.0e9");
+        for x in [0.25, -3.0, 123.5] {
+            for text in [
+                (format!("{:+08.2}", Shown(x)), format!("{x:+08.2}")),
+                (format!("{:*<9.1}", Shown(x)), format!("{x:*<9.1}")),
+            ] {
+                assert_eq!(text.0, text.1);
+            }
+        }
         // Every number shown parses back to the value (the shortest
         // round-trip form, in either notation).
         for x in [1e300, 2.5e-9, 123456.789, 1e-3, 3e7] {

@@ -22,6 +22,7 @@ use super::viscous::{
     STILL_KICK_RATE,
 };
 use super::window::WindowStatistics;
+use crate::periodicity::change_of_swing;
 
 mod error;
 mod section_model;
@@ -82,10 +83,9 @@ pub const WAKE_REACH_CHORDS: f64 = 20.0;
 
 /// Largest change of the mean CT between the last two cycles, relative
 /// to the larger of the mean and the CT's swing over the last cycle, for
-/// which a result is reported as periodic. The cases above change by at
-/// most 5% (h = 2, k = 2 with leading-edge shedding; a NACA 9912 with its
-/// large steady lift 3.8%).
-pub const PERIODIC_CHANGE: f64 = 0.1;
+/// which a result is reported as periodic (the cases above change by at
+/// most 5%): [`crate::periodicity`].
+pub use crate::periodicity::PERIODIC_CHANGE;
 
 /// Input power coefficient below which a section is taken as doing no
 /// work (its efficiency is undefined): a section that does not move has
@@ -528,20 +528,13 @@ impl CaseRun {
             .map_or(0.0, |i| history.time[i]);
         let (ct_prev, _, _) = cycle_means_until(history, period, 1, end_previous);
         let last = &history.ct[history.ct.len().saturating_sub(steps_per_period)..];
-        let swing = last.iter().copied().fold(f64::NEG_INFINITY, f64::max)
-            - last.iter().copied().fold(f64::INFINITY, f64::min);
-        let change = (ct - ct_prev).abs();
         CaseMeans {
             ct,
             cp,
             cd_friction: cycle_mean_of(history, &history.cd_friction, period, 1),
             cl: cycle_mean_of(history, &history.cl, period, 1),
             periodicity: (ct - ct_prev) / ct.abs().max(1e-12),
-            change_of_swing: if change == 0.0 {
-                0.0
-            } else {
-                change / ct.abs().max(swing)
-            },
+            change_of_swing: change_of_swing(ct, ct_prev, last),
         }
     }
 }

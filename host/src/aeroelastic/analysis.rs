@@ -448,21 +448,22 @@ impl<'a> Coupling<'a> {
         let mut iterations = 0;
         loop {
             iterations += 1;
-            let (surface, solution) =
-                self.aerodynamics(motion, &u, &v)
-                    .map_err(|e| match (e, &self.structure) {
-                        // The deformed wing folded onto itself or its
-                        // wake: the coupled solution, not the lattice, failed.
-                        (SystemError::Aerodynamics(UvlmError::Singular), Some(_)) => {
-                            SystemError::Diverged {
-                                time,
-                                step,
-                                what: "the circulation (the deformed lattice's influence \
+            let (surface, solution) = self.aerodynamics(motion, &u, &v).map_err(|e| {
+                match (e, &self.structure, state) {
+                    // After the first step, on a flexible wing: the
+                    // deformed wing folded onto itself or its wake, and
+                    // the coupled solution, not the lattice, failed.
+                    (SystemError::Aerodynamics(UvlmError::Singular), Some(_), Some(_)) => {
+                        SystemError::Diverged {
+                            time,
+                            step,
+                            what: "the circulation (the deformed lattice's influence \
                                        matrix is singular)",
-                            }
                         }
-                        (e, _) => e,
-                    })?;
+                    }
+                    (e, _, _) => e,
+                }
+            })?;
             let (Some(s), Some(st)) = (&self.structure, state) else {
                 return Ok(Converged {
                     surface,

@@ -18,6 +18,7 @@
 //! the top of the stroke, at rest, so an analysis begins without an
 //! impulsive start.
 
+use fwav_settings::Shown;
 use nalgebra::{Rotation3, Unit, Vector3};
 use serde::{Deserialize, Serialize};
 
@@ -123,7 +124,7 @@ impl Default for FlappingKinematics {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum KinematicsError {
     /// A value out of its range.
-    #[error("flapping kinematics: {field} = {value} is outside {range}")]
+    #[error("flapping kinematics: {field} = {} is outside {range}", Shown(*.value))]
     OutOfRange {
         /// The field name.
         field: &'static str,

@@ -4,25 +4,19 @@
 //! ([`Doubt`]). Methods on [`SystemResult`], used by `fwav
 //! system-analysis` and by the MDOIS records alike.
 //!
-//! May import: [`super::analysis`] and [`super::kinematics`].
+//! May import: [`super::analysis`], [`super::kinematics`] and
+//! [`crate::periodicity`].
 
 use super::analysis::{StepRecord, SystemResult};
 use super::kinematics::FlappingKinematics;
-
-/// Largest change of the mean CT between the last two cycles, relative to
-/// the larger of the last cycle's mean CT and its CT swing (as `fwav
-/// aero2d` judges a 2D run: a near-zero mean does not magnify it), for
-/// which an analysis is periodic. Measured (2026-12-07): the built-in FWAV
-/// changes by 0.4 %, the coarse test wing (`configs/coarse.toml`) by
-/// 1.6 %; the coarse wing at 20 Hz, +-40 deg, whose tip swung farther
-/// than its span, by 20 %.
-pub const PERIODIC_CHANGE: f64 = 0.1;
+use crate::periodicity::{change_of_swing, PERIODIC_CHANGE};
 
 /// Why a system analysis's numbers are not to be trusted. The numbers are
 /// still shown, with the doubt beside them.
 #[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
 pub enum Doubt {
-    /// The last two cycles disagree ([`PERIODIC_CHANGE`]).
+    /// The last two cycles disagree ([`PERIODIC_CHANGE`] of
+    /// [`crate::periodicity`]).
     #[error(
         "the result is not periodic: the mean CT changed by {:.0}% of its size or swing between \
          the last two cycles (more than {:.0}%); run more cycles ([analysis] cycles, {cycles} \
@@ -95,16 +89,11 @@ impl SystemResult {
         if n == 0 || total < 2 * n {
             return None;
         }
-        let mean = |cycle: &[StepRecord]| cycle.iter().map(|s| s.ct).sum::<f64>() / n as f64;
-        let last = &self.steps[total - n..];
-        let (low, high) = last
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), s| {
-                (l.min(s.ct), h.max(s.ct))
-            });
-        let change = (mean(last) - mean(&self.steps[total - 2 * n..total - n])).abs();
-        let scale = mean(last).abs().max(high - low);
-        Some(if change == 0.0 { 0.0 } else { change / scale })
+        let ct = |cycle: &[StepRecord]| cycle.iter().map(|s| s.ct).collect::<Vec<f64>>();
+        let mean = |values: &[f64]| values.iter().sum::<f64>() / n as f64;
+        let last = ct(&self.steps[total - n..]);
+        let previous = ct(&self.steps[total - 2 * n..total - n]);
+        Some(change_of_swing(mean(&last), mean(&previous), &last))
     }
 
     /// Why this result's numbers are not to be trusted, if at all: an

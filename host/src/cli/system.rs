@@ -11,6 +11,7 @@ use fwav::aeroelastic::{run, SystemResult};
 use fwav::config::SystemConfig;
 use fwav::files::Existing;
 use fwav::output::wing_series::write_series;
+use fwav::periodicity::PERIODIC_CHANGE;
 
 use super::doubtful::Doubtful;
 use super::new_files::refuse_taken_in;
@@ -109,6 +110,7 @@ pub fn run_command(a: &SystemArgs) -> Result<()> {
             "mean_cp": result.means.cp,
             "efficiency": result.means.efficiency,
             "ct_change_last_two_cycles": result.means.ct_change_last_two_cycles,
+            "ct_change_of_swing": result.ct_change_of_swing(steps_per_cycle),
             "mean_drive_power_w": drive_power,
             "tip_deflection_amplitude_m": tip_amplitude,
             "wing_mass_kg": result.wing_mass_kg,
@@ -129,8 +131,17 @@ pub fn run_command(a: &SystemArgs) -> Result<()> {
             "last cycle: CT {:.4}  CL {:.4}  CP {:.4}  efficiency {:.3}",
             result.means.ct, result.means.cl, result.means.cp, result.means.efficiency
         );
+        let periodic = result
+            .ct_change_of_swing(steps_per_cycle)
+            .map_or(String::new(), |c| {
+                format!(
+                    " ({:.1}% of its size or swing; periodic within {:.0}%)",
+                    100.0 * c,
+                    100.0 * PERIODIC_CHANGE
+                )
+            });
         println!(
-            "mean CT change over the last cycle {:+.2}%, mean drive power {:.4} W",
+            "mean CT change over the last cycle {:+.2}%{periodic}, mean drive power {:.4} W",
             100.0 * result.means.ct_change_last_two_cycles,
             drive_power
         );

@@ -4,6 +4,7 @@
 use std::path::PathBuf;
 
 use crate::aeroelastic::handoff::HandoffError;
+use crate::aeroelastic::last_cycle::Doubt;
 use crate::aeroelastic::SystemError;
 use crate::config::ConfigError;
 use crate::discipline::cache::CacheError;
@@ -181,6 +182,19 @@ pub enum DesignError {
         cycle: usize,
         /// The cause.
         source: SystemError,
+    },
+    /// The system analysis ran, but its result is not to be trusted (the
+    /// first doubt; `fwav system-analysis` of the cycle's design prints
+    /// them all): the disciplines are not given it.
+    #[error(
+        "cycle {cycle}, system analysis: {doubt}; the design stops rather than choose on this \
+         analysis"
+    )]
+    Doubtful {
+        /// The design cycle.
+        cycle: usize,
+        /// Why the result is not to be trusted.
+        doubt: Doubt,
     },
     /// The aerodynamic discipline failed.
     #[error("cycle {cycle}, aerodynamic discipline: {source}")]

@@ -183,21 +183,35 @@ impl Context<'_> {
         Ok(self.finished(running, files))
     }
 
-    /// The coupled 3D analysis of `design`.
+    /// The coupled 3D analysis of `design`; one whose result is not to
+    /// be trusted ([`SystemResult::doubts`]) is an error.
     fn analyse(&self, running: &Running, design: &Design) -> Result<SystemResult, DesignError> {
         let wing = self.config.wing_model_with(Some(&design.densities))?;
-        run(
+        let analysis = &self.config.analysis;
+        let result = run(
             &wing,
             &design.kinematics,
             &self.config.flight(),
-            &self.config.analysis,
+            analysis,
             0,
             |done, total| self.advanced(running, done, total, None),
         )
         .map_err(|source| DesignError::System {
             cycle: running.cycle,
             source,
-        })
+        })?;
+        let doubts = result.doubts(
+            analysis.steps_per_cycle,
+            analysis.cycles,
+            self.config.wing.semi_span_m,
+        );
+        match doubts.first() {
+            Some(&doubt) => Err(DesignError::Doubtful {
+                cycle: running.cycle,
+                doubt,
+            }),
+            None => Ok(result),
+        }
     }
 
     /// The aerodynamic discipline of `cycle`, on the mid-span section of

@@ -61,7 +61,10 @@ pub enum VtuError {
         cells: usize,
     },
     /// A file is where a new one was to be written: it is left as it is.
-    #[error("{path} exists, and is left as it is: move it away, or write elsewhere")]
+    #[error(
+        "{path} exists, and is left as it is (an existing file is never overwritten): choose a \
+         new name or remove it"
+    )]
     Exists {
         /// The file found there.
         path: String,

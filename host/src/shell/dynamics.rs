@@ -16,6 +16,7 @@ use std::sync::Arc;
 use faer::linalg::solvers::Solve;
 use faer::sparse::linalg::solvers::Llt;
 use faer::Mat;
+use fwav_settings::Shown;
 
 use super::assembly::{self, AssemblyError};
 use super::linear::LinearStatic;
@@ -76,7 +77,11 @@ pub enum DynamicsError {
     #[error(transparent)]
     Assembly(#[from] AssemblyError),
     /// Bad settings.
-    #[error("time step must be positive and rho_inf in [0, 1] (got dt {dt}, rho_inf {rho})")]
+    #[error(
+        "time step must be positive and rho_inf in [0, 1] (got dt {}, rho_inf {})",
+        Shown(*.dt),
+        Shown(*.rho)
+    )]
     Settings {
         /// Step.
         dt: f64,

@@ -38,7 +38,7 @@
 
 use std::path::{Path, PathBuf};
 
-use fwav_settings::Allowed;
+use fwav_settings::{Allowed, Shown};
 use serde::{Deserialize, Serialize};
 
 use crate::config::keys::{declared, DeclaredKey, UnknownKey};
@@ -47,6 +47,10 @@ use super::results::Output;
 
 /// The most cases a study may hold (a grid multiplies quickly).
 pub const MAX_CASES: usize = 10_000;
+
+/// The longest time between two looks at a Slurm queue, s: a day (a
+/// longer one is a slip, and 1e300 s was more than a `Duration` holds).
+pub const MAX_POLL_S: f64 = 86_400.0;
 
 /// Where the base configuration comes from.
 #[derive(Clone, Debug, PartialEq)]
@@ -650,12 +654,12 @@ pub fn check_slurm(s: &SlurmSettings) -> Result<(), StudyFileError> {
         }
     }
     if let Some(p) = s.poll_s {
-        if !(p.is_finite() && p > 0.0) {
+        if !(p > 0.0 && p <= MAX_POLL_S) {
             return Err(setting(
                 "slurm",
                 "poll_s",
-                &p.to_string(),
-                "a positive number of seconds",
+                &Shown(p).to_string(),
+                "a positive number of seconds, at most a day (86400)",
             ));
         }
     }
@@ -746,6 +750,29 @@ mod tests {
                    kinematics.frequency_hz = [8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18]\n\
                    kinematics.amplitude_deg = [20, 25, 30, 35, 40, 45, 50, 55]\n";
         assert!(e(big).starts_with("the study has 10648 cases"));
+    }
+
+    /// The time between two looks at the queue: positive and at most a
+    /// day. 1e300 s overflowed the `Duration` it is waited as (a panic),
+    /// and -1e300 was named as 301 digits.
+    #[test]
+    fn the_poll_is_a_positive_time_up_to_a_day() {
+        let poll = |p: f64| {
+            check_slurm(&SlurmSettings {
+                poll_s: Some(p),
+                ..SlurmSettings::default()
+            })
+        };
+        assert!(poll(10.0).is_ok() && poll(MAX_POLL_S).is_ok());
+        for (p, shown) in [
+            (0.0, "poll_s = 0"),
+            (-1e300, "poll_s = -1e300"),
+            (1e300, "poll_s = 1e300"),
+            (f64::NAN, "poll_s = NaN"),
+        ] {
+            let e = poll(p).unwrap_err().to_string();
+            assert!(e.contains(shown) && e.contains("at most a day"), "{e}");
+        }
     }
 
     /// Slurm's time forms.

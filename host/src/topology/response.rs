@@ -19,6 +19,7 @@
 //! rotation vectors, rad, per node, the form of a linear displacement
 //! vector) and the strain energies of the co-rotational elements.
 
+use fwav_settings::Shown;
 use nalgebra::Vector3;
 use serde::{Deserialize, Serialize};
 
@@ -115,7 +116,7 @@ pub enum ResponseError {
     #[error("nonlinear dynamic analysis")]
     Shell(#[from] NonlinearError),
     /// A setting out of range.
-    #[error("response setting {name} = {value} is outside {allowed}")]
+    #[error("response setting {name} = {} is outside {allowed}", Shown(*.value))]
     Setting {
         /// The setting's name (`sample_every`).
         name: &'static str,

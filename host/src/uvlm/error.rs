@@ -1,6 +1,8 @@
 //! Why a lattice, a setting or a solve of the unsteady vortex-lattice
 //! method was rejected.
 
+use fwav_settings::Shown;
+
 /// Errors of the unsteady vortex-lattice method. Every check on user data
 /// (lattice sizes, non-finite coordinates, settings) ends here instead of in
 /// a panic.
@@ -66,7 +68,7 @@ pub enum UvlmError {
         expected: usize,
     },
     /// A setting or geometric parameter out of its range.
-    #[error("{name} = {value} is invalid: {requirement}")]
+    #[error("{name} = {} is invalid: {requirement}", Shown(*.value))]
     Parameter {
         /// The parameter's name.
         name: &'static str,

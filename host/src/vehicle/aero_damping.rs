@@ -28,6 +28,8 @@
 //! May import: [`crate::aeroelastic`] (the analysis's records and the
 //! kinematics).
 
+use fwav_settings::Shown;
+
 use crate::aeroelastic::kinematics::FlappingKinematics;
 use crate::aeroelastic::StepRecord;
 
@@ -44,7 +46,7 @@ pub struct DriveSample {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum CalibrationError {
     /// No samples, or a non-positive or non-finite period.
-    #[error("the drive history has {samples} samples over a period of {period_s} s: give at least one cycle of the system analysis (steps_per_cycle > 0, frequency > 0)")]
+    #[error("the drive history has {samples} samples over a period of {} s: give at least one cycle of the system analysis (steps_per_cycle > 0, frequency > 0)", Shown(*.period_s))]
     Empty {
         /// Samples given.
         samples: usize,

@@ -541,6 +541,32 @@ fn configuration_errors_name_the_field() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// A design whose system analysis cannot be trusted stops there, before
+/// the disciplines choose on it: the coarse wing at 20 Hz, +-40 deg, whose
+/// tip swings farther than its span and whose two cycles disagree (it was
+/// judged by the actuator check on that analysis's damping, or, on a
+/// larger battery, handed to the disciplines).
+#[test]
+fn a_system_analysis_beyond_the_wing_stops_the_design() {
+    let mut config = coarse();
+    config.kinematics.frequency = 20.0;
+    config.kinematics.amplitude = 40f64.to_radians();
+    let dir = temp("beyond-the-wing");
+    let error = start(&config, &dir, &RunOptions::default(), &|_| {}).unwrap_err();
+    let text = error.to_string();
+    assert!(
+        matches!(error, DesignError::Doubtful { cycle: 1, .. }),
+        "{text}"
+    );
+    assert!(
+        text.contains("cycle 1, system analysis: the result is not periodic")
+            && text.contains("the design stops rather than choose on this analysis"),
+        "{text}"
+    );
+    assert!(!dir.join("cycle-1/kinematics.json").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 /// A design whose initial kinematics the actuator cannot fly stops after
 /// the first system analysis (whose damping the discipline would judge
 /// on) and before the disciplines, naming the limiting quantity and its

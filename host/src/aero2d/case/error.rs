@@ -86,9 +86,10 @@ pub enum CaseError {
     /// fewer than two load samples.
     #[error(
         "a duration of {} chords travelled leaves fewer than two load samples over its \
-         second half, which is reported (a sample every {interval:.4} chords, a 200th of the \
-         motion's period): give at least {}",
+         second half, which is reported (a sample every {:.4} chords, a 200th of the motion's \
+         period): give at least {}",
         Shown(*.duration),
+        Shown(*.interval),
         rounded_up(*.min)
     )]
     DurationTooShort {
@@ -132,12 +133,12 @@ pub enum CaseError {
     },
     /// A case whose periods are so long that it would take too many steps.
     #[error(
-        "reduced frequency {}: a period is {:.0} chords travelled, so {cycles} cycles take \
+        "reduced frequency {}: a period is {} chords travelled, so {cycles} cycles take \
          {} time steps of {dt} chords (at most {max} are allowed, a run's time growing \
          faster than its steps); use a reduced frequency of at least \
          {min_reduced_frequency:.3} or fewer cycles",
         Shown(*.reduced_frequency),
-        Shown(*.period),
+        Shown(.period.round()),
         Shown(*.steps)
     )]
     TooManySteps {
@@ -160,12 +161,12 @@ pub enum CaseError {
     /// A Navier–Stokes case whose cycles travel farther than the model
     /// runs ([`super::MAX_DURATION_CHORDS`], as for a duration).
     #[error(
-        "reduced frequency {}: a period is {:.0} chords travelled, so {cycles} cycles are {:.0} \
+        "reduced frequency {}: a period is {} chords travelled, so {cycles} cycles are {} \
          chords, more than the Navier–Stokes model runs ({max}, as for --duration); use a \
          reduced frequency of at least {min_reduced_frequency:.3} or fewer cycles",
         Shown(*.reduced_frequency),
-        Shown(*.period),
-        Shown(*.chords)
+        Shown(.period.round()),
+        Shown(.chords.round())
     )]
     TooLong {
         /// The reduced frequency.
@@ -215,13 +216,22 @@ pub enum CaseError {
 }
 
 /// `x` rounded up to three significant digits, as a refusal shows a
-/// least value: shown rounded down it would be refused again.
+/// least value: shown rounded down it would be refused again. In powers
+/// of ten outside [1e-3, 1e6), as [`Shown`] writes (`3.15e298`, not 299
+/// digits).
 fn rounded_up(x: f64) -> String {
     if !(x.is_finite() && x > 0.0) {
-        return format!("{x}");
+        return Shown(x).to_string();
     }
-    let digits = 2 - x.log10().floor() as i32;
-    let scale = 10f64.powi(digits);
-    let up = (x * scale).ceil() / scale;
-    format!("{up:.*}", digits.max(0) as usize)
+    let exponent = x.log10().floor() as i32;
+    let digits = 2 - exponent;
+    if (1e-3..1e6).contains(&x) {
+        let scale = 10f64.powi(digits);
+        let up = (x * scale).ceil() / scale;
+        format!("{up:.*}", digits.max(0) as usize)
+    } else {
+        let mantissa = x / 10f64.powi(exponent);
+        let up = (mantissa * 100.0).ceil() / 100.0;
+        format!("{up:.2}e{exponent}")
+    }
 }
