@@ -13,6 +13,7 @@ use fwav::link::{Link, LinkError};
 use fwav::port;
 use fwav::profile_file::ProfileFile;
 use fwav_protocol::{Command, NackReason, Status, TelemetrySample};
+use fwav_settings::Shown;
 use serialport::SerialPort;
 
 type Port = Box<dyn SerialPort>;
@@ -27,7 +28,7 @@ pub enum DurationError {
         text: String,
     },
     /// NaN, infinite, zero or negative.
-    #[error("{seconds} is not a positive number of seconds (a finite one; leave --duration out to run until Ctrl-C)")]
+    #[error("{} is not a positive number of seconds (a finite one; leave --duration out to run until Ctrl-C)", Shown(*.seconds))]
     NotPositive {
         /// The value given.
         seconds: f64,

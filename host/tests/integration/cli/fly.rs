@@ -230,13 +230,14 @@ fn monitor_ends_cleanly_on_sigterm_and_sighup() {
     }
 }
 
-/// `--duration nan`, `-1`, `0`, `inf` or `-0.5` is refused before the link is
+/// `--duration nan`, `-1`, `0`, `inf`, `-0.5` or `-1e300` is refused before the link is
 /// touched: a usage error naming the option and the value, and the device
 /// was never armed (nor even given the profile).
 #[test]
 fn upload_refuses_a_duration_that_is_not_a_positive_number_of_seconds() {
     let board = VirtualBoard::start();
-    for value in ["nan", "-1", "0", "inf", "-0.5"] {
+    // -1e300 is named as written, not as 301 digits.
+    for value in ["nan", "-1", "0", "inf", "-0.5", "-1e300"] {
         let out = super::fwav(&[
             "upload",
             "--port",
