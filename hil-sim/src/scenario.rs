@@ -169,7 +169,8 @@ impl Scenario {
     }
 
     /// Checks the values: the run's length, the heartbeat period, at least
-    /// one cycle to measure, and that every fault fires inside the run (a supply drop with its voltage).
+    /// one cycle to measure, and that every fault fires inside the run (a
+    /// supply drop with its voltage).
     pub fn check(&self) -> Result<(), ScenarioError> {
         // Written so that NaN fails.
         if !(self.duration_s > 0.0 && self.duration_s < MAX_DURATION_S) {
