@@ -97,7 +97,10 @@ pub const DESIGN: Table<DesignConfig> = Table {
         Setting {
             key: "amplitude_deg",
             unit: "deg",
-            allowed: Allowed::Increasing(Interval::closed(0.0, 80.0)),
+            // Above 0, as the kinematics' own amplitude: a row that does
+            // not flap has no input power, so no efficiency, and the
+            // discipline lost its six rows of such a level.
+            allowed: Allowed::Increasing(Interval::above_up_to(0.0, 80.0)),
             doc: "Amplitude levels",
             value: |d| Value::Reals(d.space.amplitude_deg.to_vec()),
         },

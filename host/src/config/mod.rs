@@ -395,7 +395,13 @@ mod tests {
         let e = SystemConfig::from_toml("[design]\namplitude_deg = [40, 30, 20]\n").unwrap_err();
         assert_eq!(
             e.to_string(),
-            "design.amplitude_deg = [40, 30, 20] must be increasing, each in [0, 80] deg"
+            "design.amplitude_deg = [40, 30, 20] must be increasing, each in (0, 80] deg"
+        );
+        // A level that does not flap: its six L18 rows have no efficiency.
+        let e = SystemConfig::from_toml("[design]\namplitude_deg = [0, 1, 2]\n").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "design.amplitude_deg = [0, 1, 2] must be increasing, each in (0, 80] deg"
         );
     }
 
