@@ -232,6 +232,33 @@ fn rounded_up(x: f64) -> String {
     } else {
         let mantissa = x / 10f64.powi(exponent);
         let up = (mantissa * 100.0).ceil() / 100.0;
+        // 9.999e298 rounds up to 1.00e299, not 10.00e298.
+        let (up, exponent) = if up >= 10.0 {
+            (up / 10.0, exponent + 1)
+        } else {
+            (up, exponent)
+        };
         format!("{up:.2}e{exponent}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::rounded_up;
+
+    /// Three significant digits, never below the value, and in powers of
+    /// ten where plain decimals would be a line of digits.
+    #[test]
+    fn a_least_value_is_rounded_up_to_three_digits() {
+        for (x, shown) in [
+            (0.031416, "0.0315"),
+            (157.08, "158"),
+            (1570.8, "1580"),
+            (1.5708e298, "1.58e298"),
+            (9.9991e298, "1.00e299"),
+            (2.5e-7, "2.50e-7"),
+        ] {
+            assert_eq!(rounded_up(x), shown, "{x:e}");
+        }
     }
 }
