@@ -14,36 +14,93 @@
 //! feedback.
 
 use fwav_protocol::{ParamId, ParamValue};
+use fwav_settings::Shown;
 
 use crate::params::PlantParams;
 
-/// The controller's model parameters of `plant`, in wire-id order.
+/// The controller's model parameters of `plant`, in wire-id order (as
+/// the wire's `f32`; [`checked_controller_model`] first asks whether the
+/// device takes them).
 pub fn controller_model(plant: &PlantParams) -> [ParamValue; 8] {
-    let n = plant.transmission.gear_ratio;
-    let m = &plant.motor;
-    let value = |id, v: f64| ParamValue {
+    model_values(plant).map(|(id, v)| ParamValue {
         id,
         value: v as f32,
-    };
+    })
+}
+
+/// [`controller_model`], or the first value the device's parameter range
+/// refuses ([`ParamId::accepts`]): a board set to it would keep that
+/// parameter's old value and feed forward another plant than this one.
+pub fn checked_controller_model(plant: &PlantParams) -> Result<[ParamValue; 8], BeyondDevice> {
+    for (id, value) in model_values(plant) {
+        if !id.accepts(value as f32) {
+            return Err(BeyondDevice { id, value });
+        }
+    }
+    Ok(controller_model(plant))
+}
+
+/// The model's values in `f64`, as the plant gives them.
+fn model_values(plant: &PlantParams) -> [(ParamId, f64); 8] {
+    let n = plant.transmission.gear_ratio;
+    let m = &plant.motor;
     [
-        value(
+        (
             ParamId::WingInertia,
             plant.wing.inertia_kg_m2 + n * n * m.rotor_inertia_kg_m2,
         ),
-        value(
+        (
             ParamId::SpringStiffness,
             plant.transmission.spring_nm_per_rad,
         ),
-        value(
+        (
             ParamId::ViscousDamping,
             n * n * m.viscous_friction_nms_per_rad,
         ),
-        value(ParamId::AeroDamping, plant.wing.aero_damping()),
-        value(ParamId::TorqueConstant, m.torque_constant_nm_per_a),
-        value(ParamId::WindingResistance, m.resistance_ohm),
-        value(ParamId::GearRatio, n),
-        value(ParamId::SupplyVoltage, plant.supply.battery_v),
+        (ParamId::AeroDamping, plant.wing.aero_damping()),
+        (ParamId::TorqueConstant, m.torque_constant_nm_per_a),
+        (ParamId::WindingResistance, m.resistance_ohm),
+        (ParamId::GearRatio, n),
+        (ParamId::SupplyVoltage, plant.supply.battery_v),
     ]
+}
+
+/// A plant whose controller model the device cannot take: one of the
+/// model's values is outside its parameter's range.
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "the plant gives the controller's {} = {} {}, outside the device's {}..={} {}: a board \
+     cannot fly this plant's model; check {}",
+    .id.info().name,
+    Shown(*.value),
+    .id.info().unit,
+    .id.info().min,
+    .id.info().max,
+    .id.info().unit,
+    plant_keys(*.id)
+)]
+pub struct BeyondDevice {
+    /// The parameter.
+    pub id: ParamId,
+    /// The value the plant gives it.
+    pub value: f64,
+}
+
+/// The plant file's keys a model parameter is made of.
+fn plant_keys(id: ParamId) -> &'static str {
+    match id {
+        ParamId::WingInertia => {
+            "wing.inertia_kg_m2, motor.rotor_inertia_kg_m2 and transmission.gear_ratio"
+        }
+        ParamId::SpringStiffness => "transmission.spring_nm_per_rad",
+        ParamId::ViscousDamping => "motor.viscous_friction_nms_per_rad and transmission.gear_ratio",
+        ParamId::AeroDamping => "the [wing] table",
+        ParamId::TorqueConstant => "motor.torque_constant_nm_per_a",
+        ParamId::WindingResistance => "motor.resistance_ohm",
+        ParamId::GearRatio => "transmission.gear_ratio",
+        ParamId::SupplyVoltage => "supply.battery_v",
+        _ => "the plant file",
+    }
 }
 
 #[cfg(test)]
@@ -66,5 +123,22 @@ mod tests {
         assert!((f64::from(model[2].value) / (n * n * 2.5e-8) - 1.0).abs() < 1e-6);
         let ids: Vec<_> = model.iter().map(|v| v.id as usize).collect();
         assert_eq!(ids, (0..8).collect::<Vec<_>>());
+        assert_eq!(checked_controller_model(&p), Ok(model));
+    }
+
+    /// A value the device refuses is named with the plant's key, as given
+    /// (1e300 ohm was sent as `inf` and refused by the device as that).
+    #[test]
+    fn a_model_beyond_the_device_is_named_with_the_plant_key() {
+        let mut p = PlantParams::default();
+        p.motor.resistance_ohm = 1e300;
+        let e = checked_controller_model(&p).unwrap_err();
+        assert_eq!(e.id, ParamId::WindingResistance);
+        assert_eq!(
+            e.to_string(),
+            "the plant gives the controller's winding_resistance = 1e300 ohm, outside the \
+             device's 0.001..=1000 ohm: a board cannot fly this plant's model; check \
+             motor.resistance_ohm"
+        );
     }
 }

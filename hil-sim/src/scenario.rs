@@ -16,7 +16,7 @@
 //! kind = "link_silence"     # or encoder_loss, stall, supply_drop (with battery_v)
 //! ```
 
-use fwav_actuator::controller_model::controller_model;
+use fwav_actuator::controller_model::{checked_controller_model, BeyondDevice};
 use fwav_actuator::params::PlantParams;
 use fwav_fc_core::reference::ReferenceGenerator;
 use fwav_link::{Link, LinkError};
@@ -117,6 +117,9 @@ pub enum ScenarioError {
     /// none.
     #[error("the simulated flight controller: {0}")]
     Link(#[from] LinkError),
+    /// The plant's controller model has a value the device refuses.
+    #[error("{0}")]
+    Plant(#[from] BeyondDevice),
     /// The run's length is not a positive number of seconds below the cap.
     #[error("duration_s = {} is outside 0 < duration_s < {} s", Shown(*duration_s), Shown(*max))]
     Duration {
@@ -234,12 +237,13 @@ pub fn run_with_trace(
     plant: &PlantParams,
 ) -> Result<(Report, Vec<TracePoint>), ScenarioError> {
     scenario.check()?;
+    let model = checked_controller_model(plant)?;
     let profile = scenario.profile()?;
     let mut host = Link::new(Simulator::new(plant));
     host.handshake()?;
     // The controller feeds forward the plant it flies, set as a user sets
     // a board's (`fwav fc params --set`), not the protocol's defaults.
-    for value in controller_model(plant) {
+    for value in model {
         host.command(Command::SetParam(value))?;
     }
     host.command(Command::UploadProfile(profile.clone()))?;

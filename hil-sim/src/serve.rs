@@ -4,6 +4,7 @@
 use std::io::{ErrorKind, Read, Write};
 use std::time::{Duration, Instant};
 
+use fwav_actuator::controller_model::{checked_controller_model, BeyondDevice};
 use fwav_actuator::params::PlantParams;
 use fwav_settings::Shown;
 use serialport::{SerialPort, TTYPort};
@@ -26,6 +27,10 @@ pub enum ServeError {
         /// The pace given.
         speed: f64,
     },
+    /// The plant's controller model has a value the device refuses: the
+    /// board would keep that parameter's default (it did, without a word).
+    #[error("{0}")]
+    Plant(#[from] BeyondDevice),
 }
 
 /// The paces a server runs at, simulated seconds per wall-clock second: a
@@ -50,6 +55,7 @@ impl Server {
         if !PACE.contains(&speed) {
             return Err(ServeError::Speed { speed });
         }
+        checked_controller_model(plant)?;
         let (mut master, slave) = TTYPort::pair()?;
         master.set_timeout(Duration::from_millis(0))?;
         let path = slave.name().unwrap_or_default();

@@ -249,3 +249,34 @@ fn a_bad_pace_is_refused() {
         assert!(out.stdout.is_empty(), "{speed}: the pty was made");
     }
 }
+
+/// A plant whose controller model the device refuses (a winding of 1e300
+/// ohm) was refused at the upload as `winding_resistance = inf`, naming the
+/// device's parameter; `serve` took it without a word and kept the
+/// controller's default. Both now refuse it before the run, naming the
+/// plant's key and the value as written.
+#[test]
+fn a_plant_beyond_the_device_is_refused_naming_its_key() {
+    let plant = String::from_utf8(hil_sim(&["plant"]).stdout).unwrap();
+    let line = plant
+        .lines()
+        .find(|l| l.starts_with("resistance_ohm = "))
+        .expect("the plant's winding resistance");
+    let dir = Scratch::new("plant-beyond");
+    let plant = dir.file("plant.toml", &plant.replace(line, "resistance_ohm = 1e300"));
+    let scenario = dir.file("cruise.toml", SCENARIO);
+    for args in [
+        &["run", "--plant", &plant, &scenario][..],
+        &["serve", "--plant", &plant][..],
+    ] {
+        let out = hil_sim(args);
+        let stderr = assert_plain_error(&out);
+        assert!(
+            stderr
+                .contains("winding_resistance = 1e300 ohm, outside the device's 0.001..=1000 ohm")
+                && stderr.contains("check motor.resistance_ohm"),
+            "{args:?}: {stderr}"
+        );
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+}
