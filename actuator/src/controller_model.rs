@@ -22,22 +22,26 @@ use crate::params::PlantParams;
 /// the wire's `f32`; [`checked_controller_model`] first asks whether the
 /// device takes them).
 pub fn controller_model(plant: &PlantParams) -> [ParamValue; 8] {
-    model_values(plant).map(|(id, v)| ParamValue {
-        id,
-        value: v as f32,
-    })
+    model_values(plant).map(on_the_wire)
 }
 
 /// [`controller_model`], or the first value the device's parameter range
 /// refuses ([`ParamId::accepts`]): a board set to it would keep that
 /// parameter's old value and feed forward another plant than this one.
 pub fn checked_controller_model(plant: &PlantParams) -> Result<[ParamValue; 8], BeyondDevice> {
-    for (id, value) in model_values(plant) {
-        if !id.accepts(value as f32) {
-            return Err(BeyondDevice { id, value });
-        }
+    let values = model_values(plant);
+    match values.iter().find(|&&(id, v)| !id.accepts(v as f32)) {
+        Some(&(id, value)) => Err(BeyondDevice { id, value }),
+        None => Ok(values.map(on_the_wire)),
     }
-    Ok(controller_model(plant))
+}
+
+/// A model value as the wire carries it, an `f32`.
+fn on_the_wire((id, value): (ParamId, f64)) -> ParamValue {
+    ParamValue {
+        id,
+        value: value as f32,
+    }
 }
 
 /// The model's values in `f64`, as the plant gives them.

@@ -197,8 +197,7 @@ fn run(cli: Cli) -> Result<ExitCode> {
 /// The steady-state lines of a report: its window, the tracking, the
 /// current and the battery, or why the run has none.
 fn print_steady(report: &Report, scenario: &Scenario) {
-    let first_fault = scenario.faults.iter().map(|f| f.at_s).reduce(f64::min);
-    let before = match first_fault {
+    let before = match scenario.first_fault_s() {
         Some(t) => format!("before its end and its first fault at {t:.3} s"),
         None => "before its end".to_owned(),
     };

@@ -169,11 +169,7 @@ impl Report {
         start_stored: f64,
     ) -> Self {
         let dt = plant.control_dt();
-        let first_fault = scenario
-            .faults
-            .iter()
-            .map(|f| f.at_s)
-            .fold(f64::INFINITY, f64::min);
+        let first_fault = scenario.first_fault_s().unwrap_or(f64::INFINITY);
         let usable = trace
             .iter()
             .take_while(|p| p.sample.time_s <= first_fault)

@@ -210,6 +210,12 @@ impl Scenario {
         Ok(())
     }
 
+    /// When the first fault fires, s; `None` without faults. The
+    /// steady-state numbers are measured before it.
+    pub fn first_fault_s(&self) -> Option<f64> {
+        self.faults.iter().map(|f| f.at_s).reduce(f64::min)
+    }
+
     /// The profile in wire form.
     pub fn profile(&self) -> Result<Profile, ScenarioError> {
         let doc = ProfileDocument {

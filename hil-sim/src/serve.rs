@@ -4,7 +4,7 @@
 use std::io::{ErrorKind, Read, Write};
 use std::time::{Duration, Instant};
 
-use fwav_actuator::controller_model::{checked_controller_model, BeyondDevice};
+use fwav_actuator::controller_model::BeyondDevice;
 use fwav_actuator::params::PlantParams;
 use fwav_settings::Shown;
 use serialport::{SerialPort, TTYPort};
@@ -55,13 +55,12 @@ impl Server {
         if !PACE.contains(&speed) {
             return Err(ServeError::Speed { speed });
         }
-        checked_controller_model(plant)?;
+        let mut sim = Simulator::new(plant);
+        // The board flies this plant: its controller's model is the plant's.
+        sim.configure_for_plant()?;
         let (mut master, slave) = TTYPort::pair()?;
         master.set_timeout(Duration::from_millis(0))?;
         let path = slave.name().unwrap_or_default();
-        let mut sim = Simulator::new(plant);
-        // The board flies this plant: its controller's model is the plant's.
-        sim.configure_for_plant();
         // Nobody reads the energy ledger here; without it a step is ~20% cheaper.
         sim.plant.keep_ledger = false;
         Ok(Self {

@@ -17,7 +17,7 @@ use rand::rngs::StdRng;
 use rand::SeedableRng;
 use rand_distr::{Distribution, Normal};
 
-use fwav_actuator::controller_model::controller_model;
+use fwav_actuator::controller_model::{checked_controller_model, BeyondDevice};
 use fwav_actuator::params::PlantParams;
 use fwav_actuator::plant::{Drive, Plant};
 
@@ -102,17 +102,21 @@ impl Simulator {
     }
 
     /// Sets the controller's model parameters to the plant's
-    /// ([`controller_model`]) through the link's `SetParam` command, as a
-    /// board configured for this vehicle before the host connects; the
-    /// acknowledgements are not sent.
-    pub fn configure_for_plant(&mut self) {
-        for (seq, value) in controller_model(&self.params).into_iter().enumerate() {
+    /// ([`checked_controller_model`]) through the link's `SetParam`
+    /// command, as a board configured for this vehicle before the host
+    /// connects; the acknowledgements are not sent. A plant whose model
+    /// the device would refuse is an error before any is set: the board
+    /// would keep that parameter's default and feed forward another plant.
+    pub fn configure_for_plant(&mut self) -> Result<(), BeyondDevice> {
+        let model = checked_controller_model(&self.params)?;
+        for (seq, value) in model.into_iter().enumerate() {
             let request = Request {
                 seq: seq as u16,
                 command: Command::SetParam(value),
             };
             let _ack = self.handle(request);
         }
+        Ok(())
     }
 
     /// Plant parameters.

@@ -35,10 +35,19 @@ pub struct Shown(pub f64);
 /// at most, and no more than two zeros after it before the first digit.
 const PLAIN: std::ops::Range<f64> = 1e-3..1e6;
 
+impl Shown {
+    /// Whether the number is written in plain decimals: its magnitude in
+    /// `[1e-3, 1e6)`, or 0, infinite or NaN.
+    pub fn is_plain(self) -> bool {
+        let x = self.0;
+        x == 0.0 || !x.is_finite() || PLAIN.contains(&x.abs())
+    }
+}
+
 impl fmt::Display for Shown {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let x = self.0;
-        let plain = x == 0.0 || !x.is_finite() || PLAIN.contains(&x.abs());
+        let plain = self.is_plain();
         let mut text = match (plain, f.precision()) {
             (true, None) => format!("{x}"),
             (true, Some(p)) => format!("{x:.p$}"),

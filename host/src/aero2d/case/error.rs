@@ -225,7 +225,7 @@ fn rounded_up(x: f64) -> String {
     }
     let exponent = x.log10().floor() as i32;
     let digits = 2 - exponent;
-    if (1e-3..1e6).contains(&x) {
+    if Shown(x).is_plain() {
         let scale = 10f64.powi(digits);
         let up = (x * scale).ceil() / scale;
         format!("{up:.*}", digits.max(0) as usize)
