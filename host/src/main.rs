@@ -143,8 +143,14 @@ enum Command {
         /// Log every sample to this CSV file (a file that exists is refused).
         #[arg(long)]
         csv: Option<PathBuf>,
-        /// One sample every N control steps (100 = 100 Hz at 10 kHz).
-        #[arg(long, default_value_t = 100)]
+        /// One sample every N control steps (100 = 100 Hz at 10 kHz), 1 to
+        /// 65535.
+        #[arg(
+            long,
+            default_value_t = 100,
+            value_parser = clap::value_parser!(u16).range(1..),
+            allow_negative_numbers = true
+        )]
         decimation: u16,
         /// Stop after this many seconds.
         #[arg(long, value_parser = cli::fly::duration_seconds, allow_negative_numbers = true)]

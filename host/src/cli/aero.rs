@@ -41,14 +41,14 @@ pub struct Aero2dArgs {
     pub ns_thickness: f64,
     /// Grid nodes round the section in the Navier–Stokes model (even, 16
     /// to 8192; default 384).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub ns_around: Option<usize>,
     /// Grid nodes from the wall to the outer boundary in the Navier–Stokes
     /// model (default 256, the far field coarsened: the grid is refined or
     /// coarsened as a whole, its near rings and far growth scaled with
     /// these; 8 to 8192, and at most 1.5 growth a far cell: 29 or
     /// more).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub ns_radial: Option<usize>,
     /// Largest Courant number of a time step in the Navier–Stokes model
     /// (0.1 to 10; default 3, chosen on the FWAV plate's thrust; a bluff
@@ -80,7 +80,7 @@ pub struct Aero2dArgs {
     #[arg(long, default_value_t = 0.25, allow_negative_numbers = true)]
     pub pivot: f64,
     /// Cycles to simulate (or `--duration`, for `--model ns`).
-    #[arg(long, default_value_t = 5)]
+    #[arg(long, default_value_t = 5, allow_negative_numbers = true)]
     pub cycles: u32,
     /// Chords travelled to run instead of `--cycles`, for `--model ns`: a
     /// run without a period, such as a body at rest in a stream (no plunge
@@ -140,7 +140,7 @@ pub struct Aero2dArgs {
     /// Frames of `--field-series`, evenly spaced in time over the run, the
     /// last at its end, each written as the run reaches it: 1 to 500
     /// (default 50; 5.2 MB each on the default 384 × 256 grid).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub field_frames: Option<usize>,
     /// Run a Navier–Stokes case whose memory, grid or field series is far
     /// beyond the default's (without it such a run prints its estimate,

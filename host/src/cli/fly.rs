@@ -401,7 +401,7 @@ pub fn monitor(
         }
         None => None,
     };
-    device.telemetry(true, decimation.max(1))?;
+    device.telemetry(true, decimation)?;
     tell(&format!(
         "monitoring {path} ({}); Ctrl-C (or SIGTERM, SIGHUP) stops the wing and the monitor",
         device.hello.firmware

@@ -42,7 +42,7 @@ pub struct ExecutorArgs {
     pub executor: Option<ExecutorChoice>,
     /// Local: cases at a time (default 1, or [local] jobs). Slurm: at
     /// most this many array tasks at once (the array's %N).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub jobs: Option<usize>,
     /// Slurm: the partition (default: the study file's [slurm] partition,
     /// else the cluster's default).
@@ -52,7 +52,7 @@ pub struct ExecutorArgs {
     #[arg(long)]
     pub time: Option<String>,
     /// Slurm: CPUs of each task (default 2).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub cpus_per_task: Option<u32>,
     /// Slurm: memory of each task (e.g. 4G).
     #[arg(long)]

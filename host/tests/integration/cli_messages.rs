@@ -244,3 +244,23 @@ fn profile_reasons_and_end_action_read_as_words() {
     );
     assert!(stdout.contains("then stop"), "{stdout}");
 }
+
+/// A telemetry decimation of 0 (no sample ever, by its meaning: one sample
+/// every N control steps) is refused with its range before any port is
+/// opened. Until 2026-12-07 `fwav monitor` took it and quietly sent 1.
+#[test]
+fn a_decimation_of_zero_is_refused_with_its_range() {
+    for bad in ["0", "70000", "-1"] {
+        let out = fwav(&[
+            "monitor",
+            "--port",
+            "/dev/no-such-fwav-port",
+            "--decimation",
+            bad,
+        ]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{bad}: {stderr}");
+        assert!(stderr.contains("--decimation"), "{bad}: {stderr}");
+        assert!(!stderr.contains("no such port"), "{bad}: {stderr}");
+    }
+}
