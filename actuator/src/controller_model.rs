@@ -78,8 +78,8 @@ fn model_values(plant: &PlantParams) -> [(ParamId, f64); 8] {
     .id.info().name,
     Shown(*.value),
     .id.info().unit,
-    .id.info().min,
-    .id.info().max,
+    Shown(.id.info().bounds[0]),
+    Shown(.id.info().bounds[1]),
     .id.info().unit,
     plant_keys(*.id)
 )]

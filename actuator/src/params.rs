@@ -4,6 +4,7 @@
 //! units; every field is checked with an error that names it. Imports
 //! nothing of this crate.
 
+use fwav_protocol::ParamId;
 use fwav_settings::{Allowed, Integers, Interval, Setting, SettingError, Table, Value};
 use serde::{Deserialize, Serialize};
 
@@ -183,6 +184,18 @@ impl PlantParams {
     }
 }
 
+/// The range of a plant value that the flight controller's model takes as
+/// it is ([`crate::controller_model`]): its parameter's, as the device
+/// declares it. A plant file the check allows is then one a board (or
+/// hil-sim's) can be set to fly; the values the model combines (the
+/// inertia, the damping) are checked by
+/// [`crate::controller_model::checked_controller_model`]. The design's
+/// `[actuator]` table, the same vehicle, takes these ranges too.
+pub const fn device_range(id: ParamId) -> Interval {
+    let [low, high] = id.info().bounds;
+    Interval::closed(low, high)
+}
+
 /// The `[motor]` table's settings.
 pub const MOTOR: Table<Motor> = Table {
     name: "motor",
@@ -191,8 +204,8 @@ pub const MOTOR: Table<Motor> = Table {
         Setting::real(
             "resistance_ohm",
             "ohm",
-            Interval::positive(),
-            "Winding resistance",
+            device_range(ParamId::WindingResistance),
+            "Winding resistance (the flight controller's winding_resistance: its range)",
             |m| Value::Real(m.resistance_ohm),
         ),
         Setting::real(
@@ -205,8 +218,8 @@ pub const MOTOR: Table<Motor> = Table {
         Setting::real(
             "torque_constant_nm_per_a",
             "N m/A",
-            Interval::positive(),
-            "Torque constant (= back-EMF constant)",
+            device_range(ParamId::TorqueConstant),
+            "Torque constant (= back-EMF constant; the flight controller's torque_constant: its range)",
             |m| Value::Real(m.torque_constant_nm_per_a),
         ),
         Setting::real(
@@ -253,8 +266,8 @@ pub const SUPPLY: Table<Supply> = Table {
         Setting::real(
             "battery_v",
             "V",
-            Interval::positive(),
-            "Open-circuit battery voltage",
+            device_range(ParamId::SupplyVoltage),
+            "Open-circuit battery voltage (the flight controller's supply_voltage: its range)",
             |s| Value::Real(s.battery_v),
         ),
         Setting::real(
@@ -282,8 +295,8 @@ pub const TRANSMISSION: Table<Transmission> = Table {
         Setting::real(
             "gear_ratio",
             "",
-            Interval::positive(),
-            "Motor turns per flapping-axis turn",
+            device_range(ParamId::GearRatio),
+            "Motor turns per flapping-axis turn (the flight controller's gear_ratio: its range)",
             |t| Value::Real(t.gear_ratio),
         ),
         Setting::real(
@@ -296,8 +309,8 @@ pub const TRANSMISSION: Table<Transmission> = Table {
         Setting::real(
             "spring_nm_per_rad",
             "N m/rad",
-            Interval::at_least(0.0),
-            "Torsional spring about the flapping axis",
+            device_range(ParamId::SpringStiffness),
+            "Torsional spring about the flapping axis (the flight controller's spring_stiffness: its range)",
             |t| Value::Real(t.spring_nm_per_rad),
         ),
     ],

@@ -1,6 +1,6 @@
 //! The shipped plant file and the checks of a parameter file.
 
-use fwav_actuator::controller_model::controller_model;
+use fwav_actuator::controller_model::{checked_controller_model, controller_model};
 use fwav_actuator::params::{
     PlantParams, DEFAULT_PLANT_TOML, MOTOR, SENSORS, SIMULATION, SUPPLY, TRANSMISSION, WING,
 };
@@ -77,4 +77,56 @@ fn every_plant_key_is_declared() {
         .table(&SIMULATION)
         .render(&plain)
         .unwrap();
+}
+
+/// A plant value the controller's model takes as it is has the device's
+/// range ([`fwav_protocol::ParamInfo::bounds`]), so a plant file the check
+/// allows is one a board can be set to fly: at each bound the plant passes
+/// and its model is accepted (the device compares the wire's `f32`), and
+/// just beyond it the file is refused, naming its key. The plant's range
+/// was `(0, inf)` until 2026-12-07, and a winding of 1e300 ohm was refused
+/// only at the upload.
+#[test]
+fn a_value_the_controller_models_as_it_is_has_the_devices_range() {
+    type Field = fn(&mut PlantParams) -> &mut f64;
+    let cases: [(&str, ParamId, Field); 5] = [
+        ("motor.resistance_ohm", ParamId::WindingResistance, |p| {
+            &mut p.motor.resistance_ohm
+        }),
+        (
+            "motor.torque_constant_nm_per_a",
+            ParamId::TorqueConstant,
+            |p| &mut p.motor.torque_constant_nm_per_a,
+        ),
+        ("supply.battery_v", ParamId::SupplyVoltage, |p| {
+            &mut p.supply.battery_v
+        }),
+        ("transmission.gear_ratio", ParamId::GearRatio, |p| {
+            &mut p.transmission.gear_ratio
+        }),
+        (
+            "transmission.spring_nm_per_rad",
+            ParamId::SpringStiffness,
+            |p| &mut p.transmission.spring_nm_per_rad,
+        ),
+    ];
+    for (key, id, field) in cases {
+        let [low, high] = id.info().bounds;
+        for (bound, beyond) in [(low, low - 1e-3 * high), (high, high * 1.001)] {
+            let mut plant = PlantParams::default();
+            *field(&mut plant) = bound;
+            // The gear ratio scales the reflected inertia past the
+            // device's at 1000: keep the rotor's share as at 20.
+            if id == ParamId::GearRatio {
+                plant.motor.rotor_inertia_kg_m2 *= (20.0 / bound) * (20.0 / bound);
+            }
+            plant
+                .validate()
+                .unwrap_or_else(|e| panic!("{key} = {bound}: {e}"));
+            checked_controller_model(&plant).unwrap_or_else(|e| panic!("{key} = {bound}: {e}"));
+            *field(&mut plant) = beyond;
+            let e = plant.validate().unwrap_err().to_string();
+            assert!(e.contains(key), "{key} = {beyond}: {e}");
+        }
+    }
 }

@@ -250,33 +250,46 @@ fn a_bad_pace_is_refused() {
     }
 }
 
-/// A plant whose controller model the device refuses (a winding of 1e300
-/// ohm) was refused at the upload as `winding_resistance = inf`, naming the
-/// device's parameter; `serve` took it without a word and kept the
-/// controller's default. Both now refuse it before the run, naming the
-/// plant's key and the value as written.
+/// A plant whose controller model the device refuses (a wing of 1 kg m^2,
+/// beyond the device's inertia) was refused at the upload, naming the
+/// device's parameter in its `f32`; `serve` took it without a word and kept
+/// the controller's default. Both now refuse it before the run, naming the
+/// plant's keys and the value as computed (1 + 20^2 * 7.1e-8 of the
+/// rotor). A value the model takes as it is (a winding of 1e300 ohm) is
+/// refused by the plant file's own check, whose range is the device's
+/// (since 2026-12-07).
 #[test]
 fn a_plant_beyond_the_device_is_refused_naming_its_key() {
     let plant = String::from_utf8(hil_sim(&["plant"]).stdout).unwrap();
-    let line = plant
-        .lines()
-        .find(|l| l.starts_with("resistance_ohm = "))
-        .expect("the plant's winding resistance");
     let dir = Scratch::new("plant-beyond");
-    let plant = dir.file("plant.toml", &plant.replace(line, "resistance_ohm = 1e300"));
     let scenario = dir.file("cruise.toml", SCENARIO);
-    for args in [
-        &["run", "--plant", &plant, &scenario][..],
-        &["serve", "--plant", &plant][..],
+    for (key, value, expected) in [
+        (
+            "inertia_kg_m2 = ",
+            "inertia_kg_m2 = 1",
+            "the plant gives the controller's wing_inertia = 1.0000284 kg m^2, outside the \
+             device's 1e-9..=0.01 kg m^2: a board cannot fly this plant's model; check \
+             wing.inertia_kg_m2, motor.rotor_inertia_kg_m2 and transmission.gear_ratio",
+        ),
+        (
+            "resistance_ohm = ",
+            "resistance_ohm = 1e300",
+            "motor.resistance_ohm = 1e300 is outside [0.001, 1000] ohm",
+        ),
     ] {
-        let out = hil_sim(args);
-        let stderr = assert_plain_error(&out);
-        assert!(
-            stderr
-                .contains("winding_resistance = 1e300 ohm, outside the device's 0.001..=1000 ohm")
-                && stderr.contains("check motor.resistance_ohm"),
-            "{args:?}: {stderr}"
-        );
-        assert!(out.stdout.is_empty(), "{args:?}");
+        let line = plant
+            .lines()
+            .find(|l| l.starts_with(key))
+            .expect("the plant's key");
+        let plant = dir.file("plant.toml", &plant.replace(line, value));
+        for args in [
+            &["run", "--plant", &plant, &scenario][..],
+            &["serve", "--plant", &plant][..],
+        ] {
+            let out = hil_sim(args);
+            let stderr = assert_plain_error(&out);
+            assert!(stderr.contains(expected), "{args:?}: {stderr}");
+            assert!(out.stdout.is_empty(), "{args:?}");
+        }
     }
 }

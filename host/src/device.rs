@@ -34,17 +34,17 @@ pub enum DeviceError {
         name: String,
     },
     /// A parameter value outside its range.
-    #[error("{name} = {} is outside {min}..={max} {unit}", Shown(*value))]
+    #[error("{name} = {} is outside {}..={} {unit}", Shown(*value), Shown(*min), Shown(*max))]
     ParamOutOfRange {
         /// Parameter name.
         name: &'static str,
         /// Value given (as given: one beyond an `f32`'s range is not shown
         /// as `inf`).
         value: f64,
-        /// Smallest allowed.
-        min: f32,
-        /// Largest allowed.
-        max: f32,
+        /// Smallest allowed, as declared ([`fwav_protocol::ParamInfo::bounds`]).
+        min: f64,
+        /// Largest allowed, as declared.
+        max: f64,
         /// Unit.
         unit: &'static str,
     },
@@ -136,8 +136,8 @@ impl<P: Read + Write> Device<P> {
             return Err(DeviceError::ParamOutOfRange {
                 name: info.name,
                 value,
-                min: info.min,
-                max: info.max,
+                min: info.bounds[0],
+                max: info.bounds[1],
                 unit: info.unit,
             });
         }

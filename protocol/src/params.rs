@@ -72,10 +72,16 @@ pub struct ParamInfo {
     pub unit: &'static str,
     /// Value after a reset to defaults.
     pub default: f32,
-    /// Smallest allowed value.
+    /// Smallest allowed value (as the wire's `f32`).
     pub min: f32,
-    /// Largest allowed value.
+    /// Largest allowed value (as the wire's `f32`).
     pub max: f32,
+    /// The allowed range as declared, `[min, max]` in `f64`: `min` and
+    /// `max` are these rounded to `f32`. For checking a value before it
+    /// is sent, where it is an `f64` (a plant file's, say): `1e-3` as an
+    /// `f64` is below `1e-3f32` widened, so the `f32` bounds would refuse
+    /// the very value declared.
+    pub bounds: [f64; 2],
 }
 
 const fn info(
@@ -83,16 +89,17 @@ const fn info(
     name: &'static str,
     unit: &'static str,
     default: f32,
-    min: f32,
-    max: f32,
+    min: f64,
+    max: f64,
 ) -> ParamInfo {
     ParamInfo {
         id,
         name,
         unit,
         default,
-        min,
-        max,
+        min: min as f32,
+        max: max as f32,
+        bounds: [min, max],
     }
 }
 

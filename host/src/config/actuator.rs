@@ -36,7 +36,8 @@
 //! the margins and the current the spring saves).
 
 use fwav_actuator::feasibility::{ActuatorLimits, DEFAULT_RESERVE};
-use fwav_actuator::params::{Motor, PlantParams, Supply};
+use fwav_actuator::params::{device_range, Motor, PlantParams, Supply};
+use fwav_protocol::ParamId;
 use fwav_settings::{Allowed, Bound, Interval, Setting, Table, Value};
 use serde::{Deserialize, Serialize};
 
@@ -149,7 +150,7 @@ pub const ACTUATOR: Table<ActuatorConfig> = Table {
     name: "actuator",
     doc: "The flapping drive: DC motor (default: FAULHABER 1331 T 006 SR datasheet), gearbox, 2S battery, spring, the controller's current limit.",
     settings: &[
-        Setting::real("resistance_ohm", "ohm", Interval::positive(), "Motor winding resistance", |a| {
+        Setting::real("resistance_ohm", "ohm", device_range(ParamId::WindingResistance), "Motor winding resistance (the flight controller's winding_resistance: its range)", |a| {
             Value::Real(a.resistance_ohm)
         }),
         Setting::real("inductance_h", "H", Interval::positive(), "Motor winding inductance", |a| {
@@ -158,8 +159,8 @@ pub const ACTUATOR: Table<ActuatorConfig> = Table {
         Setting::real(
             "torque_constant_nm_per_a",
             "N m/A",
-            Interval::positive(),
-            "Motor torque constant (= back-EMF constant, V s/rad)",
+            device_range(ParamId::TorqueConstant),
+            "Motor torque constant (= back-EMF constant, V s/rad; the flight controller's torque_constant: its range)",
             |a| Value::Real(a.torque_constant_nm_per_a),
         ),
         Setting::real(
@@ -183,7 +184,7 @@ pub const ACTUATOR: Table<ActuatorConfig> = Table {
             "Viscous friction at the motor shaft",
             |a| Value::Real(a.viscous_friction_nms_per_rad),
         ),
-        Setting::real("gear_ratio", "", Interval::positive(), "Motor turns per flapping-axis turn", |a| {
+        Setting::real("gear_ratio", "", device_range(ParamId::GearRatio), "Motor turns per flapping-axis turn (the flight controller's gear_ratio: its range)", |a| {
             Value::Real(a.gear_ratio)
         }),
         Setting::real(
@@ -193,7 +194,7 @@ pub const ACTUATOR: Table<ActuatorConfig> = Table {
             "Gearbox efficiency",
             |a| Value::Real(a.gear_efficiency),
         ),
-        Setting::real("battery_v", "V", Interval::positive(), "Open-circuit battery voltage", |a| {
+        Setting::real("battery_v", "V", device_range(ParamId::SupplyVoltage), "Open-circuit battery voltage (the flight controller's supply_voltage: its range)", |a| {
             Value::Real(a.battery_v)
         }),
         Setting::real(
@@ -218,15 +219,15 @@ pub const ACTUATOR: Table<ActuatorConfig> = Table {
         Setting::real(
             "spring_nm_per_rad",
             "N m/rad",
-            Interval::at_least(0.0),
-            "Stiffness of the fixed spring (spring = \"fixed\"; 0: no spring)",
+            device_range(ParamId::SpringStiffness),
+            "Stiffness of the fixed spring (spring = \"fixed\"; 0: no spring; the flight controller's spring_stiffness: its range)",
             |a| Value::Real(a.spring_nm_per_rad),
         ),
         Setting::real(
             "current_limit_a",
             "A",
-            Interval::positive(),
-            "The flight controller's current limit",
+            Interval::above_up_to(0.0, ParamId::CurrentLimit.info().bounds[1]),
+            "The flight controller's current limit (its current_limit, above 0)",
             |a| Value::Real(a.current_limit_a),
         ),
         Setting::real(
