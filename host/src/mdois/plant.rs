@@ -7,11 +7,13 @@
 //! the analysed kinematics, [`crate::vehicle::aero_damping`]); the
 //! actuator is the design file's `[actuator]`, its spring (when tuned)
 //! tuned to the frequency `kinematics.json` flies. The file is checked to
-//! parse back ([`PlantParams::from_toml`]) before it is written.
+//! parse back ([`PlantParams::from_toml`]), and its controller model to be
+//! one the device takes ([`checked_controller_model`]), before it is
+//! written.
 
 use std::path::{Path, PathBuf};
 
-use fwav_actuator::controller_model::controller_model;
+use fwav_actuator::controller_model::{checked_controller_model, controller_model};
 use fwav_actuator::params::PlantParams;
 
 use crate::config::SystemConfig;
@@ -99,7 +101,10 @@ pub fn plant_toml(
     }
     text.push('\n');
     text.push_str(&body);
-    PlantParams::from_toml(&text).map_err(|e| DesignError::output(PLANT_FILE, e))?;
+    let parsed = PlantParams::from_toml(&text).map_err(|e| DesignError::output(PLANT_FILE, e))?;
+    // A plant whose model a board refuses is not written: hil-sim would
+    // refuse it, and a board set to it would fly another plant's model.
+    checked_controller_model(&parsed).map_err(|e| DesignError::output(PLANT_FILE, e))?;
     Ok(text)
 }
 
@@ -158,5 +163,39 @@ mod tests {
             assert_eq!(ParamId::from_name(name), Some(v.id), "{set}");
             assert_eq!(value.parse::<f32>().unwrap(), v.value, "{set}");
         }
+    }
+
+    /// The designed vehicle's plant is written only if a board can fly its
+    /// model: a wing of 1 kg m^2 (the device's inertia goes to 0.01) is an
+    /// error naming the parameter, not a `plant.toml` that hil-sim
+    /// refuses.
+    #[test]
+    fn a_plant_the_device_cannot_model_is_not_written() {
+        // A fixed spring, so that the file's own check (the tuned spring
+        // of so heavy a wing is beyond the device's 10 N m/rad) does not
+        // answer first.
+        let mut actuator = crate::config::ActuatorConfig::default();
+        actuator.spring = crate::config::actuator::SpringChoice::Fixed;
+        actuator.spring_nm_per_rad = 0.45;
+        let mut vehicle = Vehicle {
+            wing_mass_kg: 0.0103,
+            wing_inertia_kg_m2: 6.737e-5,
+            aero_damping_nms2: 2.25e-5,
+            aero_source: crate::vehicle::AeroSource::QuasiSteady {
+                drag_coefficient: 3.0,
+            },
+            span_m: 0.15,
+            root_chord_m: 0.075,
+            tip_chord_m: 0.0375,
+            air_density_kg_m3: 1.225,
+            actuator: actuator.actuator(),
+        };
+        plant_toml(&vehicle, 11.0, "test").unwrap();
+        vehicle.wing_inertia_kg_m2 = 1.0;
+        let e = plant_toml(&vehicle, 11.0, "test").unwrap_err().to_string();
+        assert!(
+            e.contains("plant.toml") && e.contains("wing_inertia = 1.0000284 kg m^2"),
+            "{e}"
+        );
     }
 }
