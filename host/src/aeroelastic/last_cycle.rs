@@ -2,7 +2,8 @@
 //! beyond the cycle means: the tip's deflection amplitude, the drive's mean
 //! power, the coupling effort, and why its numbers may not be trusted
 //! ([`Doubt`]). Methods on [`SystemResult`], used by `fwav
-//! system-analysis` and by the MDOIS records alike.
+//! system-analysis` and by the MDOIS records alike, and the same as
+//! functions of an analysis's steps, for a record read back.
 //!
 //! May import: [`super::analysis`], [`super::kinematics`] and
 //! [`crate::periodicity`].
@@ -61,59 +62,27 @@ impl SystemResult {
     /// The steps of the last cycle of `steps_per_cycle` steps (all of them
     /// if fewer were taken).
     pub fn last_cycle(&self, steps_per_cycle: usize) -> &[StepRecord] {
-        &self.steps[self.steps.len().saturating_sub(steps_per_cycle)..]
+        last_cycle(&self.steps, steps_per_cycle)
     }
 
     /// Half of the tip's peak-to-peak flapwise deflection over the last
     /// cycle, m (0 without steps).
     pub fn tip_deflection_amplitude_m(&self, steps_per_cycle: usize) -> f64 {
-        let last = self.last_cycle(steps_per_cycle);
-        if last.is_empty() {
-            return 0.0;
-        }
-        let (low, high) = last
-            .iter()
-            .map(|s| s.tip_displacement_m[2])
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), z| {
-                (l.min(z), h.max(z))
-            });
-        0.5 * (high - low)
+        tip_deflection_amplitude_m(&self.steps, steps_per_cycle)
     }
 
     /// The change of the mean CT from the cycle before the last to the
     /// last, relative to the larger of the last cycle's mean CT and its CT
     /// swing; `None` with fewer than two cycles of `steps_per_cycle`.
     pub fn ct_change_of_swing(&self, steps_per_cycle: usize) -> Option<f64> {
-        let n = steps_per_cycle;
-        let total = self.steps.len();
-        if n == 0 || total < 2 * n {
-            return None;
-        }
-        let ct = |cycle: &[StepRecord]| cycle.iter().map(|s| s.ct).collect::<Vec<f64>>();
-        let mean = |values: &[f64]| values.iter().sum::<f64>() / n as f64;
-        let last = ct(&self.steps[total - n..]);
-        let previous = ct(&self.steps[total - 2 * n..total - n]);
-        Some(change_of_swing(mean(&last), mean(&previous), &last))
+        ct_change_of_swing(&self.steps, steps_per_cycle)
     }
 
     /// Why this result's numbers are not to be trusted, if at all: an
     /// analysis of `cycles` cycles of `steps_per_cycle` steps, of a wing
     /// of `semi_span_m`.
     pub fn doubts(&self, steps_per_cycle: usize, cycles: usize, semi_span_m: f64) -> Vec<Doubt> {
-        let mut doubts = Vec::new();
-        if let Some(change) = self.ct_change_of_swing(steps_per_cycle) {
-            if change > PERIODIC_CHANGE || change.is_nan() {
-                doubts.push(Doubt::NotPeriodic { change, cycles });
-            }
-        }
-        let amplitude_m = self.tip_deflection_amplitude_m(steps_per_cycle);
-        if amplitude_m >= semi_span_m || amplitude_m.is_nan() {
-            doubts.push(Doubt::TipBeyondSpan {
-                amplitude_m,
-                semi_span_m,
-            });
-        }
-        doubts
+        doubts(&self.steps, steps_per_cycle, cycles, semi_span_m)
     }
 
     /// Mean power the drive puts in over the last cycle (drive torque
@@ -139,4 +108,64 @@ impl SystemResult {
             max: steps.iter().map(|s| s.subiterations).max().unwrap_or(0),
         }
     }
+}
+
+/// The steps of the last cycle of `steps_per_cycle` steps (all of them if
+/// fewer were taken).
+fn last_cycle(steps: &[StepRecord], steps_per_cycle: usize) -> &[StepRecord] {
+    &steps[steps.len().saturating_sub(steps_per_cycle)..]
+}
+
+/// [`SystemResult::tip_deflection_amplitude_m`] of an analysis's `steps`
+/// (a result's, or a design record's read back).
+pub fn tip_deflection_amplitude_m(steps: &[StepRecord], steps_per_cycle: usize) -> f64 {
+    let last = last_cycle(steps, steps_per_cycle);
+    if last.is_empty() {
+        return 0.0;
+    }
+    let (low, high) = last
+        .iter()
+        .map(|s| s.tip_displacement_m[2])
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), z| {
+            (l.min(z), h.max(z))
+        });
+    0.5 * (high - low)
+}
+
+/// [`SystemResult::ct_change_of_swing`] of an analysis's `steps`.
+pub fn ct_change_of_swing(steps: &[StepRecord], steps_per_cycle: usize) -> Option<f64> {
+    let n = steps_per_cycle;
+    let total = steps.len();
+    if n == 0 || total < 2 * n {
+        return None;
+    }
+    let ct = |cycle: &[StepRecord]| cycle.iter().map(|s| s.ct).collect::<Vec<f64>>();
+    let mean = |values: &[f64]| values.iter().sum::<f64>() / n as f64;
+    let last = ct(&steps[total - n..]);
+    let previous = ct(&steps[total - 2 * n..total - n]);
+    Some(change_of_swing(mean(&last), mean(&previous), &last))
+}
+
+/// [`SystemResult::doubts`] of an analysis's `steps`: a design resumed
+/// from records asks them of its `system.json` as a new analysis is asked.
+pub fn doubts(
+    steps: &[StepRecord],
+    steps_per_cycle: usize,
+    cycles: usize,
+    semi_span_m: f64,
+) -> Vec<Doubt> {
+    let mut doubts = Vec::new();
+    if let Some(change) = ct_change_of_swing(steps, steps_per_cycle) {
+        if change > PERIODIC_CHANGE || change.is_nan() {
+            doubts.push(Doubt::NotPeriodic { change, cycles });
+        }
+    }
+    let amplitude_m = tip_deflection_amplitude_m(steps, steps_per_cycle);
+    if amplitude_m >= semi_span_m || amplitude_m.is_nan() {
+        doubts.push(Doubt::TipBeyondSpan {
+            amplitude_m,
+            semi_span_m,
+        });
+    }
+    doubts
 }

@@ -263,6 +263,7 @@ fn drive(
             let mut cycle = 1;
             loop {
                 if lock(&state).stage(cycle, Stage::System).is_some() {
+                    ctx.check_trusted(cycle)?;
                     ctx.reused(cycle, Stage::System);
                     reused += 1;
                 } else {

@@ -25,6 +25,7 @@ use std::time::Instant;
 
 use crate::aeroelastic::handoff::{self, SectionFile};
 use crate::aeroelastic::kinematics::FlappingKinematics;
+use crate::aeroelastic::last_cycle::Doubt;
 use crate::aeroelastic::{run, SystemResult, WingModel};
 use crate::config::SystemConfig;
 use crate::discipline::cache::EvaluationCache;
@@ -41,6 +42,7 @@ use super::error::DesignError;
 use super::output::files::write_cycle_wing;
 use super::plant::designed_vehicle;
 use super::progress::{Event, Progress};
+use super::records::system::load_system;
 use super::records::{
     self, cycle_dir, cycle_file, cycle_path, load_kinematics, load_topology, KinematicRecord,
     SystemRecord, TopologyRecord,
@@ -205,13 +207,18 @@ impl Context<'_> {
             analysis.cycles,
             self.config.wing.semi_span_m,
         );
-        match doubts.first() {
-            Some(&doubt) => Err(DesignError::Doubtful {
-                cycle: running.cycle,
-                doubt,
-            }),
-            None => Ok(result),
-        }
+        refuse_doubtful(running.cycle, &doubts)?;
+        Ok(result)
+    }
+
+    /// Refuses the reused system analysis of `cycle` (a resumed design's
+    /// `system.json`) for what a new one would be refused for
+    /// ([`Self::analyse`]): a record written before the doubts were asked
+    /// (2026-12-07) may hold one, and the disciplines would choose on it.
+    pub fn check_trusted(&self, cycle: usize) -> Result<(), DesignError> {
+        let record = load_system(&self.dir, cycle)?;
+        let doubts = record.doubts(self.config.analysis.cycles, self.config.wing.semi_span_m);
+        refuse_doubtful(cycle, &doubts)
     }
 
     /// The aerodynamic discipline of `cycle`, on the mid-span section of
@@ -401,5 +408,14 @@ impl Context<'_> {
             },
         )
         .map_err(|source| DesignError::Topology { cycle, source })
+    }
+}
+
+/// The first of a cycle's system analysis's `doubts` as the error that
+/// stops the design.
+fn refuse_doubtful(cycle: usize, doubts: &[Doubt]) -> Result<(), DesignError> {
+    match doubts.first() {
+        Some(&doubt) => Err(DesignError::Doubtful { cycle, doubt }),
+        None => Ok(()),
     }
 }

@@ -6,6 +6,7 @@
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
+use fwav::aeroelastic::last_cycle::Doubt;
 use fwav::config::SystemConfig;
 use fwav::file_format::{FormatError, ReadError};
 use fwav::mdois::state::RunState;
@@ -561,6 +562,46 @@ fn a_system_analysis_beyond_the_wing_stops_the_design() {
     assert!(
         text.contains("cycle 1, system analysis: the result is not periodic")
             && text.contains("the design stops rather than choose on this analysis"),
+        "{text}"
+    );
+    assert!(!dir.join("cycle-1/kinematics.json").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A resumed design asks its reused system analyses what it asks a new
+/// one: a `system.json` that holds a doubt (one written before the doubts
+/// were asked, 2026-12-07; made here by scaling a coarse run's tip
+/// deflection past the span) stops the resume before the disciplines,
+/// where it used to hand that analysis to them.
+#[test]
+fn a_resumed_design_stops_at_a_reused_analysis_it_cannot_trust() {
+    let dir = temp("resumed-doubt");
+    let one = RunOptions {
+        stage_limit: Some(1),
+    };
+    let first = start(&coarse(), &dir, &one, &|_| {}).unwrap();
+    assert_eq!((first.outcome, first.stages_computed), (None, 1));
+    let path = dir.join("cycle-1/system.json");
+    let mut record = json(&path);
+    for step in record["steps"].as_array_mut().unwrap() {
+        let z = &mut step["tip_displacement_m"][2];
+        *z = serde_json::json!(z.as_f64().unwrap() * 1e4);
+    }
+    std::fs::write(&path, serde_json::to_string(&record).unwrap()).unwrap();
+    let error = resume(&dir, None, &one, &|_| {}).unwrap_err();
+    let text = error.to_string();
+    assert!(
+        matches!(
+            error,
+            DesignError::Doubtful {
+                cycle: 1,
+                doubt: Doubt::TipBeyondSpan { .. }
+            }
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("farther than a wing that does not stretch"),
         "{text}"
     );
     assert!(!dir.join("cycle-1/kinematics.json").exists());
