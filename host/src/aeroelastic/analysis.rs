@@ -176,7 +176,8 @@ pub struct CycleMeans {
     /// Propulsive efficiency `CT / CP`.
     pub efficiency: f64,
     /// Change of the mean CT from the cycle before the last to the last,
-    /// relative (how periodic the answer is; 0 with one cycle).
+    /// relative (how periodic the answer is; an analysis has two cycles
+    /// at least).
     pub ct_change_last_two_cycles: f64,
 }
 
@@ -717,8 +718,10 @@ fn aerodynamic_moment(surface: &Lattice, solution: &Solution) -> Vector3<f64> {
 
 fn check(s: &SystemSettings, flight: &FlightCondition) -> Result<(), SystemError> {
     let bad = |field: &'static str, message: String| Err(SystemError::Setting { field, message });
-    if s.cycles == 0 || s.cycles > 100 {
-        return bad("cycles", format!("{} is outside 1..=100", s.cycles));
+    // Two at least: the last is reported and compared with the one before
+    // (`CycleMeans::ct_change_last_two_cycles`, `Doubt::NotPeriodic`).
+    if !(2..=100).contains(&s.cycles) {
+        return bad("cycles", format!("{} is outside 2..=100", s.cycles));
     }
     if !(8..=2000).contains(&s.steps_per_cycle) {
         return bad(

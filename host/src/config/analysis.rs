@@ -15,8 +15,8 @@ pub const ANALYSIS: Table<SystemSettings> = Table {
         Setting {
             key: "cycles",
             unit: "",
-            allowed: Allowed::Integer(Integers::between(1, 100)),
-            doc: "Flapping cycles simulated (the last one is reported)",
+            allowed: Allowed::Integer(Integers::between(2, 100)),
+            doc: "Flapping cycles simulated (the last one is reported, and compared with the one before: whether the answer is periodic)",
             value: |a| Value::unsigned(a.cycles),
         },
         Setting {

@@ -480,6 +480,9 @@ fn configuration_errors_name_the_field() {
             "analysis.steps_per_cycle",
             "8..=2000",
         ),
+        // One cycle has no cycle before it to be compared with: its
+        // periodicity was printed as "+0.00%" (until 2026-12-07).
+        ("[analysis]\ncycles = 1\n", "analysis.cycles", "2..=100"),
         (
             "[topology]\nthreshold = 2.0\n",
             "topology.threshold",
