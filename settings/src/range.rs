@@ -37,6 +37,14 @@ impl Interval {
         }
     }
 
+    /// `(low, high)`.
+    pub const fn open(low: f64, high: f64) -> Self {
+        Self {
+            low: Bound::Open(low),
+            high: Bound::Open(high),
+        }
+    }
+
     /// `(low, high]`.
     pub const fn above_up_to(low: f64, high: f64) -> Self {
         Self {
@@ -227,6 +235,9 @@ mod tests {
         assert!(!Interval::finite().contains(f64::INFINITY));
         assert!(!Interval::at_least(0.0).contains(f64::NEG_INFINITY));
         assert!(Interval::finite().contains(-1e300));
+        let open = Interval::open(0.0, 180.0);
+        assert_eq!(open.to_string(), "(0, 180)");
+        assert!(!open.contains(0.0) && !open.contains(180.0) && open.contains(179.999));
     }
 
     #[test]

@@ -149,7 +149,7 @@ impl FlappingKinematics {
     /// mean angle within ±60°, stroke plane in [0, 180°].
     pub fn validate(&self) -> Result<(), KinematicsError> {
         let deg = std::f64::consts::PI / 180.0;
-        let checks: [(&'static str, f64, f64, f64, &'static str); 4] = [
+        let checks: [(&'static str, f64, f64, f64, &'static str); 3] = [
             ("frequency", self.frequency, 1e-9, 200.0, "(0, 200] Hz"),
             ("amplitude", self.amplitude, 0.0, 80.0 * deg, "[0, 80] deg"),
             (
@@ -158,13 +158,6 @@ impl FlappingKinematics {
                 -60.0 * deg,
                 60.0 * deg,
                 "[-60, 60] deg",
-            ),
-            (
-                "stroke_plane",
-                self.stroke_plane,
-                0.0,
-                180.0 * deg,
-                "[0, 180] deg",
             ),
         ];
         for (field, value, low, high, range) in checks {
@@ -180,6 +173,15 @@ impl FlappingKinematics {
                     range,
                 });
             }
+        }
+        // Open: at 0 or 180 deg the wing sweeps in its own plane, moves no
+        // air and has no thrust, power or efficiency.
+        if !(self.stroke_plane > 0.0 && self.stroke_plane < std::f64::consts::PI) {
+            return Err(KinematicsError::OutOfRange {
+                field: "stroke_plane",
+                value: self.stroke_plane.to_degrees(),
+                range: "(0, 180) deg",
+            });
         }
         Ok(())
     }
@@ -369,5 +371,25 @@ mod tests {
             })
         ));
         assert!(FlappingKinematics::INITIAL.validate().is_ok());
+        // A stroke plane of 0 or 180 deg sweeps the wing in its own plane:
+        // no thrust, no power, no efficiency (the design's 2D run then
+        // failed as "diverged (non-finite net efficiency)").
+        for degrees in [0.0, 180.0, f64::NAN] {
+            let flat = FlappingKinematics {
+                stroke_plane: f64::to_radians(degrees),
+                ..FlappingKinematics::INITIAL
+            };
+            assert!(
+                matches!(
+                    flat.validate(),
+                    Err(KinematicsError::OutOfRange {
+                        field: "stroke_plane",
+                        range: "(0, 180) deg",
+                        ..
+                    })
+                ),
+                "{degrees}"
+            );
+        }
     }
 }

@@ -114,7 +114,8 @@ pub const DESIGN: Table<DesignConfig> = Table {
         Setting {
             key: "stroke_plane_deg",
             unit: "deg",
-            allowed: Allowed::Increasing(Interval::closed(0.0, 180.0)),
+            // Open, as the kinematics' own stroke plane.
+            allowed: Allowed::Increasing(Interval::open(0.0, 180.0)),
             doc: "Stroke-plane levels",
             value: |d| Value::Reals(d.space.stroke_plane_deg.to_vec()),
         },

@@ -38,8 +38,10 @@ pub const KINEMATICS: Table<FlappingKinematics> = Table {
         Setting {
             key: "stroke_plane_deg",
             unit: "deg",
-            allowed: Allowed::Real(Interval::closed(0.0, 180.0)),
-            doc: "Stroke-plane inclination (90: flapping across the flight direction)",
+            // Open: at 0 or 180 deg the wing sweeps in its own plane,
+            // moves no air, and has no thrust, power or efficiency.
+            allowed: Allowed::Real(Interval::open(0.0, 180.0)),
+            doc: "Stroke-plane inclination (90: flapping across the flight direction; at 0 or 180 the wing would sweep in its own plane)",
             value: |k| Value::Real(k.stroke_plane_deg()),
         },
     ],

@@ -483,6 +483,18 @@ fn configuration_errors_name_the_field() {
         // One cycle has no cycle before it to be compared with: its
         // periodicity was printed as "+0.00%" (until 2026-12-07).
         ("[analysis]\ncycles = 1\n", "analysis.cycles", "2..=100"),
+        // At 0 or 180 deg the wing sweeps in its own plane: the design's
+        // 2D run failed as "diverged (non-finite net efficiency)".
+        (
+            "[kinematics]\nstroke_plane_deg = 0.0\n",
+            "kinematics.stroke_plane_deg",
+            "(0, 180) deg",
+        ),
+        (
+            "[design]\nstroke_plane_deg = [90.0, 135.0, 180.0]\n",
+            "design.stroke_plane_deg",
+            "(0, 180) deg",
+        ),
         (
             "[topology]\nthreshold = 2.0\n",
             "topology.threshold",
