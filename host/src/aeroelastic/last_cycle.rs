@@ -8,7 +8,9 @@
 //! May import: [`super::analysis`], [`super::kinematics`] and
 //! [`crate::periodicity`].
 
-use super::analysis::{StepRecord, SystemResult};
+use fwav_settings::Shown;
+
+use super::analysis::{StepRecord, SystemResult, SystemSettings};
 use super::kinematics::FlappingKinematics;
 use crate::periodicity::{change_of_swing, PERIODIC_CHANGE};
 
@@ -30,6 +32,29 @@ pub enum Doubt {
         change: f64,
         /// The cycles simulated.
         cycles: usize,
+    },
+    /// The coupling stopped at its cap of sub-iterations with the
+    /// interface residual above its tolerance in some steps: there the
+    /// lattice and the shell were not solved together, and what followed
+    /// started from that mismatch.
+    #[error(
+        "the coupling did not converge in {steps} of the {total} steps: it stopped at its \
+         {cap} sub-iterations with the interface residual up to {:.3} (tolerance {}); raise \
+         [analysis] max_subiterations, or take more steps a cycle ([analysis] steps_per_cycle)",
+        Shown(*worst_residual),
+        Shown(*tolerance)
+    )]
+    CouplingNotConverged {
+        /// The steps whose final residual is above the tolerance.
+        steps: usize,
+        /// The steps taken.
+        total: usize,
+        /// The largest final residual.
+        worst_residual: f64,
+        /// The coupling tolerance.
+        tolerance: f64,
+        /// The sub-iterations allowed a step.
+        cap: usize,
     },
     /// The tip's flapwise deflection amplitude is larger than the
     /// semi-span: no wing that does not stretch reaches that far from its
@@ -79,10 +104,9 @@ impl SystemResult {
     }
 
     /// Why this result's numbers are not to be trusted, if at all: an
-    /// analysis of `cycles` cycles of `steps_per_cycle` steps, of a wing
-    /// of `semi_span_m`.
-    pub fn doubts(&self, steps_per_cycle: usize, cycles: usize, semi_span_m: f64) -> Vec<Doubt> {
-        doubts(&self.steps, steps_per_cycle, cycles, semi_span_m)
+    /// analysis with `settings`, of a wing of `semi_span_m`.
+    pub fn doubts(&self, settings: &SystemSettings, semi_span_m: f64) -> Vec<Doubt> {
+        doubts(&self.steps, settings, semi_span_m)
     }
 
     /// Mean power the drive puts in over the last cycle (drive torque
@@ -148,17 +172,31 @@ pub fn ct_change_of_swing(steps: &[StepRecord], steps_per_cycle: usize) -> Optio
 
 /// [`SystemResult::doubts`] of an analysis's `steps`: a design resumed
 /// from records asks them of its `system.json` as a new analysis is asked.
-pub fn doubts(
-    steps: &[StepRecord],
-    steps_per_cycle: usize,
-    cycles: usize,
-    semi_span_m: f64,
-) -> Vec<Doubt> {
+pub fn doubts(steps: &[StepRecord], settings: &SystemSettings, semi_span_m: f64) -> Vec<Doubt> {
+    let steps_per_cycle = settings.steps_per_cycle;
     let mut doubts = Vec::new();
     if let Some(change) = ct_change_of_swing(steps, steps_per_cycle) {
         if change > PERIODIC_CHANGE || change.is_nan() {
-            doubts.push(Doubt::NotPeriodic { change, cycles });
+            doubts.push(Doubt::NotPeriodic {
+                change,
+                cycles: settings.cycles,
+            });
         }
+    }
+    // A rigid wing has no coupling (one pass a step, residual 0).
+    let unconverged: Vec<f64> = steps
+        .iter()
+        .map(|s| s.residual)
+        .filter(|r| r.is_nan() || *r > settings.coupling_tolerance)
+        .collect();
+    if !unconverged.is_empty() {
+        doubts.push(Doubt::CouplingNotConverged {
+            steps: unconverged.len(),
+            total: steps.len(),
+            worst_residual: unconverged.iter().copied().fold(f64::NAN, f64::max),
+            tolerance: settings.coupling_tolerance,
+            cap: settings.max_subiterations,
+        });
     }
     let amplitude_m = tip_deflection_amplitude_m(steps, steps_per_cycle);
     if amplitude_m >= semi_span_m || amplitude_m.is_nan() {

@@ -94,11 +94,7 @@ pub fn run_command(a: &SystemArgs) -> Result<()> {
     let tip_amplitude = result.tip_deflection_amplitude_m(steps_per_cycle);
     let drive_power = result.mean_drive_power_w(&config.kinematics(), steps_per_cycle);
     let doubts: Vec<String> = result
-        .doubts(
-            steps_per_cycle,
-            config.analysis.cycles,
-            config.wing.semi_span_m,
-        )
+        .doubts(&config.analysis, config.wing.semi_span_m)
         .iter()
         .map(ToString::to_string)
         .collect();

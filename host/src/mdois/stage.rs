@@ -202,11 +202,7 @@ impl Context<'_> {
             cycle: running.cycle,
             source,
         })?;
-        let doubts = result.doubts(
-            analysis.steps_per_cycle,
-            analysis.cycles,
-            self.config.wing.semi_span_m,
-        );
+        let doubts = result.doubts(analysis, self.config.wing.semi_span_m);
         refuse_doubtful(running.cycle, &doubts)?;
         Ok(result)
     }
@@ -217,7 +213,7 @@ impl Context<'_> {
     /// (2026-12-07) may hold one, and the disciplines would choose on it.
     pub fn check_trusted(&self, cycle: usize) -> Result<(), DesignError> {
         let record = load_system(&self.dir, cycle)?;
-        let doubts = record.doubts(self.config.analysis.cycles, self.config.wing.semi_span_m);
+        let doubts = record.doubts(&self.config.analysis, self.config.wing.semi_span_m);
         refuse_doubtful(cycle, &doubts)
     }
 

@@ -27,7 +27,7 @@ impl ObjectiveReference {
     /// not positive (the efficiency's sign is then not the thrust's), else
     /// [`KinematicError::NoNetThrust`].
     pub fn of(result: &SectionResult) -> Result<Self, KinematicError> {
-        if !(result.cp > 0.0) {
+        if result.cp.is_nan() || result.cp <= 0.0 {
             return Err(KinematicError::NoInputPower {
                 cp: result.cp,
                 reduced_frequency: result.reduced_frequency,

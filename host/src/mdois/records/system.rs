@@ -6,6 +6,7 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
+use crate::aeroelastic::analysis::SystemSettings;
 use crate::aeroelastic::last_cycle::{self, Doubt};
 use crate::aeroelastic::{CycleMeans, StepRecord, SystemResult};
 use crate::file_format::{FileFormat, FormatError};
@@ -73,9 +74,14 @@ impl SystemRecord {
 
     /// Why this analysis's numbers are not to be trusted, if at all
     /// ([`SystemResult::doubts`], asked of the steps read back), for a wing
-    /// of `semi_span_m` analysed over `cycles` cycles.
-    pub fn doubts(&self, cycles: usize, semi_span_m: f64) -> Vec<Doubt> {
-        last_cycle::doubts(&self.steps, self.steps_per_cycle, cycles, semi_span_m)
+    /// of `semi_span_m` analysed with `settings` (the record's own steps a
+    /// cycle).
+    pub fn doubts(&self, settings: &SystemSettings, semi_span_m: f64) -> Vec<Doubt> {
+        let settings = SystemSettings {
+            steps_per_cycle: self.steps_per_cycle,
+            ..*settings
+        };
+        last_cycle::doubts(&self.steps, &settings, semi_span_m)
     }
 
     /// The file's text.
