@@ -329,6 +329,16 @@ fn print_summary(s: &Summary, dir: &Path) {
             ));
         }
         println!("{line}");
+        // A structural layout taken at ESLSO's cycle cap is said, not
+        // silent (the report marks it "(cap)").
+        if let Some(t) = c.structural.as_ref().filter(|t| !t.eslso_converged) {
+            println!(
+                "  structural discipline: ESLSO NOT converged: the layout still changed after \
+                 {} cycle{}, its cap ([topology] max_cycles); the layout is the last one's",
+                t.eslso_cycles,
+                if t.eslso_cycles == 1 { "" } else { "s" }
+            );
+        }
         // What the 2D model left out is said, not silent.
         if let Some(m) = c.aerodynamic.as_ref().and_then(|a| a.section.as_ref()) {
             if m.deformation_given && !m.deformation_modelled {

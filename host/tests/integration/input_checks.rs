@@ -546,6 +546,44 @@ fn topology_of_a_pressure_beyond_any_wing_is_an_error_not_a_layout() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// A structural layout taken at ESLSO's cycle cap is said in the design's
+/// summary, as `fwav topology` and the report already said it: the design
+/// printed its cycles as if each discipline had converged. (The coarse
+/// design's ESLSO converges in 2 cycles; a cap of 1 stops it.)
+#[test]
+fn a_layout_taken_at_the_eslso_cap_is_said() {
+    let dir = scratch("eslso-cap");
+    let coarse = std::fs::read_to_string(COARSE).unwrap();
+    let path = dir.join("capped.toml");
+    let (topology, mdois) = (
+        "max_cycles = 4\nsimp_iterations",
+        "[mdois]\nmax_cycles = 4\n",
+    );
+    assert!(coarse.contains(topology) && coarse.contains(mdois));
+    let capped = coarse
+        .replacen(topology, "max_cycles = 1\nsimp_iterations", 1)
+        .replacen(mdois, "[mdois]\nmax_cycles = 1\n", 1);
+    std::fs::write(&path, capped).unwrap();
+    let out = fwav(&[
+        "design",
+        "--quiet",
+        "--config",
+        path.to_str().unwrap(),
+        "--out",
+        dir.join("design").to_str().unwrap(),
+    ]);
+    let stdout = text(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{stdout}{}", text(&out.stderr));
+    assert!(
+        stdout.contains(
+            "structural discipline: ESLSO NOT converged: the layout still changed after 1 cycle, \
+             its cap ([topology] max_cycles)"
+        ),
+        "{stdout}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 /// A system analysis whose coupling stopped at its cap of sub-iterations
 /// is marked: `[analysis] max_subiterations = 1` left the coarse wing's
 /// interface residual at 8.4 (836 %, against a tolerance of 1e-6) in every
