@@ -79,6 +79,12 @@ struct CacheFile {
 
 const FORMAT: &str = "fwav-evaluations-2";
 
+/// The `format` key of any of the program's JSON files, the rest ignored.
+#[derive(Deserialize)]
+struct Kind {
+    format: Option<String>,
+}
+
 impl EvaluationCache {
     /// An empty cache.
     pub fn new() -> Self {
@@ -206,6 +212,23 @@ fn read_entries(path: &Path) -> Result<HashMap<String, SectionResult>, CacheErro
             })
         }
     };
+    // The kind of file first: another of the program's files (a
+    // `system.json` given as the cache) is named as what it is, not by
+    // the key of a cache it lacks.
+    if let Ok(Kind {
+        format: Some(format),
+    }) = serde_json::from_str::<Kind>(&text)
+    {
+        if format != FORMAT && !format.starts_with("fwav-evaluations") {
+            return Err(CacheError::Format {
+                path: path.display().to_string(),
+                message: format!(
+                    "a {format:?} file, not an evaluation cache ({FORMAT:?}): give another \
+                     file name, or a missing one to start a new cache"
+                ),
+            });
+        }
+    }
     let file: CacheFile = serde_json::from_str(&text).map_err(|e| CacheError::Format {
         path: path.display().to_string(),
         message: e.to_string(),
@@ -417,6 +440,31 @@ mod tests {
         let e = kept.save(&path).unwrap_err();
         assert!(matches!(e, CacheError::Format { .. }), "{e:?}");
         assert!(e.to_string().contains("evaluations.json"), "{e}");
+        std::fs::remove_dir_all(&dir).ok();
+    }
+
+    /// Another of the program's files given as the cache is named as what
+    /// it is: a `system.json` was refused for a "missing field `entries`
+    /// at line 1 column 16443".
+    #[test]
+    fn another_kind_of_file_is_named_as_what_it_is() {
+        let dir = scratch("other-kind");
+        let path = dir.join("system.json");
+        std::fs::write(
+            &path,
+            r#"{"format":"fwav-system-analysis","format_version":1}"#,
+        )
+        .unwrap();
+        let e = EvaluationCache::load(&path).unwrap_err();
+        assert!(
+            e.to_string().contains(
+                "a \"fwav-system-analysis\" file, not an evaluation cache (\"fwav-evaluations-2\")"
+            ),
+            "{e}"
+        );
+        std::fs::write(&path, r#"{"format":"fwav-evaluations-1","entries":{}}"#).unwrap();
+        let e = EvaluationCache::load(&path).unwrap_err();
+        assert!(e.to_string().contains("an older version"), "{e}");
         std::fs::remove_dir_all(&dir).ok();
     }
 
