@@ -186,9 +186,10 @@ impl PlantParams {
 
 /// The range of a plant value that the flight controller's model takes as
 /// it is ([`crate::controller_model`]): its parameter's, as the device
-/// declares it. A plant file the check allows is then one a board (or
-/// hil-sim's) can be set to fly; the values the model combines (the
-/// inertia, the damping) are checked by
+/// declares it. A plant file the check allows then has values a board
+/// (or hil-sim's) can be set to; the values the model combines (the
+/// inertia, the damping) and the spring (tuned to a demand, it is
+/// computed) are checked by
 /// [`crate::controller_model::checked_controller_model`]. The design's
 /// `[actuator]` table, the same vehicle, takes these ranges too.
 pub const fn device_range(id: ParamId) -> Interval {
@@ -309,8 +310,13 @@ pub const TRANSMISSION: Table<Transmission> = Table {
         Setting::real(
             "spring_nm_per_rad",
             "N m/rad",
-            device_range(ParamId::SpringStiffness),
-            "Torsional spring about the flapping axis (the flight controller's spring_stiffness: its range)",
+            // Not the device's range (0 to 10): a spring tuned to the
+            // demand (k = J omega^2) passes 10 N m/rad at 51 Hz on the
+            // designed vehicle, and the feasibility check validates the
+            // plant it tunes; a board's model is checked apart
+            // (`checked_controller_model`).
+            Interval::at_least(0.0),
+            "Torsional spring about the flapping axis",
             |t| Value::Real(t.spring_nm_per_rad),
         ),
     ],

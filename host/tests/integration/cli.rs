@@ -658,7 +658,9 @@ fn actuator_prints_margins_limiting_and_verdict() {
         assert!(stdout.contains(line), "{line}: {stdout}");
     }
 
-    std::fs::write(&config, "[actuator]\ngear_ratio = -1\n").unwrap();
+    // A gear ratio below the flight controller's least (1): the file's
+    // range is the device's since 2026-12-07 ((0, inf) before).
+    std::fs::write(&config, "[actuator]\ngear_ratio = 0.5\n").unwrap();
     let out = fwav(&[
         "actuator",
         "--config",
@@ -671,7 +673,7 @@ fn actuator_prints_margins_limiting_and_verdict() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(!out.status.success());
     assert!(
-        stderr.contains("actuator.gear_ratio = -1 is outside (0, inf)"),
+        stderr.contains("actuator.gear_ratio = 0.5 is outside [1, 1000]"),
         "{stderr}"
     );
     std::fs::remove_dir_all(&dir).ok();
