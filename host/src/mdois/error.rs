@@ -3,6 +3,9 @@
 
 use std::path::PathBuf;
 
+use fwav_actuator::controller_model::BeyondDevice;
+use fwav_settings::Shown;
+
 use crate::aeroelastic::handoff::HandoffError;
 use crate::aeroelastic::last_cycle::Doubt;
 use crate::aeroelastic::SystemError;
@@ -196,6 +199,21 @@ pub enum DesignError {
         /// Why the result is not to be trusted.
         doubt: Doubt,
     },
+    /// A resumed design's reused system analysis (its `system.json`,
+    /// written before the doubts were asked of it) is not to be trusted.
+    /// The configuration of a run cannot change on a resume, so the
+    /// doubt's own levers are for a new run.
+    #[error(
+        "cycle {cycle}, system analysis (cycle-{cycle}/system.json, reused on this resume): \
+         {doubt}; the design stops rather than choose on this analysis: start the design again \
+         in a new --out directory, with the configuration changed as said"
+    )]
+    DoubtfulRecord {
+        /// The design cycle.
+        cycle: usize,
+        /// Why the result is not to be trusted.
+        doubt: Doubt,
+    },
     /// The aerodynamic discipline failed.
     #[error("cycle {cycle}, aerodynamic discipline: {source}")]
     Kinematics {
@@ -280,6 +298,27 @@ pub enum DesignError {
         margin_percent: f64,
         /// The reserve asked of every margin, percent.
         reserve_percent: f64,
+    },
+    /// The flight controller cannot be set to the initial vehicle's
+    /// model (judged after the first system analysis, on its wing and
+    /// damping): a board would feed forward another plant than this one.
+    #[error(
+        "cycle {cycle}: the designed vehicle gives the flight controller's {} = {} {}, outside \
+         the device's {}..={} {}: a board cannot be set to this vehicle's model; change the \
+         [actuator] (rotor_inertia_kg_m2, gear_ratio, the spring) or the [wing], or fly \
+         gentler initial kinematics ([kinematics])",
+        .source.id.info().name,
+        Shown(.source.value),
+        .source.id.info().unit,
+        Shown(.source.id.info().bounds[0]),
+        Shown(.source.id.info().bounds[1]),
+        .source.id.info().unit
+    )]
+    BeyondDevice {
+        /// The design cycle.
+        cycle: usize,
+        /// The model parameter and the value the vehicle gives it.
+        source: BeyondDevice,
     },
     /// A discipline's thread panicked (a bug).
     #[error("cycle {cycle}, {stage}: the stage panicked")]

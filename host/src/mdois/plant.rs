@@ -7,9 +7,9 @@
 //! the analysed kinematics, [`crate::vehicle::aero_damping`]); the
 //! actuator is the design file's `[actuator]`, its spring (when tuned)
 //! tuned to the frequency `kinematics.json` flies. The file is checked to
-//! parse back ([`PlantParams::from_toml`]), and its controller model to be
-//! one the device takes ([`checked_controller_model`]), before it is
-//! written.
+//! parse back ([`PlantParams::from_toml`]) before it is written; a plant
+//! whose controller model the device refuses ([`checked_controller_model`])
+//! says so at its head.
 
 use std::path::{Path, PathBuf};
 
@@ -93,7 +93,16 @@ pub fn plant_toml(
     let plant = vehicle.plant(frequency_hz);
     let body = toml::to_string(&plant).map_err(|e| DesignError::output(PLANT_FILE, e))?;
     let mut text = String::new();
-    let note = controller_params_note(&plant);
+    // A model a board cannot be set to is said at the head of the file
+    // (hil-sim refuses it naming the key): the design's results are
+    // written already, and the run is not lost for it. The initial
+    // vehicle's model is checked after the first analysis
+    // (`Context::check_flyable`); a later cycle's (another layout, a
+    // spring tuned to another frequency) may still leave the range.
+    let note = match checked_controller_model(&plant) {
+        Ok(_) => controller_params_note(&plant),
+        Err(beyond) => format!("NOT FLYABLE by the flight controller as it is: {beyond}"),
+    };
     for line in header.lines().chain(note.lines()) {
         text.push_str("# ");
         text.push_str(line);
@@ -101,10 +110,7 @@ pub fn plant_toml(
     }
     text.push('\n');
     text.push_str(&body);
-    let parsed = PlantParams::from_toml(&text).map_err(|e| DesignError::output(PLANT_FILE, e))?;
-    // A plant whose model a board refuses is not written: hil-sim would
-    // refuse it, and a board set to it would fly another plant's model.
-    checked_controller_model(&parsed).map_err(|e| DesignError::output(PLANT_FILE, e))?;
+    PlantParams::from_toml(&text).map_err(|e| DesignError::output(PLANT_FILE, e))?;
     Ok(text)
 }
 
@@ -165,15 +171,15 @@ mod tests {
         }
     }
 
-    /// The designed vehicle's plant is written only if a board can fly its
-    /// model: a wing of 1 kg m^2 (the device's inertia goes to 0.01) is an
-    /// error naming the parameter, not a `plant.toml` that hil-sim
-    /// refuses.
+    /// A designed vehicle whose model a board cannot be set to (a wing of
+    /// 1 kg m^2; the device's inertia goes to 0.01) is written with that
+    /// said at the file's head, in place of the `fwav fc params` line: the
+    /// design's results are written before it, and the run is not lost.
     #[test]
-    fn a_plant_the_device_cannot_model_is_not_written() {
-        // A fixed spring, so that the file's own check (the tuned spring
-        // of so heavy a wing is beyond the device's 10 N m/rad) does not
-        // answer first.
+    fn a_plant_the_device_cannot_model_says_so() {
+        // A fixed spring, so that the inertia is the model's one value
+        // beyond the device (tuned to so heavy a wing, the spring would be
+        // 4777 N m/rad, past the device's 10, too).
         let mut actuator = crate::config::ActuatorConfig::default();
         actuator.spring = crate::config::actuator::SpringChoice::Fixed;
         actuator.spring_nm_per_rad = 0.45;
@@ -190,12 +196,16 @@ mod tests {
             air_density_kg_m3: 1.225,
             actuator: actuator.actuator(),
         };
-        plant_toml(&vehicle, 11.0, "test").unwrap();
+        let flyable = plant_toml(&vehicle, 11.0, "test").unwrap();
+        assert!(flyable.contains("fwav fc params --set"), "{flyable}");
         vehicle.wing_inertia_kg_m2 = 1.0;
-        let e = plant_toml(&vehicle, 11.0, "test").unwrap_err().to_string();
+        let text = plant_toml(&vehicle, 11.0, "test").unwrap();
         assert!(
-            e.contains("plant.toml") && e.contains("wing_inertia = 1.0000284 kg m^2"),
-            "{e}"
+            text.contains(
+                "# NOT FLYABLE by the flight controller as it is: the plant gives the \
+                 controller's wing_inertia = 1.0000284 kg m^2"
+            ) && !text.contains("fwav fc params --set"),
+            "{text}"
         );
     }
 }

@@ -37,6 +37,7 @@ use crate::files::{write_atomic, Existing};
 use crate::optimize::nsga2::Nsga2Config;
 use crate::topology::eslso::{optimize_from, DesignProblem, EslsoProgress, EslsoResult};
 use crate::topology::pressure::PressureHistory;
+use fwav_actuator::controller_model::checked_controller_model;
 
 use super::error::DesignError;
 use super::output::files::write_cycle_wing;
@@ -214,7 +215,10 @@ impl Context<'_> {
     pub fn check_trusted(&self, cycle: usize) -> Result<(), DesignError> {
         let record = load_system(&self.dir, cycle)?;
         let doubts = record.doubts(&self.config.analysis, self.config.wing.semi_span_m);
-        refuse_doubtful(cycle, &doubts)
+        match doubts.first() {
+            Some(&doubt) => Err(DesignError::DoubtfulRecord { cycle, doubt }),
+            None => Ok(()),
+        }
     }
 
     /// The aerodynamic discipline of `cycle`, on the mid-span section of
@@ -248,8 +252,10 @@ impl Context<'_> {
         }
     }
 
-    /// Refuses to go on if the design of `cycle` (the initial design in
-    /// cycle 1) cannot be flown by the design's actuator with its
+    /// Refuses to go on if the flight controller cannot be set to the
+    /// vehicle's model ([`checked_controller_model`]), or if the design of
+    /// `cycle` (the initial design in cycle 1) cannot be flown by the
+    /// design's actuator with its
     /// reserve, judged on the vehicle of the cycle's system analysis (its
     /// wing's inertia and the damping calibrated on its drive work: the
     /// model the aerodynamic discipline judges its candidates on; the
@@ -259,6 +265,8 @@ impl Context<'_> {
         let design = self.design(cycle)?;
         let vehicle = designed_vehicle(&self.dir, &self.config, cycle, &design.densities)?;
         let demand = crate::vehicle::Vehicle::demand(&design.kinematics);
+        checked_controller_model(&vehicle.plant(demand.frequency_hz))
+            .map_err(|source| DesignError::BeyondDevice { cycle, source })?;
         let verdict = vehicle
             .check(&demand)
             .map_err(|source| DesignError::Vehicle { cycle, source })?;

@@ -608,7 +608,7 @@ fn a_resumed_design_stops_at_a_reused_analysis_it_cannot_trust() {
     assert!(
         matches!(
             error,
-            DesignError::Doubtful {
+            DesignError::DoubtfulRecord {
                 cycle: 1,
                 doubt: Doubt::TipBeyondSpan { .. }
             }
@@ -616,7 +616,36 @@ fn a_resumed_design_stops_at_a_reused_analysis_it_cannot_trust() {
         "{text}"
     );
     assert!(
-        text.contains("farther than a wing that does not stretch"),
+        text.contains("farther than a wing that does not stretch")
+            && text.contains("(cycle-1/system.json, reused on this resume)")
+            && text.contains("start the design again in a new --out directory"),
+        "{text}"
+    );
+    assert!(!dir.join("cycle-1/kinematics.json").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A design whose vehicle the flight controller cannot be set to stops
+/// after the first system analysis (the model takes that analysis's
+/// damping), naming the parameter and the design's keys: a rotor of 3e-5
+/// kg m^2 through the gear of 20 reflects 0.012 kg m^2 to the flapping
+/// axis, past the device's 0.01. Before, such a design ran to its end and
+/// wrote a `plant.toml` that hil-sim refuses.
+#[test]
+fn a_vehicle_the_controller_cannot_model_stops_the_design() {
+    let mut config = coarse();
+    config.actuator.rotor_inertia_kg_m2 = 3e-5;
+    let dir = temp("beyond-device");
+    let error = start(&config, &dir, &RunOptions::default(), &|_| {}).unwrap_err();
+    let text = error.to_string();
+    assert!(
+        matches!(error, DesignError::BeyondDevice { cycle: 1, .. }),
+        "{text}"
+    );
+    assert!(
+        text.contains("the flight controller's wing_inertia = ")
+            && text.contains("outside the device's 1e-9..=0.01 kg m^2")
+            && text.contains("rotor_inertia_kg_m2, gear_ratio"),
         "{text}"
     );
     assert!(!dir.join("cycle-1/kinematics.json").exists());
