@@ -34,20 +34,22 @@ pub enum Doubt {
         cycles: usize,
     },
     /// The coupling stopped at its cap of sub-iterations with the
-    /// interface residual above its tolerance in some steps: there the
-    /// lattice and the shell were not solved together, and what followed
-    /// started from that mismatch.
+    /// interface residual above its tolerance in some of the last cycle's
+    /// steps: there the lattice and the shell were not solved together.
     #[error(
-        "the coupling did not converge in {steps} of the {total} steps: it stopped at its \
-         {cap} sub-iterations with the interface residual up to {:.3} (tolerance {}); raise \
-         [analysis] max_subiterations, or take more steps a cycle ([analysis] steps_per_cycle)",
+        "the coupling did not converge in {steps} of the last cycle's {total} steps: it \
+         stopped at its cap of {cap} sub-iteration{} with the interface residual up to {:.3} \
+         (tolerance {}); raise [analysis] max_subiterations, or take more steps a cycle \
+         ([analysis] steps_per_cycle)",
+        if *cap == 1 { "" } else { "s" },
         Shown(*worst_residual),
         Shown(*tolerance)
     )]
     CouplingNotConverged {
-        /// The steps whose final residual is above the tolerance.
+        /// The last cycle's steps whose final residual is above the
+        /// tolerance.
         steps: usize,
-        /// The steps taken.
+        /// The last cycle's steps.
         total: usize,
         /// The largest final residual.
         worst_residual: f64,
@@ -183,8 +185,12 @@ pub fn doubts(steps: &[StepRecord], settings: &SystemSettings, semi_span_m: f64)
             });
         }
     }
-    // A rigid wing has no coupling (one pass a step, residual 0).
-    let unconverged: Vec<f64> = steps
+    // The last cycle's steps, whose numbers are reported, as the other
+    // doubts judge (a step of the start's transient at the cap is not
+    // held against the answer). A rigid wing has no coupling (one pass a
+    // step, residual 0).
+    let last = last_cycle(steps, steps_per_cycle);
+    let unconverged: Vec<f64> = last
         .iter()
         .map(|s| s.residual)
         .filter(|r| r.is_nan() || *r > settings.coupling_tolerance)
@@ -192,7 +198,7 @@ pub fn doubts(steps: &[StepRecord], settings: &SystemSettings, semi_span_m: f64)
     if !unconverged.is_empty() {
         doubts.push(Doubt::CouplingNotConverged {
             steps: unconverged.len(),
-            total: steps.len(),
+            total: last.len(),
             worst_residual: unconverged.iter().copied().fold(f64::NAN, f64::max),
             tolerance: settings.coupling_tolerance,
             cap: settings.max_subiterations,

@@ -75,6 +75,15 @@ pub fn run_command(a: &TopologyArgs) -> Result<()> {
                     }
                 },
             )?;
+            // As `fwav design` does: no layout on an analysis that is not
+            // to be trusted (`fwav system-analysis` prints its numbers).
+            let doubts = result.doubts(&config.analysis, config.wing.semi_span_m);
+            if let Some(doubt) = doubts.first() {
+                anyhow::bail!(
+                    "the system analysis run for the pressure history cannot be trusted: {doubt}; \
+                     the topology stops rather than lay out on it"
+                );
+            }
             PressureHistory::new(result.dt_s, result.pressure_history, elements)?
         }
     };

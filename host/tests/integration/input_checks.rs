@@ -586,11 +586,12 @@ fn a_layout_taken_at_the_eslso_cap_is_said() {
 
 /// A system analysis whose coupling stopped at its cap of sub-iterations
 /// is marked: `[analysis] max_subiterations = 1` left the coarse wing's
-/// interface residual at 8.4 (836 %, against a tolerance of 1e-6) in every
-/// step, and `fwav system-analysis` and `fwav design` reported its numbers
-/// as any other's. The built-in wing's analysis converges every step below
-/// 1e-6 in at most 6 sub-iterations (measured 2026-12-07), the coarse
-/// wing's in at most 5, so neither is marked (`cli` tests).
+/// interface residual up to 8.4 (836 %, against a tolerance of 1e-6) in
+/// every step; `fwav system-analysis` and `fwav design` reported its
+/// numbers as any other's, and `fwav topology` laid carbon out on it. The
+/// built-in wing's analysis converges every step below 1e-6 in at most 6
+/// sub-iterations (measured 2026-12-07), the coarse wing's in at most 5, so
+/// neither is marked (`cli` tests).
 #[test]
 fn a_coupling_stopped_at_its_cap_is_marked() {
     let dir = scratch("coupling-cap");
@@ -611,8 +612,9 @@ fn a_coupling_stopped_at_its_cap_is_marked() {
     let stderr = text(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(
-        stderr.contains("warning: the coupling did not converge in 40 of the 40 steps")
-            && stderr.contains("its 1 sub-iterations")
+        stderr
+            .contains("warning: the coupling did not converge in 20 of the last cycle's 20 steps")
+            && stderr.contains("its cap of 1 sub-iteration with the interface residual up to")
             && stderr.contains("(tolerance 1e-6); raise [analysis] max_subiterations"),
         "{stderr}"
     );
@@ -636,6 +638,27 @@ fn a_coupling_stopped_at_its_cap_is_marked() {
         stderr.contains("cycle 1, system analysis: the coupling did not converge"),
         "{stderr}"
     );
+    // `fwav topology` runs its own analysis without --pressure: it lays out
+    // no carbon on one it cannot trust, and writes nothing.
+    let layout = dir.join("layout");
+    let topology = fwav(&[
+        "topology",
+        "--quiet",
+        "--config",
+        path.to_str().unwrap(),
+        "--out",
+        layout.to_str().unwrap(),
+    ]);
+    let stderr = text(&topology.stderr);
+    assert_eq!(topology.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains(
+            "the system analysis run for the pressure history cannot be trusted: \
+             the coupling did not converge"
+        ),
+        "{stderr}"
+    );
+    assert!(!layout.join("topology.json").exists());
     std::fs::remove_dir_all(&dir).ok();
 }
 
