@@ -50,6 +50,17 @@ pub enum CacheError {
     /// Writing the file.
     #[error("evaluation cache: {0}")]
     Write(#[from] crate::files::WriteError),
+    /// Another of the program's files (its `format` names another kind).
+    #[error(
+        "evaluation cache {path}: a {format:?} file, not an evaluation cache ({FORMAT:?}): \
+         give another file name, or a missing one to start a new cache"
+    )]
+    OtherKind {
+        /// The file.
+        path: String,
+        /// The `format` it names.
+        format: String,
+    },
     /// Not a cache file.
     #[error("evaluation cache {path}: {message}")]
     Format {
@@ -219,13 +230,10 @@ fn read_entries(path: &Path) -> Result<HashMap<String, SectionResult>, CacheErro
         format: Some(format),
     }) = serde_json::from_str::<Kind>(&text)
     {
-        if format != FORMAT && !format.starts_with("fwav-evaluations") {
-            return Err(CacheError::Format {
+        if !format.starts_with("fwav-evaluations") {
+            return Err(CacheError::OtherKind {
                 path: path.display().to_string(),
-                message: format!(
-                    "a {format:?} file, not an evaluation cache ({FORMAT:?}): give another \
-                     file name, or a missing one to start a new cache"
-                ),
+                format,
             });
         }
     }
@@ -456,6 +464,7 @@ mod tests {
         )
         .unwrap();
         let e = EvaluationCache::load(&path).unwrap_err();
+        assert!(matches!(e, CacheError::OtherKind { .. }), "{e:?}");
         assert!(
             e.to_string().contains(
                 "a \"fwav-system-analysis\" file, not an evaluation cache (\"fwav-evaluations-2\")"

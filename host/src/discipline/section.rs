@@ -174,6 +174,23 @@ pub enum EvaluationError {
     /// The solution is not finite (the solver diverged).
     #[error("the 2D analysis diverged (non-finite {0})")]
     Diverged(&'static str),
+    /// The drive puts no power into the flow over the scored cycles: the
+    /// section has no propulsive efficiency (its ratio to a negative power
+    /// would flip the thrust's sign). At 0.1 m/s the default section flaps
+    /// at reduced frequency 20.7, and the LDVM on its analysed deformation
+    /// gave CP -1.56e7 with CT +2651.
+    #[error(
+        "the section's mean power coefficient is {cp:.4e} at reduced frequency \
+         {reduced_frequency:.3}: the drive puts no power into the flow (the flow does work on \
+         the section instead), so the section has no propulsive efficiency; check the flight \
+         speed and the frequency (k = pi f c / U)"
+    )]
+    NoInputPower {
+        /// Mean power coefficient of the scored cycles.
+        cp: f64,
+        /// The section's reduced frequency `pi f c / U`.
+        reduced_frequency: f64,
+    },
     /// A frequency so low for the section and flight speed that a period
     /// is hundreds of chords: the analysis would take too many steps.
     #[error(
@@ -516,15 +533,20 @@ fn summarize(
             0.0
         },
     };
-    for (name, v) in [
-        ("CT", result.ct),
-        ("CP", result.cp),
-        ("friction", friction),
-        ("net efficiency", result.efficiency_net),
-    ] {
+    for (name, v) in [("CT", result.ct), ("CP", result.cp), ("friction", friction)] {
         if !v.is_finite() {
             return Err(EvaluationError::Diverged(name));
         }
+    }
+    // Before the efficiency, which a power of 0 makes infinite.
+    if result.cp <= 0.0 {
+        return Err(EvaluationError::NoInputPower {
+            cp: result.cp,
+            reduced_frequency: k,
+        });
+    }
+    if !result.efficiency_net.is_finite() {
+        return Err(EvaluationError::Diverged("net efficiency"));
     }
     Ok(result)
 }
@@ -532,6 +554,46 @@ fn summarize(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A history of three periods of 1 s with constant loads (CT, CP).
+    fn steady_history(ct: f64, cp: f64) -> History {
+        let time: Vec<f64> = (0..=300).map(|i| f64::from(i) / 100.0).collect();
+        let n = time.len();
+        History {
+            ct: vec![ct; n],
+            cp: vec![cp; n],
+            cl: vec![0.0; n],
+            lesp: vec![0.0; n],
+            bound_circulation: vec![0.0; n],
+            cl_impulse: vec![0.0; n],
+            cd_friction: vec![0.0; n],
+            time,
+        }
+    }
+
+    /// A section the drive puts no power into has no propulsive efficiency:
+    /// its evaluation is refused as such, whatever its thrust (at 0.1 m/s the
+    /// initial design's LDVM run had CT +2651 and CP -1.56e7, and the
+    /// discipline asked for kinematics that "produce thrust"; a candidate
+    /// like it would have been scored with an efficiency of the wrong sign).
+    #[test]
+    fn a_section_without_input_power_has_no_efficiency() {
+        let fine = summarize(&steady_history(0.06, 2.87), 1.0, 0.69, 2).unwrap();
+        assert!((fine.efficiency - 0.06 / 2.87).abs() < 1e-12, "{fine:?}");
+        for cp in [-1.56e7, 0.0] {
+            let e = summarize(&steady_history(2651.0, cp), 1.0, 20.7, 2).unwrap_err();
+            assert!(
+                matches!(e, EvaluationError::NoInputPower { reduced_frequency, .. }
+                    if reduced_frequency == 20.7),
+                "{e}"
+            );
+            assert!(
+                e.to_string()
+                    .contains("at reduced frequency 20.700: the drive puts no power"),
+                "{e}"
+            );
+        }
+    }
 
     /// A case out of range is refused before any analysis, its error
     /// carrying the values that are wrong.

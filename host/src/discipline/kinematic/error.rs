@@ -2,8 +2,6 @@
 //! variant carries what was found, the methods' own typed errors
 //! included.
 
-use fwav_settings::Shown;
-
 use crate::optimize::anom::AnomError;
 use crate::optimize::doe::DoeError;
 use crate::optimize::nsga2::Nsga2Error;
@@ -28,25 +26,6 @@ pub enum KinematicError {
         /// Thrust coefficient before the friction estimate (the LDVM's
         /// inviscid one; the net one for the Navier–Stokes model).
         ct: f64,
-    },
-    /// The initial design's section takes no power from the drive (its
-    /// mean power coefficient is not positive), so it has no efficiency to
-    /// be the objective's reference. At 0.1 m/s the default section flaps
-    /// at reduced frequency 20.7, where the LDVM gave CP -1.3e7 (the 3D
-    /// analysis: +6.0e4).
-    #[error(
-        "the initial design's mean power coefficient is {:.4}, at reduced frequency {:.4}: the \
-         section takes power from the flow instead of the drive giving it, so it has no \
-         efficiency to serve as the objective's reference; check flight.speed_m_s and the \
-         frequency (k = pi f c / U), or start from kinematics of a lower reduced frequency",
-        Shown(*cp),
-        Shown(*reduced_frequency)
-    )]
-    NoInputPower {
-        /// Mean power coefficient of the scored cycles.
-        cp: f64,
-        /// The section's reduced frequency `pi f c / U`.
-        reduced_frequency: f64,
     },
     /// The L18 array could not be laid out over the design space's
     /// levels.

@@ -20,19 +20,14 @@ pub struct ObjectiveReference {
 
 impl ObjectiveReference {
     /// The reference a run's result gives: refused unless both are
-    /// positive (the ratios would flip sign).
+    /// positive (the ratios would flip sign). A result's power is positive
+    /// (an evaluation without is refused as
+    /// [`crate::discipline::section::EvaluationError::NoInputPower`]), so
+    /// its net efficiency has the net thrust's sign.
     ///
     /// # Errors
-    /// [`KinematicError::NoInputPower`] for a power coefficient that is
-    /// not positive (the efficiency's sign is then not the thrust's), else
     /// [`KinematicError::NoNetThrust`].
     pub fn of(result: &SectionResult) -> Result<Self, KinematicError> {
-        if result.cp.is_nan() || result.cp <= 0.0 {
-            return Err(KinematicError::NoInputPower {
-                cp: result.cp,
-                reduced_frequency: result.reduced_frequency,
-            });
-        }
         if !(result.ct_net > 0.0 && result.efficiency_net > 0.0) {
             return Err(KinematicError::NoNetThrust {
                 ct_net: result.ct_net,
@@ -97,52 +92,5 @@ impl Objective<'_> {
     pub(super) fn predicted(&self, o: &[f64]) -> f64 {
         self.weights.thrust * -o[0] / self.reference.ct_net
             + self.weights.efficiency * -o[1] / self.reference.efficiency_net
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A reference needs power in and net thrust out; a power coefficient
-    /// that is not positive is named as such (it was reported as a thrust
-    /// to raise, on a section whose thrust was 2650 and whose CP was
-    /// -1.3e7 at reduced frequency 20.7).
-    #[test]
-    fn a_reference_needs_power_in_and_thrust_out() {
-        let result = SectionResult {
-            reduced_frequency: 0.69,
-            ct: 0.06,
-            ct_net: 0.035,
-            cp: 2.87,
-            efficiency: 0.06 / 2.87,
-            efficiency_net: 0.035 / 2.87,
-            ct_change: 0.0,
-        };
-        assert!(ObjectiveReference::of(&result).is_ok());
-        let driven = SectionResult {
-            reduced_frequency: 20.7,
-            ct: 2651.0,
-            ct_net: 2650.9,
-            cp: -1.3e7,
-            efficiency: 2651.0 / -1.3e7,
-            efficiency_net: 2650.9 / -1.3e7,
-            ..result
-        };
-        let e = ObjectiveReference::of(&driven).unwrap_err();
-        assert!(matches!(e, KinematicError::NoInputPower { .. }), "{e}");
-        assert!(
-            e.to_string()
-                .contains("mean power coefficient is -1.3000e7, at reduced frequency 20.7000"),
-            "{e}"
-        );
-        let dragging = SectionResult {
-            ct: -0.01,
-            ct_net: -0.02,
-            efficiency_net: -0.02 / 2.87,
-            ..result
-        };
-        let e = ObjectiveReference::of(&dragging).unwrap_err();
-        assert!(matches!(e, KinematicError::NoNetThrust { .. }), "{e}");
     }
 }
