@@ -129,10 +129,13 @@ impl<P: Read + Write> Device<P> {
             name: name.to_owned(),
         })?;
         let info = id.info();
-        // The wire carries an f32: 1e300 becomes inf, which `accepts`
-        // refuses; the error shows the value given.
+        // The range as declared, in f64 (as a plant file's value is
+        // checked: 1000.00001 ohm is refused here as there, though its f32
+        // rounds to 1000), and the device's own f32 check of what is sent
+        // (1e300 becomes inf). The error shows the value given.
         let sent = value as f32;
-        if !id.accepts(sent) {
+        let [low, high] = info.bounds;
+        if !(value >= low && value <= high && id.accepts(sent)) {
             return Err(DeviceError::ParamOutOfRange {
                 name: info.name,
                 value,

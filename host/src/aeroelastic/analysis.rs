@@ -31,7 +31,8 @@ use super::relaxation::{norm, Aitken};
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
 pub struct SystemSettings {
-    /// Flapping cycles simulated (the last one is reported).
+    /// Flapping cycles simulated, 2 to 100 (the last one is reported, and
+    /// compared with the one before).
     pub cycles: usize,
     /// Time steps per flapping cycle.
     pub steps_per_cycle: usize,

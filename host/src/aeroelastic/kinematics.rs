@@ -146,7 +146,7 @@ impl FlappingKinematics {
     };
 
     /// Checks the ranges: frequency in (0, 200] Hz, amplitude in [0, 80°],
-    /// mean angle within ±60°, stroke plane in [0, 180°].
+    /// mean angle within ±60°, stroke plane in (0, 180°).
     pub fn validate(&self) -> Result<(), KinematicsError> {
         let deg = std::f64::consts::PI / 180.0;
         let checks: [(&'static str, f64, f64, f64, &'static str); 3] = [

@@ -343,7 +343,12 @@ pub fn fc(path: &str, action: &str, sets: &[String], json: bool) -> Result<()> {
                 let i = p.id.info();
                 println!(
                     "{:<20} {:>12} {:<14} (default {}, range {}..={})",
-                    i.name, p.value, i.unit, i.default, i.min, i.max
+                    i.name,
+                    p.value,
+                    i.unit,
+                    i.default,
+                    Shown(i.bounds[0]),
+                    Shown(i.bounds[1])
                 );
             }
         }
