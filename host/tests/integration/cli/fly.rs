@@ -280,9 +280,27 @@ fn a_parameter_beyond_the_wire_is_named_as_typed() {
         stderr.contains("current_limit = 1e300 is outside 0..=50 A"),
         "{stderr}"
     );
+    // Just past the declared top, 1000 ohm: its f32 rounds to 1000, which
+    // the device would take; the declared f64 range, a plant file's, is
+    // asked first (since 2026-12-07), and the range is shown as declared.
+    let out = super::fwav(&[
+        "fc",
+        "--port",
+        &board.path,
+        "params",
+        "--set",
+        "winding_resistance=1000.00001",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("winding_resistance = 1000.00001 is outside 0.001..=1000 ohm"),
+        "{stderr}"
+    );
     let out = super::fwav(&["fc", "--port", &board.path, "params", "--json"]);
     let params: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
     assert_eq!(params["current_limit [A]"], 1.5, "{params}");
+    assert_eq!(params["winding_resistance [ohm]"], 5.0, "{params}");
 }
 
 /// `fwav upload --start | head -1`: once the reader has gone, the pilot's
