@@ -546,6 +546,19 @@ fn topology_of_a_pressure_beyond_any_wing_is_an_error_not_a_layout() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// The coarse configuration with each `(from, to)` of `edits` made once
+/// (each `from` must be there), written as `capped.toml` in `dir`.
+fn coarse_edited(dir: &std::path::Path, edits: &[(&str, &str)]) -> PathBuf {
+    let mut text = std::fs::read_to_string(COARSE).unwrap();
+    for (from, to) in edits {
+        assert!(text.contains(from), "{from:?} in the coarse configuration");
+        text = text.replacen(from, to, 1);
+    }
+    let path = dir.join("capped.toml");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
 /// A structural layout taken at ESLSO's cycle cap is said in the design's
 /// summary, as `fwav topology` and the report already said it: the design
 /// printed its cycles as if each discipline had converged. (The coarse
@@ -553,17 +566,16 @@ fn topology_of_a_pressure_beyond_any_wing_is_an_error_not_a_layout() {
 #[test]
 fn a_layout_taken_at_the_eslso_cap_is_said() {
     let dir = scratch("eslso-cap");
-    let coarse = std::fs::read_to_string(COARSE).unwrap();
-    let path = dir.join("capped.toml");
-    let (topology, mdois) = (
-        "max_cycles = 4\nsimp_iterations",
-        "[mdois]\nmax_cycles = 4\n",
+    let path = coarse_edited(
+        &dir,
+        &[
+            (
+                "max_cycles = 4\nsimp_iterations",
+                "max_cycles = 1\nsimp_iterations",
+            ),
+            ("[mdois]\nmax_cycles = 4\n", "[mdois]\nmax_cycles = 1\n"),
+        ],
     );
-    assert!(coarse.contains(topology) && coarse.contains(mdois));
-    let capped = coarse
-        .replacen(topology, "max_cycles = 1\nsimp_iterations", 1)
-        .replacen(mdois, "[mdois]\nmax_cycles = 1\n", 1);
-    std::fs::write(&path, capped).unwrap();
     let out = fwav(&[
         "design",
         "--quiet",
@@ -595,13 +607,10 @@ fn a_layout_taken_at_the_eslso_cap_is_said() {
 #[test]
 fn a_coupling_stopped_at_its_cap_is_marked() {
     let dir = scratch("coupling-cap");
-    let coarse = std::fs::read_to_string(COARSE).unwrap();
-    let path = dir.join("capped.toml");
-    std::fs::write(
-        &path,
-        coarse.replacen("[analysis]\n", "[analysis]\nmax_subiterations = 1\n", 1),
-    )
-    .unwrap();
+    let path = coarse_edited(
+        &dir,
+        &[("[analysis]\n", "[analysis]\nmax_subiterations = 1\n")],
+    );
     let out = fwav(&[
         "system-analysis",
         "--quiet",
