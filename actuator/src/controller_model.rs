@@ -76,7 +76,7 @@ fn model_values(plant: &PlantParams) -> [(ParamId, f64); 8] {
     "the plant gives the controller's {} = {} {}, outside the device's {}..={} {}: a board \
      cannot fly this plant's model; check {}",
     .id.info().name,
-    Shown(*.value),
+    Shown::rounded(*.value, 6),
     .id.info().unit,
     Shown(.id.info().bounds[0]),
     Shown(.id.info().bounds[1]),
@@ -86,7 +86,8 @@ fn model_values(plant: &PlantParams) -> [(ParamId, f64); 8] {
 pub struct BeyondDevice {
     /// The parameter.
     pub id: ParamId,
-    /// The value the plant gives it.
+    /// The value the plant gives it (computed: shown to six significant
+    /// digits).
     pub value: f64,
 }
 

@@ -254,8 +254,8 @@ fn a_bad_pace_is_refused() {
 /// beyond the device's inertia) was refused at the upload, naming the
 /// device's parameter in its `f32`; `serve` took it without a word and kept
 /// the controller's default. Both now refuse it before the run, naming the
-/// plant's keys and the value as computed (1 + 20^2 * 7.1e-8 of the
-/// rotor). A value the model takes as it is (a winding of 1e300 ohm) is
+/// plant's keys and the value as computed, to six digits (1 + 20^2 *
+/// 7.1e-8 of the rotor = 1.0000284). A value the model takes as it is (a winding of 1e300 ohm) is
 /// refused by the plant file's own check, whose range is the device's
 /// (since 2026-12-07).
 #[test]
@@ -267,7 +267,7 @@ fn a_plant_beyond_the_device_is_refused_naming_its_key() {
         (
             "inertia_kg_m2 = ",
             "inertia_kg_m2 = 1",
-            "the plant gives the controller's wing_inertia = 1.0000284 kg m^2, outside the \
+            "the plant gives the controller's wing_inertia = 1.00003 kg m^2, outside the \
              device's 1e-9..=0.01 kg m^2: a board cannot fly this plant's model; check \
              wing.inertia_kg_m2, motor.rotor_inertia_kg_m2 and transmission.gear_ratio",
         ),

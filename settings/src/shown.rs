@@ -36,6 +36,17 @@ pub struct Shown(pub f64);
 const PLAIN: std::ops::Range<f64> = 1e-3..1e6;
 
 impl Shown {
+    /// A computed `x` rounded to `digits` significant digits (at least 1),
+    /// then shown as any: `0.012067370231250001` to 6 is `0.0120674`. A
+    /// value the user typed is shown as typed, with [`Shown`] itself.
+    pub fn rounded(x: f64, digits: usize) -> Self {
+        if !x.is_finite() || x == 0.0 {
+            return Self(x);
+        }
+        let p = digits.max(1) - 1;
+        Self(format!("{x:.p$e}").parse().unwrap_or(x))
+    }
+
     /// Whether the number is written in plain decimals: its magnitude in
     /// `[1e-3, 1e6)`, or 0, infinite or NaN.
     pub fn is_plain(self) -> bool {
@@ -118,6 +129,14 @@ mod tests {
                 assert_eq!(text.0, text.1);
             }
         }
+        // A computed value to significant digits.
+        assert_eq!(
+            Shown::rounded(0.012067370231250001, 6).to_string(),
+            "0.0120674"
+        );
+        assert_eq!(Shown::rounded(1.0000284, 6).to_string(), "1.00003");
+        assert_eq!(Shown::rounded(-2.5e300, 3).to_string(), "-2.5e300");
+        assert_eq!(Shown::rounded(f64::NAN, 3).to_string(), "NaN");
         // Every number shown parses back to the value (the shortest
         // round-trip form, in either notation).
         for x in [1e300, 2.5e-9, 123456.789, 1e-3, 3e7] {

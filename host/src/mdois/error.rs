@@ -307,18 +307,20 @@ pub enum DesignError {
          the device's {}..={} {}: a board cannot be set to this vehicle's model; change the \
          [actuator] (rotor_inertia_kg_m2, gear_ratio, the spring) or the [wing], or fly \
          gentler initial kinematics ([kinematics])",
-        .source.id.info().name,
-        Shown(.source.value),
-        .source.id.info().unit,
-        Shown(.source.id.info().bounds[0]),
-        Shown(.source.id.info().bounds[1]),
-        .source.id.info().unit
+        .model.id.info().name,
+        Shown::rounded(.model.value, 6),
+        .model.id.info().unit,
+        Shown(.model.id.info().bounds[0]),
+        Shown(.model.id.info().bounds[1]),
+        .model.id.info().unit
     )]
     BeyondDevice {
         /// The design cycle.
         cycle: usize,
-        /// The model parameter and the value the vehicle gives it.
-        source: BeyondDevice,
+        /// The model parameter and the value the vehicle gives it (not a
+        /// `source`: its own text names the plant file's keys, which a
+        /// design's user does not edit).
+        model: BeyondDevice,
     },
     /// A discipline's thread panicked (a bug).
     #[error("cycle {cycle}, {stage}: the stage panicked")]

@@ -203,7 +203,7 @@ mod tests {
         assert!(
             text.contains(
                 "# NOT FLYABLE by the flight controller as it is: the plant gives the \
-                 controller's wing_inertia = 1.0000284 kg m^2"
+                 controller's wing_inertia = 1.00003 kg m^2"
             ) && !text.contains("fwav fc params --set"),
             "{text}"
         );

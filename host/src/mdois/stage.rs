@@ -266,7 +266,7 @@ impl Context<'_> {
         let vehicle = designed_vehicle(&self.dir, &self.config, cycle, &design.densities)?;
         let demand = crate::vehicle::Vehicle::demand(&design.kinematics);
         checked_controller_model(&vehicle.plant(demand.frequency_hz))
-            .map_err(|source| DesignError::BeyondDevice { cycle, source })?;
+            .map_err(|model| DesignError::BeyondDevice { cycle, model })?;
         let verdict = vehicle
             .check(&demand)
             .map_err(|source| DesignError::Vehicle { cycle, source })?;
