@@ -129,13 +129,13 @@ impl<P: Read + Write> Device<P> {
             name: name.to_owned(),
         })?;
         let info = id.info();
-        // The range as declared, in f64 (as a plant file's value is
+        // The range as declared, in f64, as a plant file's value is
         // checked: 1000.00001 ohm is refused here as there, though its f32
-        // rounds to 1000), and the device's own f32 check of what is sent
-        // (1e300 becomes inf). The error shows the value given.
-        let sent = value as f32;
+        // rounds to 1000. A value inside it is inside the device's f32
+        // range too (rounding keeps the order), and NaN and 1e300 (inf on
+        // the wire) are outside. The error shows the value given.
         let [low, high] = info.bounds;
-        if !(value >= low && value <= high && id.accepts(sent)) {
+        if !(value >= low && value <= high) {
             return Err(DeviceError::ParamOutOfRange {
                 name: info.name,
                 value,
@@ -144,9 +144,10 @@ impl<P: Read + Write> Device<P> {
                 unit: info.unit,
             });
         }
-        Ok(self
-            .link
-            .command(Command::SetParam(ParamValue { id, value: sent }))?)
+        Ok(self.link.command(Command::SetParam(ParamValue {
+            id,
+            value: value as f32,
+        }))?)
     }
 
     /// Arms; returns the session whose heartbeats ([`Device::heartbeat`])

@@ -72,16 +72,24 @@ pub struct ParamInfo {
     pub unit: &'static str,
     /// Value after a reset to defaults.
     pub default: f32,
-    /// Smallest allowed value (as the wire's `f32`).
-    pub min: f32,
-    /// Largest allowed value (as the wire's `f32`).
-    pub max: f32,
-    /// The allowed range as declared, `[min, max]` in `f64`: `min` and
-    /// `max` are these rounded to `f32`. For checking a value before it
-    /// is sent, where it is an `f64` (a plant file's, say): `1e-3` as an
-    /// `f64` is below `1e-3f32` widened, so the `f32` bounds would refuse
-    /// the very value declared.
+    /// The allowed range as declared, `[min, max]` in `f64`
+    /// ([`Self::min`] and [`Self::max`] are these as the wire's `f32`).
+    /// For checking a value before it is sent, where it is an `f64` (a
+    /// plant file's, say): `1e-3` as an `f64` is below `1e-3f32` widened,
+    /// so the `f32` bounds would refuse the very value declared.
     pub bounds: [f64; 2],
+}
+
+impl ParamInfo {
+    /// Smallest allowed value, as the wire's `f32`.
+    pub const fn min(&self) -> f32 {
+        self.bounds[0] as f32
+    }
+
+    /// Largest allowed value, as the wire's `f32`.
+    pub const fn max(&self) -> f32 {
+        self.bounds[1] as f32
+    }
 }
 
 const fn info(
@@ -97,8 +105,6 @@ const fn info(
         name,
         unit,
         default,
-        min: min as f32,
-        max: max as f32,
         bounds: [min, max],
     }
 }
@@ -207,7 +213,7 @@ impl ParamId {
     /// True if `value` is finite and within the allowed range.
     pub fn accepts(self, value: f32) -> bool {
         let i = self.info();
-        value >= i.min && value <= i.max
+        value >= i.min() && value <= i.max()
     }
 }
 

@@ -389,7 +389,7 @@ fn params_table_is_consistent() {
         assert_eq!(p.id as usize, i, "PARAMS is in wire-id order");
         assert_eq!(ParamId::from_name(p.name), Some(p.id));
         assert!(
-            p.min <= p.default && p.default <= p.max,
+            p.min() <= p.default && p.default <= p.max(),
             "{} default in range",
             p.name
         );

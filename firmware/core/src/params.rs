@@ -39,8 +39,8 @@ impl ParamSet {
             return Err(NackReason::ParamOutOfRange {
                 id,
                 value,
-                min: info.min,
-                max: info.max,
+                min: info.min(),
+                max: info.max(),
             });
         }
         self.values[id as usize] = value;

@@ -282,7 +282,7 @@ pub fn run(
         }
         progress(step + 1, total);
     }
-    result.means = cycle_means(&result.steps, n_cycle, settings.cycles);
+    result.means = cycle_means(&result.steps, n_cycle);
     Ok(result)
 }
 
@@ -669,22 +669,18 @@ impl<'a> Coupling<'a> {
     }
 }
 
-/// The means over the last of `cycles` cycles of `n_cycle` steps, and the
-/// change of the mean CT from the cycle before.
-fn cycle_means(steps: &[StepRecord], n_cycle: usize, cycles: usize) -> CycleMeans {
+/// The means over the last cycle of `n_cycle` steps, and the change of the
+/// mean CT from the cycle before (an analysis has two at least: `check`).
+fn cycle_means(steps: &[StepRecord], n_cycle: usize) -> CycleMeans {
     let total = steps.len();
     let last = &steps[total - n_cycle..];
     let mean = |f: &dyn Fn(&StepRecord) -> f64| last.iter().map(f).sum::<f64>() / n_cycle as f64;
     let (ct, cl, cp) = (mean(&|r| r.ct), mean(&|r| r.cl), mean(&|r| r.cp));
-    let before = if cycles > 1 {
-        steps[total - 2 * n_cycle..total - n_cycle]
-            .iter()
-            .map(|r| r.ct)
-            .sum::<f64>()
-            / n_cycle as f64
-    } else {
-        ct
-    };
+    let before = steps[total - 2 * n_cycle..total - n_cycle]
+        .iter()
+        .map(|r| r.ct)
+        .sum::<f64>()
+        / n_cycle as f64;
     CycleMeans {
         ct,
         cl,

@@ -13,8 +13,9 @@
 
 use std::path::{Path, PathBuf};
 
-use fwav_actuator::controller_model::{checked_controller_model, controller_model};
+use fwav_actuator::controller_model::checked_controller_model;
 use fwav_actuator::params::PlantParams;
+use fwav_protocol::ParamValue;
 
 use crate::config::SystemConfig;
 use crate::files::write_atomic;
@@ -69,10 +70,12 @@ pub fn designed_vehicle(
     .map_err(|source| DesignError::Vehicle { cycle, source })
 }
 
-/// The flight controller's model of `plant` as the command that sets it
-/// on a board ([`controller_model`]; hil-sim sets the same values itself).
-pub fn controller_params_note(plant: &PlantParams) -> String {
-    let sets: Vec<String> = controller_model(plant)
+/// The flight controller's `model` of a plant
+/// ([`fwav_actuator::controller_model::controller_model`]) as
+/// the command that sets it on a board (hil-sim sets the same values
+/// itself).
+pub fn controller_params_note(model: &[ParamValue]) -> String {
+    let sets: Vec<String> = model
         .iter()
         .map(|v| format!("--set {}={:e}", v.id.info().name, v.value))
         .collect();
@@ -100,7 +103,7 @@ pub fn plant_toml(
     // (`Context::check_flyable`); a later cycle's (another layout, a
     // spring tuned to another frequency) may still leave the range.
     let note = match checked_controller_model(&plant) {
-        Ok(_) => controller_params_note(&plant),
+        Ok(model) => controller_params_note(&model),
         Err(beyond) => format!("NOT FLYABLE by the flight controller as it is: {beyond}"),
     };
     for line in header.lines().chain(note.lines()) {
@@ -149,6 +152,7 @@ pub fn write_plant(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use fwav_actuator::controller_model::controller_model;
     use fwav_protocol::ParamId;
 
     /// The note is a command a user can paste: eight `--set name=value`
@@ -157,7 +161,7 @@ mod tests {
     #[test]
     fn the_note_sets_the_controllers_model() {
         let plant = PlantParams::default();
-        let note = controller_params_note(&plant);
+        let note = controller_params_note(&controller_model(&plant));
         let sets: Vec<&str> = note
             .split_whitespace()
             .filter(|w| w.contains('='))

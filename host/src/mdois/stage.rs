@@ -25,7 +25,6 @@ use std::time::Instant;
 
 use crate::aeroelastic::handoff::{self, SectionFile};
 use crate::aeroelastic::kinematics::FlappingKinematics;
-use crate::aeroelastic::last_cycle::Doubt;
 use crate::aeroelastic::{run, SystemResult, WingModel};
 use crate::config::SystemConfig;
 use crate::discipline::cache::EvaluationCache;
@@ -203,9 +202,16 @@ impl Context<'_> {
             cycle: running.cycle,
             source,
         })?;
-        let doubts = result.doubts(analysis, self.config.wing.semi_span_m);
-        refuse_doubtful(running.cycle, &doubts)?;
-        Ok(result)
+        match result
+            .doubts(analysis, self.config.wing.semi_span_m)
+            .first()
+        {
+            Some(&doubt) => Err(DesignError::Doubtful {
+                cycle: running.cycle,
+                doubt,
+            }),
+            None => Ok(result),
+        }
     }
 
     /// Refuses the reused system analysis of `cycle` (a resumed design's
@@ -214,8 +220,10 @@ impl Context<'_> {
     /// (2026-12-07) may hold one, and the disciplines would choose on it.
     pub fn check_trusted(&self, cycle: usize) -> Result<(), DesignError> {
         let record = load_system(&self.dir, cycle)?;
-        let doubts = record.doubts(&self.config.analysis, self.config.wing.semi_span_m);
-        match doubts.first() {
+        match record
+            .doubts(&self.config.analysis, self.config.wing.semi_span_m)
+            .first()
+        {
             Some(&doubt) => Err(DesignError::DoubtfulRecord { cycle, doubt }),
             None => Ok(()),
         }
@@ -412,14 +420,5 @@ impl Context<'_> {
             },
         )
         .map_err(|source| DesignError::Topology { cycle, source })
-    }
-}
-
-/// The first of a cycle's system analysis's `doubts` as the error that
-/// stops the design.
-fn refuse_doubtful(cycle: usize, doubts: &[Doubt]) -> Result<(), DesignError> {
-    match doubts.first() {
-        Some(&doubt) => Err(DesignError::Doubtful { cycle, doubt }),
-        None => Ok(()),
     }
 }

@@ -266,37 +266,25 @@ fn upload_refuses_a_duration_that_is_not_a_positive_number_of_seconds() {
 #[test]
 fn a_parameter_beyond_the_wire_is_named_as_typed() {
     let board = VirtualBoard::start();
-    let out = super::fwav(&[
-        "fc",
-        "--port",
-        &board.path,
-        "params",
-        "--set",
-        "current_limit=1e300",
-    ]);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(1), "{stderr}");
-    assert!(
-        stderr.contains("current_limit = 1e300 is outside 0..=50 A"),
-        "{stderr}"
-    );
-    // Just past the declared top, 1000 ohm: its f32 rounds to 1000, which
-    // the device would take; the declared f64 range, a plant file's, is
-    // asked first (since 2026-12-07), and the range is shown as declared.
-    let out = super::fwav(&[
-        "fc",
-        "--port",
-        &board.path,
-        "params",
-        "--set",
-        "winding_resistance=1000.00001",
-    ]);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(1), "{stderr}");
-    assert!(
-        stderr.contains("winding_resistance = 1000.00001 is outside 0.001..=1000 ohm"),
-        "{stderr}"
-    );
+    // 1e300 is inf on the wire. Just past the declared top, 1000 ohm: its
+    // f32 rounds to 1000, which the device would take; the declared f64
+    // range, a plant file's, is asked (since 2026-12-07), and the range is
+    // shown as declared.
+    for (set, expected) in [
+        (
+            "current_limit=1e300",
+            "current_limit = 1e300 is outside 0..=50 A",
+        ),
+        (
+            "winding_resistance=1000.00001",
+            "winding_resistance = 1000.00001 is outside 0.001..=1000 ohm",
+        ),
+    ] {
+        let out = super::fwav(&["fc", "--port", &board.path, "params", "--set", set]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{set}: {stderr}");
+        assert!(stderr.contains(expected), "{set}: {stderr}");
+    }
     let out = super::fwav(&["fc", "--port", &board.path, "params", "--json"]);
     let params: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
     assert_eq!(params["current_limit [A]"], 1.5, "{params}");
