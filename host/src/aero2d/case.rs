@@ -537,6 +537,20 @@ impl CaseRun {
             change_of_swing: change_of_swing(ct, ct_prev, last),
         }
     }
+
+    /// The largest leading-edge suction parameter `|A0|` over the last
+    /// period: the thin-line model's (`None` for the others, which keep
+    /// none). Above the section's critical value the leading edge would
+    /// shed a vortex (Ramesh et al. 2014); a run without
+    /// [`Case::lesp_critical`] keeps the flow attached there regardless.
+    pub fn peak_lesp(&self) -> Option<f64> {
+        let lesp = &self.history.lesp;
+        let steps_per_period = (self.period / self.dt).round() as usize;
+        lesp[lesp.len().saturating_sub(steps_per_period)..]
+            .iter()
+            .map(|a| a.abs())
+            .reduce(f64::max)
+    }
 }
 
 #[cfg(test)]

@@ -175,6 +175,58 @@ fn aero2d_reports_thrust_beside_garrick() {
 /// `fwav system-analysis` on a coarse wing: a JSON summary, the files the
 /// disciplines take (the section history is read back by `fwav aero2d
 /// --deformation`), the ParaView series; a bad field is named.
+/// A thin-line run kept attached whose leading edge would have shed is
+/// marked doubtful: past the flat plate's critical suction parameter,
+/// 0.11 (`FWAV_LESP_CRITICAL`, after Ramesh, Gopalarathnam, Granlund, Ol &
+/// Edwards 2014, J. Fluid Mech. 751), the attached flow is Garrick's
+/// theory, not the flow a plate holds. A plunge of 0.2 c at k = 1 kept
+/// attached gave CT 0.164 (Garrick 0.151), and 0.056 shedding; a mean
+/// pitch of 45 deg gave CL 4.27 and exited 0.
+#[test]
+fn an_attached_run_past_the_critical_suction_is_doubtful() {
+    let run = |extra: &[&str]| {
+        let mut args = vec!["aero2d", "--cycles", "4", "--json"];
+        args.extend_from_slice(extra);
+        let out = fwav(&args);
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        (out, v)
+    };
+    for pitch in [["--plunge-amplitude", "0.2"], ["--mean-pitch-deg", "45"]] {
+        let (out, v) = run(&pitch);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{pitch:?}: {stderr}");
+        assert!(
+            stderr.contains("leading-edge suction parameter |A0| reached")
+                && stderr.contains("give --lesp-critical 0.11"),
+            "{stderr}"
+        );
+        let warnings = v["warnings"].as_array().unwrap();
+        assert!(
+            warnings
+                .iter()
+                .any(|w| w.as_str().unwrap().contains("kept attached")),
+            "{v}"
+        );
+    }
+    // Shedding beyond it, the same plunge is not doubted.
+    let (out, v) = run(&["--plunge-amplitude", "0.2", "--lesp-critical", "0.11"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(v["warnings"], serde_json::json!([]), "{v}");
+    // Garrick's plunge of 0.05 c at k = 2 stays below it: attached flow
+    // is the model there, and nothing is doubted.
+    let (out, v) = run(&["--plunge-amplitude", "0.05", "--reduced-frequency", "2"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert_eq!(v["warnings"], serde_json::json!([]), "{v}");
+}
+
 #[test]
 fn system_analysis_writes_what_the_disciplines_take() {
     let dir = crate::program::scratch("system");
@@ -226,6 +278,8 @@ fn system_analysis_writes_what_the_disciplines_take() {
         section.to_str().unwrap(),
         "--cycles",
         "2",
+        "--lesp-critical",
+        "0.11",
         "--json",
     ]);
     assert!(
