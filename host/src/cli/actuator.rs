@@ -1,7 +1,8 @@
 //! `fwav actuator`: can the actuator fly a flapping demand? The margins
 //! of motor torque, current and terminal voltage, the limiting one and the
 //! verdict, on a hil-sim plant file or on the design file's actuator and
-//! wing. Parses and prints; the library ([`fwav::vehicle`],
+//! wing, and exits with status 1 when the verdict is infeasible. Parses
+//! and prints; the library ([`fwav::vehicle`],
 //! [`fwav_actuator::feasibility`]) computes.
 
 use std::path::PathBuf;
@@ -90,8 +91,25 @@ pub fn run_command(a: &ActuatorArgs) -> Result<()> {
     } else {
         print_text(&verdict, &source, vehicle.as_ref(), spring.as_ref());
     }
-    Ok(())
+    if verdict.feasible {
+        Ok(())
+    } else {
+        Err(CannotFly(verdict).into())
+    }
 }
+
+/// The verdict is printed, and it is no: the command ends with status 1,
+/// as `fwav profile check` does on an invalid profile, so that a script
+/// that runs `fwav upload` after it stops here.
+#[derive(Debug, thiserror::Error)]
+#[error(
+    "the actuator cannot fly {}: its {} is below the reserve of {:.1}%; fly a gentler demand or \
+     give the drive more reach (the plant file, or the design file's [actuator])",
+    .0.demand,
+    .0.limiting,
+    100.0 * .0.reserve
+)]
+struct CannotFly(Feasibility);
 
 fn print_text(
     v: &Feasibility,

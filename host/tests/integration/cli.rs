@@ -650,11 +650,7 @@ fn actuator_prints_margins_limiting_and_verdict() {
     ];
     let out = fwav(&args);
     let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "{stdout}\n{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
     let r: serde_json::Value = serde_json::from_str(&stdout).unwrap();
     let v = &r["verdict"];
     let reserve = v["reserve"].as_f64().unwrap();
@@ -671,6 +667,15 @@ fn actuator_prints_margins_limiting_and_verdict() {
     }
     assert_eq!(v["limiting"]["margin"].as_f64().unwrap(), least);
     assert_eq!(v["feasible"].as_bool().unwrap(), least >= reserve);
+    // Without a spring the drive cannot fly it (the current's margin is
+    // -67.5%): the verdict is printed, and the status says no.
+    assert!(least < reserve, "{v}");
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("error: the actuator cannot fly 11.000 Hz")
+            && stderr.contains("below the reserve of 10.0%"),
+        "{stderr}"
+    );
     let (cr, ct, l) = (0.075f64, 0.045f64, 0.15f64);
     let mu = 2001.2 * 0.5e-3 + 1400.6 * 0.1e-3;
     let wing = mu * (cr * l.powi(3) / 3.0 - (cr - ct) * l.powi(3) / 4.0);
