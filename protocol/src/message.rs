@@ -224,7 +224,14 @@ pub enum NackReason {
     #[error("arming needs the amplitude at zero")]
     NotAtRest,
     /// Parameter value outside its range.
-    #[error("parameter {} = {value} is outside {min}..={max} {}", id.info().name, id.info().unit)]
+    #[error(
+        "parameter {} = {} is outside {}..={} {}",
+        id.info().name,
+        ShownValue(*value),
+        ShownValue(*min),
+        ShownValue(*max),
+        id.info().unit
+    )]
     ParamOutOfRange {
         /// Which parameter.
         id: ParamId,
@@ -248,4 +255,54 @@ pub enum NackReason {
     /// client armed it since).
     #[error("another session armed the device: only the heartbeats of the client that armed it last keep it armed")]
     OtherSession,
+}
+
+/// A parameter's value as the messages show it: in plain decimals when
+/// its magnitude is in `[1e-3, 1e6)` (or it is 0, infinite or NaN), in
+/// powers of ten otherwise. `{}` of an `f32` writes the device's least
+/// inertia, `1e-9`, as `0.000000001`. The host's messages follow the same
+/// rule (`fwav_settings::Shown`, which allocates; this crate is `no_std`
+/// without an allocator).
+struct ShownValue(f32);
+
+impl core::fmt::Display for ShownValue {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let x = self.0;
+        if x == 0.0 || !x.is_finite() || (1e-3..1e6).contains(&x.abs()) {
+            write!(f, "{x}")
+        } else {
+            write!(f, "{x:e}")
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A refused parameter is shown with its range in short form, as the
+    /// host shows a declared range (`1e-9..=0.01`, not `0.000000001..=0.01`).
+    #[test]
+    fn a_refused_parameter_shows_its_range_in_short_form() {
+        extern crate std;
+        use std::string::ToString as _;
+        let info = ParamId::WingInertia.info();
+        let refused = NackReason::ParamOutOfRange {
+            id: ParamId::WingInertia,
+            value: 0.5,
+            min: info.min(),
+            max: info.max(),
+        };
+        assert_eq!(
+            refused.to_string(),
+            "parameter wing_inertia = 0.5 is outside 1e-9..=0.01 kg m^2"
+        );
+        let tiny = NackReason::ParamOutOfRange {
+            id: ParamId::WingInertia,
+            value: -2.5e-12,
+            min: info.min(),
+            max: info.max(),
+        };
+        assert!(tiny.to_string().contains("= -2.5e-12 is"), "{tiny}");
+    }
 }
