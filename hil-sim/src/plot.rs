@@ -7,6 +7,8 @@ use plotters::prelude::*;
 use plotters_backend::DrawingErrorKind;
 use plotters_bitmap::BitMapBackendError;
 
+use fwav_files::{create_new, directory_of, WriteError};
+
 use crate::metrics::TracePoint;
 
 /// The picture could not be drawn.
@@ -22,10 +24,11 @@ pub enum PlotError {
     /// The plotting backend failed otherwise (its message).
     #[error("{0}")]
     Backend(String),
-    /// Something has the picture's name: it is left as it was (an
-    /// existing file is never overwritten).
-    #[error("{0} exists, and is left as it is (an existing file is never overwritten): choose a new name or remove it")]
-    Exists(std::path::PathBuf),
+    /// Something has the picture's name ([`WriteError::Exists`]: it is
+    /// left as it was, an existing file is never overwritten), or the
+    /// finished picture could not take it.
+    #[error(transparent)]
+    Write(#[from] WriteError),
 }
 
 /// The bitmap backend's errors, whose own text is Rust's debug form
@@ -52,18 +55,18 @@ impl From<DrawingAreaErrorKind<BitMapBackendError>> for PlotError {
 }
 
 /// Checks that `png` can be made new, before a run that ends by drawing
-/// it: nothing has the name ([`PlotError::Exists`]) and its directory is
-/// one ([`PlotError::File`]). Returns the directory.
-pub fn check_new(png: &Path) -> Result<&Path, PlotError> {
+/// it: nothing has the name ([`WriteError::Exists`]) and its directory is
+/// one ([`PlotError::File`]).
+pub fn check_new(png: &Path) -> Result<(), PlotError> {
     if png.symlink_metadata().is_ok() {
-        return Err(PlotError::Exists(png.to_path_buf()));
+        return Err(WriteError::Exists {
+            path: png.to_path_buf(),
+        }
+        .into());
     }
-    let dir = match png.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
+    let dir = directory_of(png);
     match std::fs::metadata(dir) {
-        Ok(m) if m.is_dir() => Ok(dir),
+        Ok(m) if m.is_dir() => Ok(()),
         Ok(_) => Err(PlotError::File(
             format!("{} is not a directory", dir.display()).into(),
         )),
@@ -71,32 +74,13 @@ pub fn check_new(png: &Path) -> Result<&Path, PlotError> {
     }
 }
 
-/// Draws the last second of `trace` to the new file `png`: the picture
-/// is drawn under a temporary name beside it and takes the name only if
-/// nothing has it ([`PlotError::Exists`]), so that a file there, or made
-/// meanwhile, is never replaced.
+/// Draws the last second of `trace` to the new file `png`
+/// ([`fwav_files::create_new`]: drawn under a temporary name beside it,
+/// which takes the name only if nothing has it, so that a file there, or
+/// made meanwhile, is never replaced).
 pub fn draw(trace: &[TracePoint], png: &Path) -> Result<(), PlotError> {
-    let dir = check_new(png)?;
-    // The encoder reads the format from the extension.
-    let mut builder = tempfile::Builder::new();
-    // A file anyone may read, as the umask allows (a temporary file's own
-    // default is its owner's only).
-    #[cfg(unix)]
-    builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o666));
-    let temporary = builder
-        .prefix(".hil-sim-plot.")
-        .suffix(".partial.png")
-        .tempfile_in(dir)
-        .map_err(|e| PlotError::File(e.kind().to_string().into()))?;
-    draw_to(trace, temporary.path())?;
-    temporary.persist_noclobber(png).map_err(|e| {
-        if e.error.kind() == std::io::ErrorKind::AlreadyExists {
-            PlotError::Exists(png.to_path_buf())
-        } else {
-            PlotError::File(e.error.kind().to_string().into())
-        }
-    })?;
-    Ok(())
+    check_new(png)?;
+    create_new(png, |temporary| draw_to(trace, temporary))
 }
 
 /// Draws the last second of `trace` to `png`, whatever is there.

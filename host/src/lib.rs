@@ -28,7 +28,7 @@ pub mod config;
 pub mod device;
 pub mod discipline;
 pub mod file_format;
-pub mod files;
+pub use fwav_files as files;
 pub mod link;
 pub mod mdois;
 pub mod optimize;
