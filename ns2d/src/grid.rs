@@ -13,6 +13,11 @@ use crate::error::NsError;
 use crate::section_map::SectionMap;
 use crate::stretch::{FarStretch, RingSpacing};
 
+/// The nodes round a grid may have ([`GridSpec::around`]; even too).
+pub const AROUND: std::ops::RangeInclusive<usize> = 16..=8192;
+/// The nodes from the wall out a grid may have ([`GridSpec::radial`]).
+pub const RADIAL: std::ops::RangeInclusive<usize> = 8..=8192;
+
 /// Resolution of an [`OGrid`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GridSpec {
@@ -71,8 +76,18 @@ impl OGrid {
     /// [`NsError::NoStretching`] for a first cell no finer than uniform.
     pub fn new(map: &SectionMap, spec: GridSpec) -> Result<Self, NsError> {
         let checks = [
-            ("around", spec.around as f64, 16.0, 8192.0),
-            ("radial", spec.radial as f64, 8.0, 8192.0),
+            (
+                "around",
+                spec.around as f64,
+                *AROUND.start() as f64,
+                *AROUND.end() as f64,
+            ),
+            (
+                "radial",
+                spec.radial as f64,
+                *RADIAL.start() as f64,
+                *RADIAL.end() as f64,
+            ),
             ("outer_radius", spec.outer_radius, 2.0, 1e4),
             ("first_cell", spec.first_cell, 1e-6, 1.0),
         ];
@@ -90,8 +105,8 @@ impl OGrid {
             return Err(NsError::BadGrid {
                 what: "around (must be even)",
                 value: spec.around as f64,
-                min: 16.0,
-                max: 8192.0,
+                min: *AROUND.start() as f64,
+                max: *AROUND.end() as f64,
             });
         }
         let (nt, nr) = (spec.around, spec.radial);

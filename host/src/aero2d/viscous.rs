@@ -58,7 +58,9 @@
 //! discipline does not spin up
 //! ([`crate::discipline::section_model::ViscousPlate::spin_up`]).
 
-use fwav_ns2d::{Complex64, Contour, FarStretch, Flow, GridSpec, SectionMap, MAX_FAR_GROWTH};
+use fwav_ns2d::{
+    Complex64, Contour, FarStretch, Flow, GridSpec, NsError, SectionMap, AROUND, MAX_FAR_GROWTH,
+};
 
 pub mod cost;
 mod deflection;
@@ -385,6 +387,17 @@ impl ViscousSection {
     /// The conformal map of the section, the pitch axis `pivot` (chords
     /// from the leading edge) at the origin.
     fn map(&self, pivot: f64) -> Result<SectionMap, ViscousError> {
+        // The grid's own check, before the map's of its Laurent terms
+        // (half the nodes round), which would name those instead.
+        if !(AROUND.contains(&self.around) && self.around % 2 == 0) {
+            return Err(NsError::BadGrid {
+                what: "nodes round (even)",
+                value: self.around as f64,
+                min: *AROUND.start() as f64,
+                max: *AROUND.end() as f64,
+            }
+            .into());
+        }
         let terms = self.laurent_terms();
         let shifted = |points: &[(f64, f64)]| -> Vec<(f64, f64)> {
             points.iter().map(|&(x, y)| (x - pivot, y)).collect()
@@ -744,6 +757,26 @@ mod tests {
     /// the wall most at mid-chord, by `c / 2` per radian for a flat
     /// plate (Joukowski's map) and 5 % more for the 4 % plate's round
     /// ends: 384 round give cells of 0.00859 c against `π c / 384`.
+    /// More nodes round than a grid takes are named as such, not by the
+    /// map's Laurent terms (half of them) that it would otherwise meet
+    /// first.
+    #[test]
+    fn nodes_round_beyond_the_grids_range_are_named() {
+        for around in [0, 8194, 100_000, 65] {
+            let section = ViscousSection {
+                around,
+                ..ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS)
+            };
+            let e = section.map(0.25).unwrap_err().to_string();
+            assert!(
+                e.contains(&format!(
+                    "nodes round (even) = {around} is outside 16..=8192"
+                )),
+                "{e}"
+            );
+        }
+    }
+
     #[test]
     fn a_grid_too_coarse_for_the_reynolds_number_names_the_nodes_round() {
         let plate = ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS);

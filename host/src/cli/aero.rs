@@ -19,6 +19,7 @@ use fwav::output::flow_field_vtu::{write_flow_field, FlowSeries};
 use fwav::output::history_csv::write_history_csv;
 use fwav::output::section_plot::draw;
 use fwav::output::surface_csv::write_surface_csv;
+use fwav_ns2d::{AROUND, RADIAL};
 use fwav_settings::Shown;
 use indicatif::ProgressBar;
 
@@ -197,6 +198,24 @@ fn check(a: &Aero2dArgs) -> Result<()> {
         }
         if !(1..=MAX_FIELD_FRAMES).contains(&n) {
             bail!("--field-frames {n} must be between 1 and {MAX_FIELD_FRAMES}");
+        }
+    }
+    if let Some(n) = a.ns_around {
+        if !(AROUND.contains(&n) && n % 2 == 0) {
+            bail!(
+                "--ns-around {n} must be even and in [{}, {}]",
+                AROUND.start(),
+                AROUND.end()
+            );
+        }
+    }
+    if let Some(n) = a.ns_radial {
+        if !RADIAL.contains(&n) {
+            bail!(
+                "--ns-radial {n} must be in [{}, {}]",
+                RADIAL.start(),
+                RADIAL.end()
+            );
         }
     }
     if let Some(c) = a.ns_courant {

@@ -491,6 +491,10 @@ fn aero2d_runs_the_viscous_model() {
         (&["--ns-thickness", "0.001"][..], "0.005 to 0.3"),
         // The far cells would grow by 1.045^(255/27) = 1.516 a ring.
         (&["--ns-radial", "28"][..], "give at least 29 (--ns-radial)"),
+        (
+            &["--ns-radial", "9000"][..],
+            "--ns-radial 9000 must be in [8, 8192]",
+        ),
         // Wall cells of 0.0515 c against a layer of 5e-4 c at the
         // trailing edge (a run that once reported a thrust).
         (
@@ -503,6 +507,23 @@ fn aero2d_runs_the_viscous_model() {
         let out = fwav(&argv);
         let e = String::from_utf8_lossy(&out.stderr);
         assert!(!out.status.success() && e.contains(says), "{bad:?}: {e}");
+    }
+    // Beyond the grid's nodes round, the flag is named with its range
+    // before a memory estimate or a step (it printed 2.6 GB, then
+    // refused "the number of Laurent terms (1 to 4096) is 50000: give a
+    // positive, finite number").
+    for around in ["100000", "8194", "65"] {
+        let out = fwav(&["aero2d", "--model", "ns", "--ns-around", around, "--yes"]);
+        let e = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            !out.status.success()
+                && e.contains(&format!(
+                    "--ns-around {around} must be even and in [16, 8192]"
+                ))
+                && !e.contains("memory")
+                && !e.contains("Laurent"),
+            "{around}: {e}"
+        );
     }
     let out = fwav(&["aero2d", "--ns-around", "64"]);
     assert!(String::from_utf8_lossy(&out.stderr).contains("apply to --model ns only"));
