@@ -91,10 +91,18 @@ pub enum NsError {
     },
     /// The numerical conformal map did not converge.
     #[error(
-        "the conformal map of the section did not converge in {iterations} Newton steps (last \
-         boundary correction {correction:.3e} of the perimeter): the contour is too thin or too \
-         sharp for its {points} points; give more points where it turns fast, round its corners, \
-         or thicken it"
+        "the conformal map of the section did not converge ({}): \
+         the contour is too thin, too sharp or too hooked for its {points} points; give more \
+         points where it turns fast, round its corners, thicken it if it is thin, or give a \
+         less extreme section",
+        if correction.is_finite() {
+            format!(
+                "in {iterations} Newton steps, the last boundary correction {correction:.3e} of \
+                 the perimeter"
+            )
+        } else {
+            "its first Newton step failed".to_string()
+        }
     )]
     MapNotConverged {
         /// Newton steps taken.

@@ -130,8 +130,8 @@ impl ViscousShape {
     /// or not); when its sharpest vertex turns by more than
     /// [`CORNER_TURNING`] (an airfoil file's sharp trailing edge: a corner
     /// has no conformal map), that edge opened to
-    /// [`TRAILING_EDGE_THICKNESS`] and closed by a semicircle, on 512
-    /// points (the chord is kept).
+    /// [`TRAILING_EDGE_THICKNESS`] and closed by an arc tangent to both
+    /// sides, on 512 points (the chord is kept).
     ///
     /// # Errors
     /// The contour's checks ([`Contour::from_points`],
