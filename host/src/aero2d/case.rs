@@ -47,6 +47,14 @@ const MIN_STEPS_PER_CYCLE: f64 = 100.0;
 /// chords) would take a million steps and hours.
 pub const MAX_STEPS: usize = 20_000;
 
+/// The highest reduced frequency `k = omega c / (2 U)` the 2D models take.
+/// They scale the flow by the flight speed `U`; past this the section
+/// flaps nearly in hover, where that scale fails: a thin-line plunge of
+/// 0.01 c already takes 83 % more power than Garrick's theory at k = 20
+/// (+13 % at k = 2, where the thrust is within 5 %), and at 0.1 m/s the
+/// default section (k = 20.7) gave CP -1.56e7 on its analysed deformation.
+pub const MAX_REDUCED_FREQUENCY: f64 = 20.0;
+
 /// The longest run without a period ([`Case::duration`]), chords
 /// travelled: a cylinder's wake settles to its periodic shedding within
 /// about 100 diameters at Re 100 (`fwav_ns2d::cases::CylinderWake` runs

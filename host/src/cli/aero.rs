@@ -6,7 +6,8 @@ use std::path::PathBuf;
 
 use anyhow::{bail, Context, Result};
 use fwav::aero2d::case::{
-    Case, CaseError, CaseRun, SectionModel, MAX_DURATION_CHORDS, PERIODIC_CHANGE,
+    Case, CaseError, CaseRun, SectionModel, MAX_DURATION_CHORDS, MAX_REDUCED_FREQUENCY,
+    PERIODIC_CHANGE,
 };
 use fwav::aero2d::friction::FWAV_REYNOLDS;
 use fwav::aero2d::motion::Motion;
@@ -232,9 +233,9 @@ fn check(a: &Aero2dArgs) -> Result<()> {
             a.section
         );
     }
-    if !(a.reduced_frequency > 0.0 && a.reduced_frequency <= 20.0) {
+    if !(a.reduced_frequency > 0.0 && a.reduced_frequency <= MAX_REDUCED_FREQUENCY) {
         bail!(
-            "--reduced-frequency {} must be in (0, 20]",
+            "--reduced-frequency {} must be in (0, {MAX_REDUCED_FREQUENCY}]",
             Shown(a.reduced_frequency)
         );
     }

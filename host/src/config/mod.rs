@@ -170,6 +170,35 @@ pub enum ConfigError {
         /// The lowest frequency that fits, Hz.
         min_frequency_hz: f64,
     },
+    /// A flapping frequency so high for the flight speed and the
+    /// mid-span chord that its reduced frequency is past the 2D section
+    /// models' range ([`crate::aero2d::case::MAX_REDUCED_FREQUENCY`]).
+    #[error(
+        "{key} = {frequency_hz} Hz at flight.speed_m_s = {speed_m_s}: the mid-span section \
+         ({chord_m} m chord) flaps at reduced frequency {reduced_frequency:.4} (k = pi f c / U), \
+         past the 2D section models' {max}: the flight is nearly hover for this flapping, and \
+         the aerodynamic discipline's models scale the flow by the flight speed; set {key} to at \
+         most {max_frequency_hz:.2} Hz or flight.speed_m_s to at least {min_speed_m_s:.3} m/s"
+    )]
+    SectionBeyondModels {
+        /// The key of the highest frequency analysed
+        /// (`kinematics.frequency_hz` or `design.frequency_hz`).
+        key: &'static str,
+        /// That frequency, Hz.
+        frequency_hz: f64,
+        /// `flight.speed_m_s`.
+        speed_m_s: f64,
+        /// The mid-span chord, m.
+        chord_m: f64,
+        /// The reduced frequency `pi f c / U`.
+        reduced_frequency: f64,
+        /// The most the models take.
+        max: f64,
+        /// The highest frequency that fits, Hz.
+        max_frequency_hz: f64,
+        /// The lowest flight speed that fits, m/s.
+        min_speed_m_s: f64,
+    },
     /// `design.section_model = "ns"` at a mid-span Reynolds number its
     /// grid cannot resolve ([`crate::aero2d::viscous::TRAILING_EDGE_LAYER`]).
     #[error(
@@ -247,6 +276,7 @@ impl SystemConfig {
         wing::check_planform(&self.wing)?;
         design::check_weights(&self.design)?;
         self.check_section_work()?;
+        self.check_section_reach()?;
         self.check_section_resolution()?;
         Ok(())
     }
@@ -271,6 +301,38 @@ impl SystemConfig {
             }),
             // A plate the map refuses is out of `design.ns_thickness`'s
             // range, which the settings table has refused above.
+            _ => Ok(()),
+        }
+    }
+
+    /// Refuses frequencies past the 2D section models' reduced frequency:
+    /// the higher of the initial frequency and the highest frequency
+    /// level (the discipline analyses both; its candidates lie between the
+    /// levels).
+    fn check_section_reach(&self) -> Result<(), ConfigError> {
+        let case = self.section_case();
+        let top = self.design.space.frequency_hz[self.design.space.frequency_hz.len() - 1];
+        let (key, frequency_hz) = if self.kinematics.frequency >= top {
+            ("kinematics.frequency_hz", self.kinematics.frequency)
+        } else {
+            ("design.frequency_hz (highest level)", top)
+        };
+        match case.check_work(frequency_hz) {
+            Err(EvaluationError::BeyondModels {
+                reduced_frequency,
+                max,
+                max_frequency_hz,
+                ..
+            }) => Err(ConfigError::SectionBeyondModels {
+                key,
+                frequency_hz,
+                speed_m_s: case.flight.speed,
+                chord_m: case.chord,
+                reduced_frequency,
+                max,
+                max_frequency_hz,
+                min_speed_m_s: case.flight.speed * reduced_frequency / max,
+            }),
             _ => Ok(()),
         }
     }

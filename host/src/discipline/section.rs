@@ -34,7 +34,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::aero2d::camber::{CamberError, CamberHistory};
-use crate::aero2d::case::MAX_STEPS;
+use crate::aero2d::case::{MAX_REDUCED_FREQUENCY, MAX_STEPS};
 use crate::aero2d::friction::streamwise_friction;
 use crate::aero2d::ldvm::{
     cycle_mean_of, cycle_means, cycle_means_until, History, Ldvm, Motion, SectionFlapping, Settings,
@@ -178,7 +178,8 @@ pub enum EvaluationError {
     /// section has no propulsive efficiency (its ratio to a negative power
     /// would flip the thrust's sign). At 0.1 m/s the default section flaps
     /// at reduced frequency 20.7, and the LDVM on its analysed deformation
-    /// gave CP -1.56e7 with CT +2651.
+    /// gave CP -1.56e7 with CT +2651 (such a flight is now refused before
+    /// the run: [`EvaluationError::BeyondModels`]).
     #[error(
         "the section's mean power coefficient is {cp:.4e} at reduced frequency \
          {reduced_frequency:.3}: the drive puts no power into the flow (the flow does work on \
@@ -190,6 +191,26 @@ pub enum EvaluationError {
         cp: f64,
         /// The section's reduced frequency `pi f c / U`.
         reduced_frequency: f64,
+    },
+    /// A frequency so high for the section and flight speed that the
+    /// reduced frequency is past the 2D models' range
+    /// ([`MAX_REDUCED_FREQUENCY`]): the flight is nearly hover for this
+    /// flapping.
+    #[error(
+        "{frequency_hz} Hz flaps the section at reduced frequency {reduced_frequency:.4}, past \
+         the 2D section models' {max} (the flight is nearly hover for this flapping, and the \
+         models scale the flow by the flight speed); at most {max_frequency_hz:.3} Hz at this \
+         flight speed"
+    )]
+    BeyondModels {
+        /// The flapping frequency, Hz.
+        frequency_hz: f64,
+        /// Its reduced frequency.
+        reduced_frequency: f64,
+        /// The most the models take ([`MAX_REDUCED_FREQUENCY`]).
+        max: f64,
+        /// The highest frequency that fits, Hz.
+        max_frequency_hz: f64,
     },
     /// A frequency so low for the section and flight speed that a period
     /// is hundreds of chords: the analysis would take too many steps.
@@ -279,6 +300,14 @@ impl SectionCase {
     /// the lowest frequency that fits.
     pub fn check_work(&self, frequency_hz: f64) -> Result<(), EvaluationError> {
         let k = self.reduced_frequency(frequency_hz);
+        if k > MAX_REDUCED_FREQUENCY {
+            return Err(EvaluationError::BeyondModels {
+                frequency_hz,
+                reduced_frequency: k,
+                max: MAX_REDUCED_FREQUENCY,
+                max_frequency_hz: frequency_hz * MAX_REDUCED_FREQUENCY / k,
+            });
+        }
         let s = self.settings(k);
         // Saturates: an endless analysis (k = 0) counts usize::MAX steps.
         let steps = (s.duration / s.dt).round() as usize;

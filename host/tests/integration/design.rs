@@ -506,6 +506,21 @@ fn configuration_errors_name_the_field() {
             "(0, 80]",
         ),
         ("[mdois]\ntolerance = 1\n", "tolerance", "unknown field"),
+        // Nearly hover for this flapping: the section's reduced frequency
+        // is past the 2D models' 20 (k = pi f c / U = 24.5 at the top level
+        // of 13 Hz). Until 2026-12-07 the design ran its first analysis,
+        // and its discipline refused the initial design's LDVM power of
+        // -1.56e7 as "the flow does work on the section".
+        (
+            "[flight]\nspeed_m_s = 0.1\n",
+            "design.frequency_hz (highest level) = 13 Hz",
+            "past the 2D section models' 20",
+        ),
+        (
+            "[flight]\nspeed_m_s = 0.1\n[kinematics]\nfrequency_hz = 14.0\n",
+            "kinematics.frequency_hz = 14 Hz",
+            "or flight.speed_m_s to at least",
+        ),
     ] {
         std::fs::write(&config, text).unwrap();
         let out_dir = dir.join("never");
