@@ -17,6 +17,9 @@
 //! The commands also refuse such a name before they start, so that a
 //! long run is not lost at its end.
 
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
 use std::path::{Path, PathBuf};
 
 /// What a write does with a file that has its name already.

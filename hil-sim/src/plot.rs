@@ -24,11 +24,22 @@ pub enum PlotError {
     /// The plotting backend failed otherwise (its message).
     #[error("{0}")]
     Backend(String),
-    /// Something has the picture's name ([`WriteError::Exists`]: it is
-    /// left as it was, an existing file is never overwritten), or the
-    /// finished picture could not take it.
+    /// Something has the picture's name ([`WriteError::Exists`]): it is
+    /// left as it was (an existing file is never overwritten).
     #[error(transparent)]
-    Write(#[from] WriteError),
+    Exists(WriteError),
+}
+
+/// The picture's file could not be made: its name is taken
+/// ([`PlotError::Exists`]), or the file system's reason ([`PlotError::File`];
+/// the command names the file already).
+impl From<WriteError> for PlotError {
+    fn from(e: WriteError) -> Self {
+        match e {
+            WriteError::Io { source, .. } => Self::File(Box::new(source)),
+            exists @ WriteError::Exists { .. } => Self::Exists(exists),
+        }
+    }
 }
 
 /// The bitmap backend's errors, whose own text is Rust's debug form
@@ -55,7 +66,7 @@ impl From<DrawingAreaErrorKind<BitMapBackendError>> for PlotError {
 }
 
 /// Checks that `png` can be made new, before a run that ends by drawing
-/// it: nothing has the name ([`WriteError::Exists`]) and its directory is
+/// it: nothing has the name ([`PlotError::Exists`]) and its directory is
 /// one ([`PlotError::File`]).
 pub fn check_new(png: &Path) -> Result<(), PlotError> {
     if png.symlink_metadata().is_ok() {

@@ -89,7 +89,7 @@ enum Command {
     /// Can the actuator fly a flapping demand? The margins of motor
     /// torque, current and terminal voltage, the limiting one and the
     /// verdict, on a hil-sim plant file or the design file's actuator and
-    /// wing.
+    /// wing; exit 1 if it is infeasible.
     Actuator(cli::actuator::ActuatorArgs),
     /// List serial ports, marking those where an fwav device answers.
     Ports {

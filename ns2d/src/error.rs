@@ -124,6 +124,13 @@ pub enum NsError {
         /// Zeros of `F'` counted in `|ζ| > 1` (argument principle).
         zeros: i64,
     },
+    /// An odd number of nodes round (the grid's ring transforms take even
+    /// ones).
+    #[error("grid around = {around} is odd: the nodes round must be even, in 16..=8192")]
+    OddAround {
+        /// The nodes round given.
+        around: usize,
+    },
     /// A grid setting out of its working range.
     #[error("grid {what} = {value} is outside {min}..={max}")]
     BadGrid {

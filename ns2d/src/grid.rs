@@ -18,6 +18,26 @@ pub const AROUND: std::ops::RangeInclusive<usize> = 16..=8192;
 /// The nodes from the wall out a grid may have ([`GridSpec::radial`]).
 pub const RADIAL: std::ops::RangeInclusive<usize> = 8..=8192;
 
+/// Checks a grid's nodes round: even and in [`AROUND`].
+///
+/// # Errors
+/// [`NsError::BadGrid`] outside the range, [`NsError::OddAround`] for an
+/// odd count within it.
+pub fn check_around(around: usize) -> Result<(), NsError> {
+    if !AROUND.contains(&around) {
+        return Err(NsError::BadGrid {
+            what: "around",
+            value: around as f64,
+            min: *AROUND.start() as f64,
+            max: *AROUND.end() as f64,
+        });
+    }
+    if around % 2 != 0 {
+        return Err(NsError::OddAround { around });
+    }
+    Ok(())
+}
+
 /// Resolution of an [`OGrid`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GridSpec {
@@ -75,13 +95,8 @@ impl OGrid {
     /// [`NsError::BadGrid`] for a resolution out of range,
     /// [`NsError::NoStretching`] for a first cell no finer than uniform.
     pub fn new(map: &SectionMap, spec: GridSpec) -> Result<Self, NsError> {
+        check_around(spec.around)?;
         let checks = [
-            (
-                "around",
-                spec.around as f64,
-                *AROUND.start() as f64,
-                *AROUND.end() as f64,
-            ),
             (
                 "radial",
                 spec.radial as f64,
@@ -100,14 +115,6 @@ impl OGrid {
                     max,
                 });
             }
-        }
-        if spec.around % 2 != 0 {
-            return Err(NsError::BadGrid {
-                what: "around (must be even)",
-                value: spec.around as f64,
-                min: *AROUND.start() as f64,
-                max: *AROUND.end() as f64,
-            });
         }
         let (nt, nr) = (spec.around, spec.radial);
         let RingSpacing {

@@ -104,7 +104,7 @@ pub use contour::Contour;
 pub use deformation::{trigonometric_terms, Deformation, MapState};
 pub use error::NsError;
 pub use flow::{Flow, WallLoads};
-pub use grid::{GridSpec, OGrid, AROUND, RADIAL};
+pub use grid::{check_around, GridSpec, OGrid, AROUND, RADIAL};
 pub use history::{ForceHistory, WakeStatistics};
 pub use motion::{FrameState, Motion, PlungePitch, RigidField, SteadyStream};
 /// The complex numbers of the solver's interface (positions, velocities

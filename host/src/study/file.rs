@@ -343,11 +343,11 @@ impl StudyFile {
         if t.local.jobs == Some(0) {
             return Err(setting("local", "jobs", "0", "at least 1 case at a time"));
         }
-        if t.study.name.as_ref().is_some_and(|n| n.trim().is_empty()) {
+        if let Some(blank) = t.study.name.as_ref().filter(|n| n.trim().is_empty()) {
             return Err(setting(
                 "study",
                 "name",
-                "\"\"",
+                &format!("{blank:?}"),
                 "a name for the report and the Slurm jobs; or leave the key out for the file's name",
             ));
         }
@@ -755,7 +755,7 @@ mod tests {
         );
         assert!(
             e("[grid]\nwing.semi_span_m = [0.1]\n[study]\nname = \" \"\n")
-                .starts_with("[study] name = \"\": a name for the report")
+                .starts_with("[study] name = \" \": a name for the report")
         );
         let big = "[grid]\nwing.semi_span_m = [0.1, 0.11, 0.12, 0.13, 0.14, 0.15, 0.16, 0.17, \
                    0.18, 0.19, 0.2]\nflight.speed_m_s = [1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]\n\

@@ -172,9 +172,6 @@ fn aero2d_reports_thrust_beside_garrick() {
     assert!(String::from_utf8_lossy(&bad.stderr).contains("--reduced-frequency"));
 }
 
-/// `fwav system-analysis` on a coarse wing: a JSON summary, the files the
-/// disciplines take (the section history is read back by `fwav aero2d
-/// --deformation`), the ParaView series; a bad field is named.
 /// A thin-line run kept attached whose leading edge would have shed is
 /// marked doubtful: past the flat plate's critical suction parameter,
 /// 0.11 (`FWAV_LESP_CRITICAL`, after Ramesh, Gopalarathnam, Granlund, Ol &
@@ -227,6 +224,9 @@ fn an_attached_run_past_the_critical_suction_is_doubtful() {
     assert_eq!(v["warnings"], serde_json::json!([]), "{v}");
 }
 
+/// `fwav system-analysis` on a coarse wing: a JSON summary, the files the
+/// disciplines take (the section history is read back by `fwav aero2d
+/// --deformation`), the ParaView series; a bad field is named.
 #[test]
 fn system_analysis_writes_what_the_disciplines_take() {
     let dir = crate::program::scratch("system");

@@ -180,12 +180,12 @@ impl ViscousSection {
     /// Each of `samples`' shapes ([`Self::deformation`]) mapped, the pitch
     /// axis `pivot` put at the origin: the map and the angles of its
     /// points on the unit circle.
-    fn shape_maps(
+    pub(super) fn shape_maps(
         &self,
         pivot: f64,
         samples: &[Vec<(f64, f64)>],
     ) -> Result<Vec<(SectionMap, Vec<f64>)>, ViscousError> {
-        let terms = self.laurent_terms();
+        let terms = self.laurent_terms()?;
         let n = samples.len();
         let shift = |z: &Complex64| (z.re - pivot, z.im);
         samples
