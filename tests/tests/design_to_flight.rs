@@ -38,8 +38,9 @@ fn steady(report: &Report) -> &SteadyState {
 fn the_coarse_designs_kinematics_fly_in_hil_sim() {
     let mut config =
         SystemConfig::from_toml(include_str!("../../configs/coarse.toml")).expect("coarse case");
-    // The second cycle's disciplines only confirm the first's answer (15 s
-    // of CI's time); the final design is cycle 2's analysis either way.
+    // One cycle of the disciplines (the whole design converges in cycle 3,
+    // host/tests/integration/design.rs, at 18 s a cycle of CI's time): the
+    // final design is cycle 2's analysis of cycle 1's proposal.
     config.mdois.max_cycles = 1;
     let dir = std::env::temp_dir().join(format!("fwav-design-to-flight-{}", std::process::id()));
     std::fs::remove_dir_all(&dir).ok();
