@@ -47,6 +47,22 @@ impl Shown {
         Self(format!("{x:.p$e}").parse().unwrap_or(x))
     }
 
+    /// A least value a message suggests (`set x to at least ...`), `x`
+    /// rounded up to `decimals` places, so that the value as printed
+    /// passes: a speed of 0.122522 m/s is suggested as 0.123, where
+    /// `{:.3}` wrote 0.123 for 0.12249 too, below what it must be.
+    pub fn at_least(x: f64, decimals: i32) -> Self {
+        let scale = 10f64.powi(decimals);
+        Self((x * scale).ceil() / scale)
+    }
+
+    /// A most value a message suggests, `x` rounded down to `decimals`
+    /// places ([`Self::at_least`]'s other side).
+    pub fn at_most(x: f64, decimals: i32) -> Self {
+        let scale = 10f64.powi(decimals);
+        Self((x * scale).floor() / scale)
+    }
+
     /// Whether the number is written in plain decimals: its magnitude in
     /// `[1e-3, 1e6)`, or 0, infinite or NaN.
     pub fn is_plain(self) -> bool {
@@ -92,6 +108,16 @@ impl fmt::Display for Shown {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A suggested bound passes as printed.
+    #[test]
+    fn suggested_bounds_pass_as_printed() {
+        assert_eq!(Shown::at_least(0.122_522, 3).to_string(), "0.123");
+        assert_eq!(Shown::at_least(0.122_49, 3).to_string(), "0.123");
+        assert_eq!(Shown::at_most(10.610_3, 2).to_string(), "10.61");
+        assert_eq!(Shown::at_most(10.619_9, 2).to_string(), "10.61");
+        assert_eq!(Shown::at_least(2.0, 2).to_string(), "2");
+    }
 
     /// Every magnitude at the edges of the plain range, and the values a
     /// message meets.

@@ -49,7 +49,7 @@ pub mod template;
 pub mod topology;
 pub mod wing;
 
-use fwav_settings::SettingError;
+use fwav_settings::{SettingError, Shown};
 use serde::{Deserialize, Serialize};
 
 use crate::aero2d::viscous::{ViscousError, TRAILING_EDGE_LAYER};
@@ -147,7 +147,7 @@ pub enum ConfigError {
          ({chord_m} m chord) flaps at reduced frequency {reduced_frequency:.4}, a period of \
          {period_chords:.0} chords, so each 2D analysis of the aerodynamic discipline would \
          take {steps} time steps (at most {max}); set {key} to at least \
-         {min_frequency_hz:.2} Hz or lower flight.speed_m_s"
+         {min_frequency_hz} Hz or lower flight.speed_m_s"
     )]
     SectionWork {
         /// The key of the lowest frequency analysed
@@ -167,7 +167,8 @@ pub enum ConfigError {
         steps: usize,
         /// The most allowed.
         max: usize,
-        /// The lowest frequency that fits, Hz.
+        /// The lowest frequency that fits, Hz, rounded up to 0.01
+        /// ([`Shown::at_least`]: it passes as printed).
         min_frequency_hz: f64,
     },
     /// A flapping frequency so high for the flight speed and the
@@ -178,7 +179,7 @@ pub enum ConfigError {
          ({chord_m} m chord) flaps at reduced frequency {reduced_frequency:.4} (k = pi f c / U), \
          past the 2D section models' {max}: the flight is nearly hover for this flapping, and \
          the aerodynamic discipline's models scale the flow by the flight speed; set {key} to at \
-         most {max_frequency_hz:.2} Hz or flight.speed_m_s to at least {min_speed_m_s:.3} m/s"
+         most {max_frequency_hz} Hz or flight.speed_m_s to at least {min_speed_m_s} m/s"
     )]
     SectionBeyondModels {
         /// The key of the highest frequency analysed
@@ -194,9 +195,10 @@ pub enum ConfigError {
         reduced_frequency: f64,
         /// The most the models take.
         max: f64,
-        /// The highest frequency that fits, Hz.
+        /// The highest frequency that fits, Hz, rounded down to 0.01
+        /// ([`Shown::at_most`]: it passes as printed).
         max_frequency_hz: f64,
-        /// The lowest flight speed that fits, m/s.
+        /// The lowest flight speed that fits, m/s, rounded up to 0.001.
         min_speed_m_s: f64,
     },
     /// `design.section_model = "ns"` at a mid-span Reynolds number its
@@ -330,8 +332,8 @@ impl SystemConfig {
                 chord_m: case.chord,
                 reduced_frequency,
                 max,
-                max_frequency_hz,
-                min_speed_m_s: case.flight.speed * reduced_frequency / max,
+                max_frequency_hz: Shown::at_most(max_frequency_hz, 2).0,
+                min_speed_m_s: Shown::at_least(case.flight.speed * reduced_frequency / max, 3).0,
             }),
             _ => Ok(()),
         }
@@ -367,7 +369,7 @@ impl SystemConfig {
                 period_chords: std::f64::consts::PI / reduced_frequency,
                 steps,
                 max,
-                min_frequency_hz,
+                min_frequency_hz: Shown::at_least(min_frequency_hz, 2).0,
             }),
             _ => Ok(()),
         }
@@ -465,6 +467,34 @@ mod tests {
             e.to_string(),
             "design.amplitude_deg = [0, 1, 2] must be increasing, each in (0, 80] deg"
         );
+    }
+
+    /// A flight nearly in hover for its flapping is refused naming two
+    /// levers, each of which passes as printed (rounded toward the
+    /// allowed side: 0.1225 m/s is suggested as 0.123, not 0.122).
+    #[test]
+    fn a_flight_nearly_in_hover_names_levers_that_pass() {
+        let e = SystemConfig::from_toml("[flight]\nspeed_m_s = 0.1\n").unwrap_err();
+        let ConfigError::SectionBeyondModels {
+            max_frequency_hz,
+            min_speed_m_s,
+            ..
+        } = e
+        else {
+            panic!("{e}")
+        };
+        let text = e.to_string();
+        assert!(
+            text.contains(&format!("at most {max_frequency_hz} Hz"))
+                && text.contains(&format!("at least {min_speed_m_s} m/s")),
+            "{text}"
+        );
+        SystemConfig::from_toml(&format!("[flight]\nspeed_m_s = {min_speed_m_s}\n")).unwrap();
+        SystemConfig::from_toml(&format!(
+            "[flight]\nspeed_m_s = 0.1\n[kinematics]\nfrequency_hz = 9.0\n\
+             [design]\nfrequency_hz = [8.0, 9.0, {max_frequency_hz}]\n"
+        ))
+        .unwrap();
     }
 
     /// A partial `[design]` table keeps the other levels and weights.

@@ -31,6 +31,7 @@
 //! it takes the deformation as the plate's mid-line, on a grid that moves
 //! with it ([`SectionCase::modelled_section`]).
 
+use fwav_settings::Shown;
 use serde::{Deserialize, Serialize};
 
 use crate::aero2d::camber::{CamberError, CamberHistory};
@@ -199,7 +200,7 @@ pub enum EvaluationError {
     #[error(
         "{frequency_hz} Hz flaps the section at reduced frequency {reduced_frequency:.4}, past \
          the 2D section models' {max} (the flight is nearly hover for this flapping, and the \
-         models scale the flow by the flight speed); at most {max_frequency_hz:.3} Hz at this \
+         models scale the flow by the flight speed); at most {max_frequency_hz} Hz at this \
          flight speed"
     )]
     BeyondModels {
@@ -209,14 +210,15 @@ pub enum EvaluationError {
         reduced_frequency: f64,
         /// The most the models take ([`MAX_REDUCED_FREQUENCY`]).
         max: f64,
-        /// The highest frequency that fits, Hz.
+        /// The highest frequency that fits, Hz, rounded down to 0.001
+        /// ([`Shown::at_most`]: it passes as printed).
         max_frequency_hz: f64,
     },
     /// A frequency so low for the section and flight speed that a period
     /// is hundreds of chords: the analysis would take too many steps.
     #[error(
         "{frequency_hz} Hz flaps the section at reduced frequency {reduced_frequency:.4}: \
-         {steps} time steps an analysis (at most {max}); at least {min_frequency_hz:.3} Hz \
+         {steps} time steps an analysis (at most {max}); at least {min_frequency_hz} Hz \
          is needed at this flight speed"
     )]
     TooManySteps {
@@ -228,7 +230,8 @@ pub enum EvaluationError {
         steps: usize,
         /// The most allowed ([`MAX_STEPS`]).
         max: usize,
-        /// The lowest frequency that fits.
+        /// The lowest frequency that fits, Hz, rounded up to 0.001
+        /// ([`Shown::at_least`]: it passes as printed).
         min_frequency_hz: f64,
     },
 }
@@ -305,7 +308,7 @@ impl SectionCase {
                 frequency_hz,
                 reduced_frequency: k,
                 max: MAX_REDUCED_FREQUENCY,
-                max_frequency_hz: frequency_hz * MAX_REDUCED_FREQUENCY / k,
+                max_frequency_hz: Shown::at_most(frequency_hz * MAX_REDUCED_FREQUENCY / k, 3).0,
             });
         }
         let s = self.settings(k);
@@ -321,7 +324,7 @@ impl SectionCase {
             reduced_frequency: k,
             steps,
             max: MAX_STEPS,
-            min_frequency_hz: frequency_hz * min_k / k,
+            min_frequency_hz: Shown::at_least(frequency_hz * min_k / k, 3).0,
         })
     }
 
