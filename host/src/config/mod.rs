@@ -264,7 +264,8 @@ impl SystemConfig {
     /// the file's order (the first key outside is the error), then the
     /// keys that must fit together (the planform, the objective's weights,
     /// `topology.sample_every` within `analysis.steps_per_cycle`, the
-    /// section analysis's work at the lowest frequency).
+    /// section analysis's work at the lowest frequency and its reach at
+    /// the highest, the section's Reynolds number for the viscous model).
     pub fn check(&self) -> Result<(), ConfigError> {
         wing::WING.check(&self.wing)?;
         kinematics::KINEMATICS.check(&self.kinematics)?;
@@ -277,8 +278,7 @@ impl SystemConfig {
         actuator::ACTUATOR.check(&self.actuator)?;
         wing::check_planform(&self.wing)?;
         design::check_weights(&self.design)?;
-        self.check_section_work()?;
-        self.check_section_reach()?;
+        self.check_section_frequencies()?;
         self.check_section_resolution()?;
         Ok(())
     }
@@ -307,60 +307,32 @@ impl SystemConfig {
         }
     }
 
-    /// Refuses frequencies past the 2D section models' reduced frequency:
-    /// the higher of the initial frequency and the highest frequency
-    /// level (the discipline analyses both; its candidates lie between the
-    /// levels).
-    fn check_section_reach(&self) -> Result<(), ConfigError> {
+    /// Refuses frequencies the aerodynamic discipline's 2D analyses cannot
+    /// take. The discipline analyses the initial frequency and its
+    /// candidates, which lie between the lowest and the highest level: at
+    /// the lower of the initial frequency and the lowest level an analysis
+    /// must end (a period of hundreds of chords would not), and at the
+    /// higher of it and the highest level the section's reduced frequency
+    /// must stay within the 2D models' reach.
+    fn check_section_frequencies(&self) -> Result<(), ConfigError> {
         let case = self.section_case();
-        let top = self.design.space.frequency_hz[self.design.space.frequency_hz.len() - 1];
-        let (key, frequency_hz) = if self.kinematics.frequency >= top {
-            ("kinematics.frequency_hz", self.kinematics.frequency)
+        let levels = &self.design.space.frequency_hz;
+        let initial = ("kinematics.frequency_hz", self.kinematics.frequency);
+        let lowest = levels[0];
+        let (key, frequency_hz) = if initial.1 <= lowest {
+            initial
         } else {
-            ("design.frequency_hz (highest level)", top)
+            ("design.frequency_hz (lowest level)", lowest)
         };
-        match case.check_work(frequency_hz) {
-            Err(EvaluationError::BeyondModels {
-                reduced_frequency,
-                max,
-                max_frequency_hz,
-                ..
-            }) => Err(ConfigError::SectionBeyondModels {
-                key,
-                frequency_hz,
-                speed_m_s: case.flight.speed,
-                chord_m: case.chord,
-                reduced_frequency,
-                max,
-                max_frequency_hz: Shown::at_most(max_frequency_hz, 2).0,
-                min_speed_m_s: Shown::at_least(case.flight.speed * reduced_frequency / max, 3).0,
-            }),
-            _ => Ok(()),
-        }
-    }
-
-    /// Refuses frequencies whose 2D analyses in the aerodynamic discipline
-    /// would not end: the lower of the initial frequency and the lowest
-    /// frequency level (the discipline analyses both).
-    fn check_section_work(&self) -> Result<(), ConfigError> {
-        let case = self.section_case();
-        let (key, frequency_hz) = if self.kinematics.frequency <= self.design.space.frequency_hz[0]
+        if let Err(EvaluationError::TooManySteps {
+            reduced_frequency,
+            steps,
+            max,
+            min_frequency_hz,
+            ..
+        }) = case.check_work(frequency_hz)
         {
-            ("kinematics.frequency_hz", self.kinematics.frequency)
-        } else {
-            (
-                "design.frequency_hz (lowest level)",
-                self.design.space.frequency_hz[0],
-            )
-        };
-        match case.check_work(frequency_hz) {
-            Err(EvaluationError::TooManySteps {
-                reduced_frequency,
-                steps,
-                max,
-                min_frequency_hz,
-                ..
-            }) => Err(ConfigError::SectionWork {
+            return Err(ConfigError::SectionWork {
                 key,
                 frequency_hz,
                 speed_m_s: case.flight.speed,
@@ -370,9 +342,33 @@ impl SystemConfig {
                 steps,
                 max,
                 min_frequency_hz: Shown::at_least(min_frequency_hz, 2).0,
-            }),
-            _ => Ok(()),
+            });
         }
+        let highest = levels[levels.len() - 1];
+        let (key, frequency_hz) = if initial.1 >= highest {
+            initial
+        } else {
+            ("design.frequency_hz (highest level)", highest)
+        };
+        if let Err(EvaluationError::BeyondModels {
+            reduced_frequency,
+            max,
+            max_frequency_hz,
+            ..
+        }) = case.check_work(frequency_hz)
+        {
+            return Err(ConfigError::SectionBeyondModels {
+                key,
+                frequency_hz,
+                speed_m_s: case.flight.speed,
+                chord_m: case.chord,
+                reduced_frequency,
+                max,
+                max_frequency_hz: Shown::at_most(max_frequency_hz, 2).0,
+                min_speed_m_s: Shown::at_least(case.flight.speed * reduced_frequency / max, 3).0,
+            });
+        }
+        Ok(())
     }
 
     /// The mid-span section the aerodynamic discipline analyses (chord
