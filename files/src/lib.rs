@@ -148,6 +148,47 @@ pub fn create_new<E: From<WriteError>>(
     Ok(())
 }
 
+/// Why a file cannot be made new under a name ([`check_new`]).
+#[derive(Debug, thiserror::Error)]
+pub enum NewFileError {
+    /// Something has the name (a file, a directory, a link).
+    #[error("{0} exists")]
+    Taken(PathBuf),
+    /// The name's directory is not one.
+    #[error("{0} is not a directory")]
+    NotADirectory(PathBuf),
+    /// The name's directory cannot be read (missing, no permission).
+    #[error("its directory {dir}: {source}")]
+    Directory {
+        /// The directory.
+        dir: PathBuf,
+        /// The file system's reason.
+        source: std::io::Error,
+    },
+}
+
+/// Checks, before a run that ends by writing it, that `path` can be made
+/// new: nothing has the name, and its directory is one. The commands
+/// word the error for their flag; [`create_new`] checks again when it
+/// writes.
+///
+/// # Errors
+/// [`NewFileError`], the first that applies.
+pub fn check_new(path: &Path) -> Result<(), NewFileError> {
+    if std::fs::symlink_metadata(path).is_ok() {
+        return Err(NewFileError::Taken(path.to_path_buf()));
+    }
+    let dir = directory_of(path);
+    match std::fs::metadata(dir) {
+        Ok(m) if m.is_dir() => Ok(()),
+        Ok(_) => Err(NewFileError::NotADirectory(dir.to_path_buf())),
+        Err(source) => Err(NewFileError::Directory {
+            dir: dir.to_path_buf(),
+            source,
+        }),
+    }
+}
+
 /// The directory `path` is in: its parent, or the current directory for
 /// a bare name.
 pub fn directory_of(path: &Path) -> &Path {

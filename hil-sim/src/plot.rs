@@ -7,7 +7,7 @@ use plotters::prelude::*;
 use plotters_backend::DrawingErrorKind;
 use plotters_bitmap::BitMapBackendError;
 
-use fwav_files::{create_new, directory_of, WriteError};
+use fwav_files::{create_new, NewFileError, WriteError};
 
 use crate::metrics::TracePoint;
 
@@ -69,20 +69,13 @@ impl From<DrawingAreaErrorKind<BitMapBackendError>> for PlotError {
 /// it: nothing has the name ([`PlotError::Exists`]) and its directory is
 /// one ([`PlotError::File`]).
 pub fn check_new(png: &Path) -> Result<(), PlotError> {
-    if png.symlink_metadata().is_ok() {
-        return Err(WriteError::Exists {
-            path: png.to_path_buf(),
+    fwav_files::check_new(png).map_err(|e| match e {
+        NewFileError::Taken(path) => PlotError::Exists(WriteError::Exists { path }),
+        not_a_directory @ NewFileError::NotADirectory(_) => {
+            PlotError::File(not_a_directory.to_string().into())
         }
-        .into());
-    }
-    let dir = directory_of(png);
-    match std::fs::metadata(dir) {
-        Ok(m) if m.is_dir() => Ok(()),
-        Ok(_) => Err(PlotError::File(
-            format!("{} is not a directory", dir.display()).into(),
-        )),
-        Err(e) => Err(PlotError::File(Box::new(e))),
-    }
+        NewFileError::Directory { source, .. } => PlotError::File(Box::new(source)),
+    })
 }
 
 /// Draws the last second of `trace` to the new file `png`

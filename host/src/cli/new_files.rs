@@ -8,29 +8,26 @@
 use std::path::Path;
 
 use anyhow::{bail, Result};
-use fwav::files::directory_of;
+use fwav::files::{check_new, NewFileError};
 
 /// Refuses the first of `files` (`(flag, path)`) that exists, or whose
 /// directory does not, naming its flag.
 pub fn refuse_taken<'a>(files: impl IntoIterator<Item = (&'a str, &'a Path)>) -> Result<()> {
     for (flag, path) in files {
-        if std::fs::symlink_metadata(path).is_ok() {
-            bail!(
+        match check_new(path) {
+            Ok(()) => {}
+            Err(NewFileError::Taken(_)) => bail!(
                 "{flag} {}: the file exists (an existing file is never overwritten); \
                  choose a new name or remove it",
                 path.display()
-            );
-        }
-        let dir = directory_of(path);
-        match std::fs::metadata(dir) {
-            Ok(m) if m.is_dir() => {}
-            Ok(_) => bail!(
+            ),
+            Err(NewFileError::NotADirectory(dir)) => bail!(
                 "{flag} {}: {} is not a directory; choose another",
                 path.display(),
                 dir.display()
             ),
-            Err(e) => bail!(
-                "{flag} {}: its directory {}: {e}; make it first, or choose another",
+            Err(NewFileError::Directory { dir, source }) => bail!(
+                "{flag} {}: its directory {}: {source}; make it first, or choose another",
                 path.display(),
                 dir.display()
             ),
