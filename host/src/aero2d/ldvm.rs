@@ -9,18 +9,22 @@
 //!   `An = -2/pi int W cos(n theta) dtheta`, `W` the normal velocity of the
 //!   flow relative to the plate without the bound vorticity (wake-induced
 //!   velocity, freestream, plunge and pitch motion).
-//! - One trailing-edge vortex shed per step, placed a third of the way from
-//!   the trailing edge to the previous one (Ramesh et al.), its strength set
-//!   by Kelvin's theorem; since `W` is linear in it, solved exactly.
+//! - One trailing-edge vortex shed per step, placed [`EDGE_PLACEMENT`]
+//!   (0.232) of the way from the trailing edge to the previous one, its
+//!   strength set by Kelvin's theorem; since `W` is linear in it, solved
+//!   exactly. Ramesh et al. place it a third of the way; see "The wake
+//!   next to the edge" below for why not.
 //! - Leading-edge vortices (switched on by [`Settings::lesp_critical`]): when
 //!   the leading-edge suction parameter `|A0|` would exceed its critical
 //!   value, a vortex is also shed at the leading edge (half a step
 //!   downstream with the relative flow, or a third of the way to the last
 //!   one while shedding continues) and both new strengths follow from
 //!   Kelvin and `A0 = +-LESP_crit`, two linear equations.
-//! - Free vortices with a Vatistas (n = 2) core of radius `1.3 U dt`,
-//!   convected by forward Euler with the velocity induced by the bound and
-//!   free vortices plus the freestream.
+//! - Free vortices with a Vatistas (n = 2) core of radius `1.3 U dt`
+//!   among themselves (Ramesh et al.), convected by forward Euler with the
+//!   velocity induced by the bound and free vortices plus the freestream.
+//!   On the chord's stations a free vortex's core is the width of the
+//!   chord's panel at its foot (`Chord::core2`), not `1.3 U dt`.
 //! - Loads from the pressure jump of unsteady Bernoulli,
 //!   `dp = rho (V_t gamma + d/dt int_0^x gamma)`, integrated over the bound
 //!   vortices: normal force `sum V_t Gamma_j + d/dt sum Gamma_j (c - x_j)`
@@ -32,6 +36,49 @@
 //!   leading edge, so the potential jump along the plate starts from their
 //!   total circulation. Time derivatives are backward differences, so all loads and the
 //!   kinematics that multiply them are taken at the half step.
+//!
+//! ## The wake next to the edge
+//! The chord answers a wake vortex at a distance `s` behind its trailing
+//! edge as `s^(-1/2)` (the bound circulation a vortex induces on a plate,
+//! `Γ (sqrt((1 + s)/s) - 1)`, the kernel of the wake integrals of Wagner's
+//! and Theodorsen's problems: von Kármán & Sears 1938, *J. Aeronaut. Sci.*
+//! 5). The shed vortices are a point-by-point sum of the continuous
+//! wake sheet against that kernel, one point a step, the newest at `a`
+//! steps' travel from the edge; such a sum's leading error is
+//! `ζ(1/2, a) sqrt(U dt)` (the Hurwitz zeta function: Navot 1961, *J.
+//! Math. Phys.* 40, the Euler–Maclaurin expansion for an integrand with
+//! an algebraic end singularity; Lyness & Ninham 1967, *Math. Comp.*
+//! 21). Placed a fraction `f` of the way to the previous vortex, which
+//! has travelled a step since it was placed, the newest settles at
+//! `a = f / (1 - f)`: Ramesh et al.'s third is `a = 1/2`, `ζ = -0.605`,
+//! and the loads converged only as `sqrt(dt)` (Garrick's plunge at k = 1,
+//! h = 0.01 c, the power +10.3 %, +7.4 %, +5.4 % high at dt, dt/2,
+//! dt/4). [`EDGE_PLACEMENT`] puts the newest at the zero of `ζ(1/2, a)`,
+//! `a* = 0.30272`, so that term vanishes. The free vortices' core of
+//! `1.3 U dt` also smoothed this kernel over the newest dozen vortices,
+//! another `sqrt(dt)` term of about half the error; on the chord's
+//! stations a vortex's core is instead the chord's own resolution at
+//! its foot, the width of the panel there, `(c/2)(π/M) sin θ`, which
+//! vanishes towards the edges as the stations crowd there and keeps the
+//! downwash resolved by the stations where a vortex passes over the
+//! chord (with no core there, a wake vortex swept back over the plate
+//! took a flapping section's power to 29 times its value). Measured
+//! (`fwav validate --only aero2d/ldvm`, before and after): Garrick's
+//! plunge at k = 1, h = 0.05 c, thrust +6.18 % and efficiency -4.15 %
+//! against theory, now +0.12 % and -0.57 %; Wagner's lift at 1 and 5
+//! semichords +1.95 % (at dt 0.00125) and +1.53 % (at 0.01), now +0.32 %
+//! and +0.04 % (+0.26 % at s = 1 with dt 0.01); the LDVM paper's case 1
+//! mean and peak lift +14.1 % and +9.5 % against its CFD, now +6.9 % and
+//! +2.1 %. Garrick's plunge at k = 2, h = 0.05 c (`fwav aero2d`'s step,
+//! 0.015): the power +16.6 % and efficiency -9.9 % from theory (the
+//! figures issue 23 quotes), now +4.1 % and -3.1 %, the plunge's own
+//! nonlinearity (the same at half and a quarter of the step). Not
+//! mended: a flapping section that sheds leading-edge vortices (the
+//! discipline's L18 rows of the built-in design, `fwav kinematics`)
+//! still changes its power when the step is halved: by 4.9 % on average
+//! (12.7 % at most) from dt to dt/2 and 5.8 % (18.3 %) from dt/2 to dt/4,
+//! against 5.0 % (9.6 %) and 6.4 % (15.5 %) before; its thrust by about
+//! 1 %. The leading-edge vortices keep Ramesh et al.'s third.
 //!
 //! Cost per step is O(M N_w + N_w^2) for `M` chord points and `N_w` wake
 //! vortices.
@@ -49,6 +96,12 @@ use loads::LoadIntegrals;
 pub(crate) use vortex::induced;
 pub use vortex::FreeVortex;
 use vortex::{far_proxies, near_start};
+
+/// How far from the trailing edge towards the last shed vortex the new
+/// one is placed: `a* / (1 + a*)`, with `a* = 0.302721828598366` the zero
+/// of the Hurwitz zeta function `ζ(1/2, a)` (module docs, "The wake next
+/// to the edge"; Ramesh et al. 2014 take 1/3).
+pub const EDGE_PLACEMENT: f64 = 0.302_721_828_598_366 / 1.302_721_828_598_366;
 
 /// Numerical settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -154,6 +207,30 @@ struct Chord {
     stations: Vec<(f64, f64, f64)>,
     /// `(d eta/dx, d eta/dt)` at each station.
     slopes: Vec<(f64, f64)>,
+    /// The camber line's leading edge, and the vector from it to the
+    /// trailing edge.
+    leading_edge: (f64, f64),
+    along: (f64, f64),
+    /// The stations' spacing in `theta`, `pi / M`.
+    spacing: f64,
+}
+
+impl Chord {
+    /// The squared core radius with which the stations see a free vortex:
+    /// the width of the chord's panel at the vortex's foot on the chord
+    /// line, `(c/2) (pi/M) sin(theta)`, `theta` held within the end
+    /// stations' (module docs, "The wake next to the edge").
+    fn core2(&self, v: &FreeVortex) -> f64 {
+        let (ax, ay) = self.along;
+        let length2 = ax * ax + ay * ay;
+        let foot = ((v.x - self.leading_edge.0) * ax + (v.y - self.leading_edge.1) * ay) / length2;
+        // sin(theta) at x = (1 - cos theta)/2 is 2 sqrt(x (1 - x)); the
+        // end stations sit half a spacing from the edges.
+        let end = (0.5 * self.spacing).sin();
+        let sin_theta = (2.0 * (foot * (1.0 - foot)).max(0.0).sqrt()).max(end);
+        let radius = 0.5 * self.spacing * sin_theta;
+        radius * radius * length2
+    }
 }
 
 /// The free vortices that induce velocity during one step: the near wakes
@@ -172,6 +249,18 @@ impl Sources {
     fn induced_at(&self, x: f64, y: f64, core2: f64) -> (f64, f64) {
         let (mut u, mut v) = (0.0, 0.0);
         for fv in &self.vortices {
+            let (du, dv) = induced(fv, x, y, core2);
+            u += du;
+            v += dv;
+        }
+        (u, v)
+    }
+
+    /// Velocity induced at `(x, y)` with each vortex's own squared core
+    /// (`cores2`, in the order of `vortices`).
+    fn induced_with(&self, x: f64, y: f64, cores2: &[f64]) -> (f64, f64) {
+        let (mut u, mut v) = (0.0, 0.0);
+        for (fv, &core2) in self.vortices.iter().zip(cores2) {
             let (du, dv) = induced(fv, x, y, core2);
             u += du;
             v += dv;
@@ -402,7 +491,18 @@ impl Ldvm {
                 (xb, x + eta * pose.sa, y + eta * pose.ca)
             })
             .collect();
-        Chord { stations, slopes }
+        let leading_edge = self.edge(0.0, pose);
+        let trailing_edge = self.edge(1.0, pose);
+        Chord {
+            stations,
+            slopes,
+            leading_edge,
+            along: (
+                trailing_edge.0 - leading_edge.0,
+                trailing_edge.1 - leading_edge.1,
+            ),
+            spacing: PI / self.theta.len() as f64,
+        }
     }
 
     /// Global position of the camber line's point at station `xb` (0: the
@@ -432,8 +532,9 @@ impl Ldvm {
         }
     }
 
-    /// The new vortices of unit strength: the trailing-edge one, a third of
-    /// the way from the trailing edge `te` to the last one, and with LESP
+    /// The new vortices of unit strength: the trailing-edge one,
+    /// [`EDGE_PLACEMENT`] of the way from the trailing edge `te` to the
+    /// last one, and with LESP
     /// shedding on a candidate leading-edge one: a third of the way to the
     /// last one while shedding goes on, else half a step downstream of the
     /// leading edge with the flow relative to it (Ramesh et al. 2014).
@@ -447,7 +548,10 @@ impl Ldvm {
         } = pose.kinematics;
         let (sa, ca, pivot) = (pose.sa, pose.ca, self.motion.pivot);
         let (nx, ny) = match self.wake.last() {
-            Some(last) => (te.0 + (last.x - te.0) / 3.0, te.1 + (last.y - te.1) / 3.0),
+            Some(last) => (
+                te.0 + (last.x - te.0) * EDGE_PLACEMENT,
+                te.1 + (last.y - te.1) * EDGE_PLACEMENT,
+            ),
             None => (te.0 + 0.5 * dt, te.1),
         };
         let lev_at = self.settings.lesp_critical.map(|_| {
@@ -490,8 +594,10 @@ impl Ldvm {
         let m = chord.stations.len();
         let mut w = vec![Vec::with_capacity(m); 1 + news.len()];
         let mut vt = vec![Vec::with_capacity(m); 1 + news.len()];
+        let cores2: Vec<f64> = sources.vortices.iter().map(|v| chord.core2(v)).collect();
+        let new_cores2: Vec<f64> = news.iter().map(|v| chord.core2(v)).collect();
         for (&(xb, x, y), &(slope, rate)) in chord.stations.iter().zip(&chord.slopes) {
-            let (du, dv) = sources.induced_at(x, y, self.core2);
+            let (du, dv) = sources.induced_with(x, y, &cores2);
             // The air relative to the surging section.
             let (u, v) = (1.0 + du - x_dot, dv);
             let relative = u * sa + v * ca - h_dot * ca + (xb - pivot) * alpha_dot;
@@ -499,8 +605,8 @@ impl Ldvm {
             // Camber: the normal tilts by -slope and moves at `rate`.
             w[0].push(relative - slope * tangential - rate);
             vt[0].push(tangential);
-            for (k, new) in news.iter().enumerate() {
-                let (du, dv) = induced(new, x, y, self.core2);
+            for (k, (new, &core2)) in news.iter().zip(&new_cores2).enumerate() {
+                let (du, dv) = induced(new, x, y, core2);
                 let unit_tangential = du * ca - dv * sa;
                 w[k + 1].push(du * sa + dv * ca - slope * unit_tangential);
                 vt[k + 1].push(unit_tangential);
@@ -630,4 +736,41 @@ fn superpose(known: &[f64], strengths: &[f64], per_unit: &[Vec<f64>]) -> Vec<f64
                     .sum::<f64>()
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::EDGE_PLACEMENT;
+
+    /// The Hurwitz zeta function `ζ(1/2, a)` by its Euler–Maclaurin
+    /// tail: the sum of `(j + a)^(-1/2)` to `n - 1`, less the tail's
+    /// integral `2 sqrt(n + a)`, plus its first two corrections (error
+    /// `O(n^(-7/2))`).
+    fn hurwitz_zeta_half(a: f64) -> f64 {
+        let n = 10_000;
+        let head: f64 = (0..n).map(|j| (j as f64 + a).powf(-0.5)).sum();
+        let x = n as f64 + a;
+        head - 2.0 * x.sqrt() + 0.5 * x.powf(-0.5) + x.powf(-1.5) / 24.0
+    }
+
+    /// The newest wake vortex settles at `a = f / (1 - f)` steps' travel
+    /// from the edge, where `ζ(1/2, a) = 0` (module docs, "The wake next
+    /// to the edge"). The sum is checked first on `ζ(1/2, 1) = ζ(1/2) =
+    /// -1.4603545088095868...` (DLMF 25.11.2 and Riemann's zeta at 1/2)
+    /// and `ζ(1/2, 1/2) = (sqrt(2) - 1) ζ(1/2)` (DLMF 25.11.11).
+    #[test]
+    fn the_newest_vortex_sits_at_the_zero_of_the_hurwitz_zeta() {
+        let riemann = -1.460_354_508_809_586_8;
+        assert!((hurwitz_zeta_half(1.0) - riemann).abs() < 1e-10);
+        let half = (2f64.sqrt() - 1.0) * riemann;
+        assert!((hurwitz_zeta_half(0.5) - half).abs() < 1e-10);
+        let a = EDGE_PLACEMENT / (1.0 - EDGE_PLACEMENT);
+        assert!(
+            hurwitz_zeta_half(a).abs() < 1e-10,
+            "{}",
+            hurwitz_zeta_half(a)
+        );
+        // Ramesh et al.'s third leaves the sqrt(dt) term of -0.605.
+        assert!((hurwitz_zeta_half(0.5) + 0.6049).abs() < 1e-4);
+    }
 }

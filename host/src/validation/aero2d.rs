@@ -161,8 +161,11 @@ pub fn ldvm_indicial_lift(dt: f64, s: f64) -> Result<f64, ValidationError> {
 const WAGNER_REFERENCE: &str = "Wagner (1925) indicial lift phi(s), exact \
      (Garrick's branch-cut integral, fwav::aero2d::theory::wagner; Jones' fit is 1.1% low at s = 1)";
 
-/// Wagner's function 1 semichord after the start, dt = 0.00125 (the
-/// nascent trailing-edge vortex needs it; `tests/aero2d.rs`), within 3%.
+/// Wagner's function 1 semichord after the start, dt = 0.00125, within
+/// 3% (the step the nascent trailing-edge vortex needed while the LDVM's
+/// loads converged as `sqrt(dt)`: +1.95% at it, +5.3% at 0.01; since the
+/// edge placement of 2026-12-07, `fwav::aero2d::ldvm` "The wake next to
+/// the edge", +0.32% at it and +0.26% at 0.01; `tests/aero2d.rs`).
 pub fn ldvm_wagner_s1() -> Validation {
     Validation {
         spec: Spec {

@@ -237,7 +237,9 @@ fn a_section_at_rest_in_the_stream_does_no_work() {
 }
 
 /// The input power on Garrick's plunge at k = 2, h = 0.05 c, where the
-/// issue found the LDVM's 16.6% above theory (Garrick 1936: CP 0.0645):
+/// issue found the LDVM's 16.6% above theory (Garrick 1936: CP 0.0645;
+/// +4.1% since 2026-12-07, `fwav::aero2d::ldvm` "The wake next to the
+/// edge"):
 /// the default 4 % plate at the FWAV's Reynolds number (15,000), 4
 /// cycles on 256 x 240 (8 s), within 10% of Garrick's (measured +6.0%;
 /// +6.4% on the exponential 384 x 320, the default until 2026-12-05,
