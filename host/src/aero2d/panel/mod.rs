@@ -24,9 +24,14 @@
 //!   segments (a doublet panel of strength `mu` is a vortex pair `-mu`,
 //!   `+mu` at its ends), so the shed vortex is `Gamma = mu_W - sum Gamma_old`
 //!   and Kelvin's theorem holds to round-off. `E` lies a third of the way
-//!   from the trailing edge to the last shed vortex (Ramesh et al. 2014, as
-//!   in [`super::ldvm`]), the first one half a step down the trailing-edge
-//!   bisector. The influence matrix `C` is constant in the body frame
+//!   from the trailing edge to the last shed vortex (Ramesh et al. 2014),
+//!   the first one half a step down the trailing-edge bisector. (The
+//!   LDVM, whose newest wake element is a point vortex where this one is
+//!   a panel reaching the edge, places it otherwise: [`super::ldvm`], "The
+//!   wake next to the edge". This wake's loads converge at first order:
+//!   NACA 0006 in Garrick's plunge at k = 1, h = 0.01 c, 160 panels, CT
+//!   +1.76 %, +1.00 %, +0.49 % and CP +2.98 %, +1.71 %, +0.84 % against
+//!   his at dt 0.015, 0.0075, 0.00375, 2026-12-07, a scratch run.) The influence matrix `C` is constant in the body frame
 //!   (factored once, dense LU from `faer`, re-factored each step only for a
 //!   [`ShapeHistory`]); the wake panel's changing column enters by
 //!   Sherman–Morrison;
