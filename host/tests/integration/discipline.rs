@@ -482,9 +482,9 @@ fn the_objective_divides_by_the_reference_given() {
 /// the attached-flow LDVM's (LESP off) on every row (measured: 3.2% at
 /// most, the panel higher, 27 s; 1.7%, the panel lower, before the LDVM's
 /// step convergence of 2026-12-07, `fwav::aero2d::ldvm` "The wake next to
-/// the edge", which took 3.2% to 4.5% off its attached CT). The table printed (`--nocapture`) also
-/// gives the LDVM with the discipline's shedding (LESP 0.11), whose
-/// difference is the shedding's.
+/// the edge", which took 3.2% to 4.5% off its attached CT). The table
+/// printed (`--nocapture`) also gives the LDVM with the discipline's
+/// shedding (LESP 0.11), whose difference is the shedding's.
 #[test]
 #[ignore = "a comparison of about a minute: `cargo test --release -p fwav --test integration -- --ignored --nocapture discipline::three_models`"]
 fn three_models_over_the_l18_rows() {
