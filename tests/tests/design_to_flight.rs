@@ -38,7 +38,7 @@ fn steady(report: &Report) -> &SteadyState {
 fn the_coarse_designs_kinematics_fly_in_hil_sim() {
     let mut config =
         SystemConfig::from_toml(include_str!("../../configs/coarse.toml")).expect("coarse case");
-    // One cycle of the disciplines (the whole design converges in cycle 3,
+    // One cycle of the disciplines (the whole design converges in cycle 2,
     // host/tests/integration/design.rs, at 18 s a cycle of CI's time): the
     // final design is cycle 2's analysis of cycle 1's proposal.
     config.mdois.max_cycles = 1;
