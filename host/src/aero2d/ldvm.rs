@@ -559,6 +559,9 @@ impl Ldvm {
             match (self.shedding, self.leading.last()) {
                 (true, Some(last)) => (le.0 + (last.x - le.0) / 3.0, le.1 + (last.y - le.1) / 3.0),
                 _ => {
+                    // The flow that carries the new vortex off the edge,
+                    // with the vortices' own core (as `convect` moves
+                    // them), not the chord's stations' (`Chord::core2`).
                     let (u, v) = sources.induced_at(le.0, le.1, self.core2);
                     let relative = (
                         1.0 + u - x_dot - pivot * sa * alpha_dot,

@@ -99,7 +99,9 @@ pub struct SectionCase {
     #[serde(default)]
     pub lesp_critical: Option<f64>,
     /// The flow model (LDVM in files written before it was chosen; not
-    /// written for the LDVM, so the evaluation cache's older keys hold).
+    /// written for the LDVM, so those files still read. The evaluation
+    /// cache's keys add the model's results revision:
+    /// `discipline::cache::key`).
     #[serde(default, skip_serializing_if = "SectionFlowModel::is_ldvm")]
     pub model: SectionFlowModel,
 }

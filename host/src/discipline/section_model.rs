@@ -81,7 +81,8 @@ impl SectionFlowModel {
     }
 
     /// Whether this is the LDVM (then the case is written as before the
-    /// model existed, so older evaluation caches still match).
+    /// model existed, so older section files still read; the evaluation
+    /// cache's keys carry each model's results revision besides).
     pub fn is_ldvm(&self) -> bool {
         matches!(self, Self::Ldvm)
     }

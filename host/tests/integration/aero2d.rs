@@ -131,7 +131,7 @@ fn wagner_lift_within_1_percent_at_1_and_2_semichords() {
 /// each halving of the step taking off the same fraction, 1/sqrt(2), of
 /// the error.
 #[test]
-fn garrick_loads_converge_at_first_order_in_the_step() {
+fn garrick_loads_within_1_percent_at_every_step() {
     let (k, h) = (1.0, 0.01);
     let period = PI / k;
     let (ct_garrick, cp_garrick, _) = garrick_plunge(k, h);

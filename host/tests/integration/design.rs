@@ -153,7 +153,7 @@ fn coarse_design_converges_writes_everything_and_resumes() {
     // placed its newest wake vortex a third of the way to the last and
     // gave the chord the vortices' 1.3 U dt core, so its loads converged
     // as sqrt(dt) (`fwav::aero2d::ldvm`, "The wake next to the edge";
-    // `aero2d::garrick_loads_converge_at_first_order_in_the_step`):
+    // `aero2d::garrick_loads_within_1_percent_at_every_step`):
     // cycle 1 took the RSM's +5 deg (2.673968) and cycle 2 went back to
     // the row, converging in cycle 3. Earlier on 2026-12-07 the LDVM's
     // deformation work was taken at the step's end, not the half step

@@ -15,7 +15,8 @@ use fwav::discipline::section::{EvaluationError, SectionCase, FWAV_LESP_CRITICAL
 /// the FWAV's mid-span section (c = 0.06 m, r = 0.075 m, 3 m/s) at the
 /// frequency that makes `k = pi f c / U = 1` and the amplitude that makes
 /// `h0 = r A = 0.05 c`: mean CT within 10% of Garrick's (the LDVM's own
-/// Garrick test shows +6.5% at this k). And flight speed and frequency
+/// Garrick validation shows +0.12% at this k; +6.18% before 2026-12-07,
+/// `fwav::aero2d::ldvm` "The wake next to the edge"). And flight speed and frequency
 /// doubled together give the same coefficients (same k, same sweep).
 #[test]
 fn section_evaluation_maps_flapping_to_garricks_plunge() {

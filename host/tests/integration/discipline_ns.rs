@@ -188,8 +188,9 @@ fn result(ct: f64) -> SectionResult {
 /// The cache never serves one model's result for the other, nor one
 /// grid's for another's, nor a rigid section's for a deforming one's
 /// (both models take the deformation); the Navier–Stokes model's result
-/// serves any critical LESP (it takes none); an LDVM case is keyed as
-/// before the model existed (older cache files still match).
+/// serves any critical LESP (it takes none); an LDVM case is written as
+/// before the model existed (its key adds the LDVM's results revision, so
+/// cache files from before 2026-12-07's LDVM changes are recomputed).
 #[test]
 fn evaluation_cache_keeps_the_models_apart() {
     let design = FlappingKinematics::INITIAL;
