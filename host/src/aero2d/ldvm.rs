@@ -75,10 +75,16 @@
 //! nonlinearity (the same at half and a quarter of the step). Not
 //! mended: a flapping section that sheds leading-edge vortices (the
 //! discipline's L18 rows of the built-in design, `fwav kinematics`)
-//! still changes its power when the step is halved: by 4.9 % on average
-//! (12.7 % at most) from dt to dt/2 and 5.8 % (18.3 %) from dt/2 to dt/4,
-//! against 5.0 % (9.6 %) and 6.4 % (15.5 %) before; its thrust by about
-//! 1 %. The leading-edge vortices keep Ramesh et al.'s third.
+//! still changes its power when the step is halved: by 4.8 % on average
+//! (10.9 % at most) from dt to dt/2, against 5.0 % (9.6 %) before, and
+//! its thrust by about 1 %. The leading-edge vortices keep Ramesh et al.'s third. The chord
+//! answers a vortex near its leading edge as `s^(-1/2)` too (through
+//! `A0`), and placed by [`EDGE_PLACEMENT`] they took case 1's mean and
+//! peak lift to +4.7 % and -0.5 %; but the lift from the vortex impulse
+//! hardly moved (2.431 to 2.415) and parted from the pressure lift by
+//! 3.3 % (1.8 % with the third), past the 3 % the two must agree within
+//! (`aero2d::ldvm_case_1_lift_within_15_percent_of_cfd`): the pressure
+//! integral's leading-edge sheet, not the flow, had moved.
 //!
 //! Cost per step is O(M N_w + N_w^2) for `M` chord points and `N_w` wake
 //! vortices.
