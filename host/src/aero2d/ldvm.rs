@@ -251,22 +251,12 @@ struct Sources {
 }
 
 impl Sources {
-    /// Velocity induced at `(x, y)`.
-    fn induced_at(&self, x: f64, y: f64, core2: f64) -> (f64, f64) {
+    /// Velocity induced at `(x, y)`, each vortex with its squared core
+    /// from `cores2` (in the order of `vortices`: the vortices' own,
+    /// `repeat(core2)`, or the chord's stations', [`Chord::core2`]).
+    fn induced_at(&self, x: f64, y: f64, cores2: impl IntoIterator<Item = f64>) -> (f64, f64) {
         let (mut u, mut v) = (0.0, 0.0);
-        for fv in &self.vortices {
-            let (du, dv) = induced(fv, x, y, core2);
-            u += du;
-            v += dv;
-        }
-        (u, v)
-    }
-
-    /// Velocity induced at `(x, y)` with each vortex's own squared core
-    /// (`cores2`, in the order of `vortices`).
-    fn induced_with(&self, x: f64, y: f64, cores2: &[f64]) -> (f64, f64) {
-        let (mut u, mut v) = (0.0, 0.0);
-        for (fv, &core2) in self.vortices.iter().zip(cores2) {
+        for (fv, core2) in self.vortices.iter().zip(cores2) {
             let (du, dv) = induced(fv, x, y, core2);
             u += du;
             v += dv;
@@ -568,7 +558,7 @@ impl Ldvm {
                     // The flow that carries the new vortex off the edge,
                     // with the vortices' own core (as `convect` moves
                     // them), not the chord's stations' (`Chord::core2`).
-                    let (u, v) = sources.induced_at(le.0, le.1, self.core2);
+                    let (u, v) = sources.induced_at(le.0, le.1, std::iter::repeat(self.core2));
                     let relative = (
                         1.0 + u - x_dot - pivot * sa * alpha_dot,
                         v - h_dot - pivot * ca * alpha_dot,
@@ -606,7 +596,7 @@ impl Ldvm {
         let cores2: Vec<f64> = sources.vortices.iter().map(|v| chord.core2(v)).collect();
         let new_cores2: Vec<f64> = news.iter().map(|v| chord.core2(v)).collect();
         for (&(xb, x, y), &(slope, rate)) in chord.stations.iter().zip(&chord.slopes) {
-            let (du, dv) = sources.induced_with(x, y, &cores2);
+            let (du, dv) = sources.induced_at(x, y, cores2.iter().copied());
             // The air relative to the surging section.
             let (u, v) = (1.0 + du - x_dot, dv);
             let relative = u * sa + v * ca - h_dot * ca + (xb - pivot) * alpha_dot;
