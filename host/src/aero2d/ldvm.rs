@@ -72,19 +72,44 @@
 //! +2.1 %. Garrick's plunge at k = 2, h = 0.05 c (`fwav aero2d`'s step,
 //! 0.015): the power +16.6 % and efficiency -9.9 % from theory (the
 //! figures issue 23 quotes), now +4.1 % and -3.1 %, the plunge's own
-//! nonlinearity (the same at half and a quarter of the step). Not
-//! mended: a flapping section that sheds leading-edge vortices (the
-//! discipline's L18 rows of the built-in design, `fwav kinematics`)
-//! still changes its power when the step is halved: by 4.8 % on average
-//! (10.9 % at most) from dt to dt/2, against 5.0 % (9.6 %) before, and
-//! its thrust by about 1 %. The leading-edge vortices keep Ramesh et al.'s third. The chord
-//! answers a vortex near its leading edge as `s^(-1/2)` too (through
-//! `A0`), and placed by [`EDGE_PLACEMENT`] they took case 1's mean and
-//! peak lift to +4.7 % and -0.5 %; but the lift from the vortex impulse
-//! hardly moved (2.431 to 2.415) and parted from the pressure lift by
-//! 3.3 % (1.8 % with the third), past the 3 % the two must agree within
-//! (`aero2d::ldvm_case_1_lift_within_15_percent_of_cfd`): the pressure
-//! integral's leading-edge sheet, not the flow, had moved.
+//! nonlinearity (the same at half and a quarter of the step).
+//!
+//! ## The leading-edge vortices
+//! A flapping section that sheds leading-edge vortices does not
+//! converge with the step; its loads scatter. On the discipline's 18 L18
+//! rows of the built-in design (`fwav kinematics`, rigid, LESP 0.11) the
+//! power changes by 4.8 % on average (10.9 % at most) from the step 0.015
+//! to its half, and the thrust by about 1 %; row 1 (9 Hz, ±20°, −10°,
+//! plane 70°) gives 0.3928, 0.3542, 0.3710 at 0.015, 0.0075, 0.00375.
+//! The first shedding of the first stroke agrees at all three steps;
+//! the runs part when its vortices pass over the plate and leave by the
+//! trailing edge, and each later shedding starts from where the last
+//! left its vortices. Tried on that row (2026-12-07, power at the three
+//! steps), none converges:
+//!
+//! - the leading-edge vortices placed by [`EDGE_PLACEMENT`]: 0.3806,
+//!   0.3512, 0.3743. The chord answers a vortex near its leading edge as
+//!   `s^(-1/2)` too (through `A0`); on the LDVM paper's case 1 this took
+//!   the mean and peak lift to +4.7 % and −0.5 % of its CFD, but the lift
+//!   from the vortex impulse hardly moved (2.431 to 2.415) and parted
+//!   from the pressure lift by 3.3 % (1.8 % with the third), past the 3 %
+//!   the two must agree within (`aero2d::ldvm_case_1_lift_within_15_percent_of_cfd`);
+//! - the vortices' core fixed in chords instead of `1.3 U dt` (Krasny's
+//!   regularization, which a vortex sheet's roll-up converges under):
+//!   0.3928, 0.3850, 0.4055 with the default step's 0.0195 c; 0.4461,
+//!   0.3936, 0.4333 with 0.04 c;
+//! - the free vortices moved by the second-order Adams–Bashforth rule
+//!   instead of Euler's: row 1 0.4434, 0.4302, 0.4030, and over the 18
+//!   rows the power moved by 15.7 % on average from Euler's at the same
+//!   step, and the net efficiency by 9.5 % RMS between its own step and
+//!   half step (Euler's: 5.3 %).
+//!
+//! At one step the flow nearly repeats: over strokes 3 to 12, each row's
+//! five two-stroke windows differ by 0.9 % (net thrust) and 1.2 % (net
+//! efficiency) RMS. So the discipline's scores carry the step's scatter
+//! as the Navier–Stokes model's carry theirs
+//! ([`crate::discipline::section_model::LDVM_SHEDDING_SCATTER`]), and
+//! Ramesh et al.'s third stays for the leading edge.
 //!
 //! Cost per step is O(M N_w + N_w^2) for `M` chord points and `N_w` wake
 //! vortices.
