@@ -235,8 +235,8 @@ fn print_result(result: &KinematicResult) {
     if result.adoption_margin > 0.0 {
         println!(
             "a candidate had to beat the initial design's combined objective by {:.3}: the \
-             scatter of two runs of this flow model, whose flow does not repeat from stroke to \
-             stroke",
+             scatter of two runs of this flow model, whose scores move with its time step (a \
+             flow that sheds leading-edge vortices) or from stroke to stroke",
             result.adoption_margin
         );
     }

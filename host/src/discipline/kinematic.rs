@@ -32,10 +32,10 @@
 //! answer is the feasible confirmed candidate (direct runs only: the L18
 //! row, the ANOM and RSM confirmations) with the best combined objective,
 //! or the initial design if none beats it by more than the evaluations'
-//! own scatter ([`KinematicResult::adoption_margin`]: zero for the LDVM,
-//! whose flow repeats from stroke to stroke; for the Navier–Stokes model,
-//! whose flow does not, one standard deviation of the difference of two
-//! runs). Without it, the earlier Navier–Stokes design runs moved, cycle
+//! own scatter ([`KinematicResult::adoption_margin`]: one standard
+//! deviation of the difference of two runs; zero only for the attached
+//! LDVM, whose flow converges with its step and repeats from stroke to
+//! stroke). Without it, the earlier Navier–Stokes design runs moved, cycle
 //! after cycle, among designs whose scores differed by less than a run's
 //! scatter (docs/ns-design).
 //!
@@ -143,8 +143,8 @@ pub struct KinematicResult {
     pub chosen: Option<usize>,
     /// How far a candidate's combined objective had to exceed the initial
     /// design's to be chosen: the scatter of the difference of two
-    /// evaluations (the flow model's [`window_scatter`]; 0 for the LDVM,
-    /// and in records written before it was recorded).
+    /// evaluations (the flow model's [`window_scatter`]; 0 for the
+    /// attached LDVM, and in records written before it was recorded).
     ///
     /// [`window_scatter`]: crate::discipline::section_model::SectionFlowModel::window_scatter
     #[serde(default)]
@@ -578,7 +578,7 @@ fn confirm(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::discipline::section_model::SectionFlowModel;
+    use crate::discipline::section_model::{SectionFlowModel, LDVM_SHEDDING_SCATTER};
 
     fn candidate(combined: Option<f64>, violation: f64) -> Candidate {
         Candidate {
@@ -627,7 +627,8 @@ mod tests {
 
     /// The margin is one standard deviation of the difference of two
     /// runs: at the reference design, with equal weights and a 4 %
-    /// scatter in each objective, `√2 (0.04 + 0.04)`; none for the LDVM.
+    /// scatter in each objective, `√2 (0.04 + 0.04)`; none for the
+    /// attached LDVM, and the declared scatter's for the shedding one.
     #[test]
     fn the_margin_is_the_scatter_of_a_difference() {
         let violation = |_: &FlappingKinematics| 0.0;
@@ -644,9 +645,19 @@ mod tests {
         let margin = objective.margin(&at_reference, (0.04, 0.04));
         assert!((margin - std::f64::consts::SQRT_2 * 0.08).abs() < 1e-12);
         assert_eq!(
-            objective.margin(&at_reference, SectionFlowModel::Ldvm.window_scatter(2)),
+            objective.margin(
+                &at_reference,
+                SectionFlowModel::Ldvm.window_scatter(2, false)
+            ),
             0.0
         );
+        let (thrust, efficiency) = LDVM_SHEDDING_SCATTER;
+        let shedding = objective.margin(
+            &at_reference,
+            SectionFlowModel::Ldvm.window_scatter(2, true),
+        );
+        assert!((shedding - std::f64::consts::SQRT_2 * (thrust + efficiency)).abs() < 1e-12);
+        assert!(shedding > 0.05, "{shedding}");
     }
 
     /// The L18 rows of the built-in design space, each row's result

@@ -354,7 +354,8 @@ impl SectionCase {
     /// deviations of the net thrust and efficiency) for this case's model
     /// and scored periods ([`SectionFlowModel::window_scatter`]).
     pub fn scatter(&self) -> (f64, f64) {
-        self.model.window_scatter(self.scored_cycles())
+        self.model
+            .window_scatter(self.scored_cycles(), self.lesp_critical.is_some())
     }
 
     /// Runs the 2D analysis for `kinematics` by the case's model and

@@ -14,7 +14,8 @@ use fwav::config::SystemConfig;
 use fwav::discipline::cache::{key, EvaluationCache};
 use fwav::discipline::section::{EvaluationError, SectionCase, SectionResult};
 use fwav::discipline::section_model::{
-    SectionFlowModel, SectionModelName, ViscousPlate, NS_LONG_MEAN_SCATTER, NS_WINDOW_SCATTER,
+    SectionFlowModel, SectionModelName, ViscousPlate, LDVM_SHEDDING_SCATTER, NS_LONG_MEAN_SCATTER,
+    NS_WINDOW_SCATTER,
 };
 
 use crate::program::fwav_command;
@@ -85,10 +86,14 @@ fn section_model_setting_chooses_the_model() {
     assert_eq!(default.section_case().scored_cycles(), 2);
     let long = SystemConfig::from_toml("[design]\nsection_cycles = 12\n").unwrap();
     assert_eq!(long.section_case().scored_cycles(), 10);
-    // The adoption margin's scatter follows the strokes scored: the
-    // LDVM's none; the Navier–Stokes model's two-stroke window's, and the
-    // long mean's from ten strokes on.
-    assert_eq!(long.section_case().scatter(), (0.0, 0.0));
+    // The adoption margin's scatter: the shedding LDVM's whatever the
+    // strokes scored, the attached LDVM's none; the Navier–Stokes model's
+    // follows the strokes scored, the two-stroke window's, and the long
+    // mean's from ten strokes on.
+    assert_eq!(long.section_case().scatter(), LDVM_SHEDDING_SCATTER);
+    assert_eq!(default.section_case().scatter(), LDVM_SHEDDING_SCATTER);
+    let attached = SystemConfig::from_toml("[design]\nlesp_critical = 0.0\n").unwrap();
+    assert_eq!(attached.section_case().scatter(), (0.0, 0.0));
     assert_eq!(ns.section_case().scatter(), NS_WINDOW_SCATTER);
     let long_ns =
         SystemConfig::from_toml("[design]\nsection_model = \"ns\"\nsection_cycles = 12\n").unwrap();
@@ -614,7 +619,7 @@ fn design_report_says_the_ns_section_deforms() {
             "- cycle 1: ns: the section deforms as the system analysis found (a plate 0.04 \
              chords thick round the deforming mid-line), scored over strokes 3 to 4; a candidate \
              had to beat the analysed design's combined objective by 0.066, the scatter of two \
-             runs (the flow does not repeat from stroke to stroke)\n"
+             runs (the scores move with the time step, or from stroke to stroke)\n"
         ),
         "{report}"
     );

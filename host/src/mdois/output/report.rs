@@ -162,8 +162,8 @@ The 2D section model of each cycle's evaluations:
             let _ = write!(
                 s,
                 "; a candidate had to beat the analysed design's combined objective by \
-                 {margin:.3}, the scatter of two runs (the flow does not repeat from stroke to \
-                 stroke)"
+                 {margin:.3}, the scatter of two runs (the scores move with the time step, or \
+                 from stroke to stroke)"
             );
         }
         let _ = writeln!(s);
