@@ -77,10 +77,11 @@
 //! ## The leading-edge vortices
 //! A flapping section that sheds leading-edge vortices does not
 //! converge with the step; its loads scatter. On the discipline's 18 L18
-//! rows of the built-in design (`fwav kinematics`, rigid, LESP 0.11) the
-//! power changes by 4.8 % on average (10.9 % at most) from the step 0.015
-//! to its half, and the thrust by about 1 %; row 1 (9 Hz, ±20°, −10°,
-//! plane 70°) gives 0.3928, 0.3542, 0.3710 at 0.015, 0.0075, 0.00375.
+//! rows of the built-in design (the built-in mid-span case, rigid, LESP
+//! 0.11) the power changes by 4.5 % on average (9.8 % at most) from the
+//! step 0.015 to its half, and the (gross) thrust by 0.9 %; row 1 (9 Hz,
+//! ±20°, −10°, plane 70°) gives 0.3928, 0.3542, 0.3710 at 0.015,
+//! 0.0075, 0.00375.
 //! The first shedding of the first stroke agrees at all three steps;
 //! the runs part when its vortices pass over the plate and leave by the
 //! trailing edge, and each later shedding starts from where the last

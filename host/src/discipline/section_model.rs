@@ -87,8 +87,8 @@ impl SectionFlowModel {
         matches!(self, Self::Ldvm)
     }
 
-    /// How much one evaluation's scores scatter from the flow's own
-    /// unsteadiness: the relative standard deviation of the net thrust
+    /// How much one evaluation's scores scatter, from the flow's own
+    /// unsteadiness or (the shedding LDVM's) with the time step: the relative standard deviation of the net thrust
     /// coefficient and of the net efficiency averaged over the `scored`
     /// strokes after the start's two (`[design] section_cycles` less 2),
     /// as `(thrust, efficiency)`.
@@ -127,12 +127,12 @@ impl SectionFlowModel {
 /// converges with the step (at first order: [`crate::aero2d::ldvm`], "The
 /// wake next to the edge") and repeats from stroke to stroke; the
 /// shedding flow's scores do not converge with the step: its power
-/// moves by several per cent, its thrust by about one.
+/// moves by several per cent, its gross thrust by about one.
 ///
 /// Measured (2026-12-07, the binary of `39b2d07`) on the 18 L18 rows of
-/// the built-in design space, the default section rigid (as `fwav
-/// kinematics` scores them without `--section`), at the discipline's
-/// step (0.015 chords) and its half:
+/// the built-in design space, the built-in mid-span case
+/// ([`super::section::SectionCase::fwav_mid_span`]: rigid, LESP 0.11),
+/// at the discipline's step (0.015 chords) and its half:
 ///
 /// | scored strokes | net CT: RMS of the change (mean, largest) | net efficiency: RMS (mean, largest) |
 /// | --- | --- | --- |
@@ -151,8 +151,12 @@ impl SectionFlowModel {
 /// not narrow it, and the figure holds for any strokes scored (the
 /// two-stroke one declared, the longer one within the 17 % by which an
 /// RMS of 18 values is itself uncertain). The efficiency's mean change,
-/// +3.2 %, is common to most rows; the rows of ±20° moved most (their
-/// power fell by 7 % to 10 %).
+/// +3.2 %, is common to most rows (the six rows of ±20° lost 3 % to 10 %
+/// of their power), and is kept in, as [`NS_WINDOW_SCATTER`] keeps its
+/// mean: taken out, an evaluation's scatter would be 1.38 % and 3.00 %,
+/// and the margin at the initial design 0.062 instead of 0.073. The
+/// figure is assumed for any critical LESP and for the deforming
+/// section, where it was not measured.
 pub const LDVM_SHEDDING_SCATTER: (f64, f64) = (0.014, 0.0377);
 
 /// The relative standard deviation of one Navier–Stokes evaluation's net

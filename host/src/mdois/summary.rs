@@ -121,7 +121,7 @@ pub struct KinematicsSummary {
     pub evaluations_reused: usize,
     /// How far a candidate's combined objective had to exceed the
     /// analysed design's to be chosen (the evaluations' scatter; 0 for
-    /// the LDVM and in runs recorded before it was).
+    /// the attached LDVM and in runs recorded before it was).
     #[serde(default)]
     pub adoption_margin: f64,
     /// The 2D evaluations' flow model and what it left out of the section
