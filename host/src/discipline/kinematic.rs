@@ -578,7 +578,9 @@ fn confirm(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::discipline::section_model::{SectionFlowModel, LDVM_SHEDDING_SCATTER};
+    use crate::discipline::section_model::{
+        LdvmFlow, SectionFlowModel, LDVM_SHEDDING_DEFORMING_SCATTER, LDVM_SHEDDING_SCATTER,
+    };
 
     fn candidate(combined: Option<f64>, violation: f64) -> Candidate {
         Candidate {
@@ -628,7 +630,8 @@ mod tests {
     /// The margin is one standard deviation of the difference of two
     /// runs: at the reference design, with equal weights and a 4 %
     /// scatter in each objective, `√2 (0.04 + 0.04)`; none for the
-    /// attached LDVM, and the declared scatter's for the shedding one.
+    /// attached LDVM, and the declared scatter's for the shedding one, on
+    /// a rigid or a deforming section.
     #[test]
     fn the_margin_is_the_scatter_of_a_difference() {
         let violation = |_: &FlappingKinematics| 0.0;
@@ -647,17 +650,21 @@ mod tests {
         assert_eq!(
             objective.margin(
                 &at_reference,
-                SectionFlowModel::Ldvm.window_scatter(2, false)
+                SectionFlowModel::Ldvm.window_scatter(2, LdvmFlow::Attached)
             ),
             0.0
         );
-        let (thrust, efficiency) = LDVM_SHEDDING_SCATTER;
-        let shedding = objective.margin(
-            &at_reference,
-            SectionFlowModel::Ldvm.window_scatter(2, true),
-        );
-        assert!((shedding - std::f64::consts::SQRT_2 * (thrust + efficiency)).abs() < 1e-12);
-        assert!(shedding > 0.05, "{shedding}");
+        for (flow, (thrust, efficiency)) in [
+            (LdvmFlow::Shedding, LDVM_SHEDDING_SCATTER),
+            (LdvmFlow::SheddingDeforming, LDVM_SHEDDING_DEFORMING_SCATTER),
+        ] {
+            let margin = objective.margin(
+                &at_reference,
+                SectionFlowModel::Ldvm.window_scatter(2, flow),
+            );
+            assert!((margin - std::f64::consts::SQRT_2 * (thrust + efficiency)).abs() < 1e-12);
+            assert!(margin > 0.05, "{flow:?}: {margin}");
+        }
     }
 
     /// The L18 rows of the built-in design space, each row's result

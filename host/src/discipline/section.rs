@@ -45,7 +45,7 @@ use crate::aero2d::viscous::{SectionPath, ViscousError};
 use crate::aeroelastic::kinematics::{FlappingKinematics, KinematicsError};
 use crate::aeroelastic::model::FlightCondition;
 
-use super::section_model::{ModelledSection, SectionFlowModel};
+use super::section_model::{LdvmFlow, ModelledSection, SectionFlowModel};
 
 /// Kinematic viscosity of sea-level air, m²/s (for the chord Reynolds
 /// number of the friction estimate).
@@ -354,8 +354,8 @@ impl SectionCase {
     /// deviations of the net thrust and efficiency) for this case's model
     /// and scored periods ([`SectionFlowModel::window_scatter`]).
     pub fn scatter(&self) -> (f64, f64) {
-        self.model
-            .window_scatter(self.scored_cycles(), self.lesp_critical.is_some())
+        let flow = LdvmFlow::of(self.lesp_critical.is_some(), !self.deformation.is_empty());
+        self.model.window_scatter(self.scored_cycles(), flow)
     }
 
     /// Runs the 2D analysis for `kinematics` by the case's model and

@@ -14,8 +14,8 @@ use fwav::config::SystemConfig;
 use fwav::discipline::cache::{key, EvaluationCache};
 use fwav::discipline::section::{EvaluationError, SectionCase, SectionResult};
 use fwav::discipline::section_model::{
-    SectionFlowModel, SectionModelName, ViscousPlate, LDVM_SHEDDING_SCATTER, NS_LONG_MEAN_SCATTER,
-    NS_WINDOW_SCATTER,
+    SectionFlowModel, SectionModelName, ViscousPlate, LDVM_SHEDDING_DEFORMING_SCATTER,
+    LDVM_SHEDDING_SCATTER, NS_LONG_MEAN_SCATTER, NS_WINDOW_SCATTER,
 };
 
 use crate::program::fwav_command;
@@ -94,6 +94,11 @@ fn section_model_setting_chooses_the_model() {
     assert_eq!(default.section_case().scatter(), LDVM_SHEDDING_SCATTER);
     let attached = SystemConfig::from_toml("[design]\nlesp_critical = 0.0\n").unwrap();
     assert_eq!(attached.section_case().scatter(), (0.0, 0.0));
+    let mut deforming = default.section_case();
+    deforming.deformation = vec![vec![[0.0, 0.0], [1.0, 0.0]]; 8];
+    assert_eq!(deforming.scatter(), LDVM_SHEDDING_DEFORMING_SCATTER);
+    deforming.lesp_critical = None;
+    assert_eq!(deforming.scatter(), (0.0, 0.0));
     assert_eq!(ns.section_case().scatter(), NS_WINDOW_SCATTER);
     let long_ns =
         SystemConfig::from_toml("[design]\nsection_model = \"ns\"\nsection_cycles = 12\n").unwrap();
