@@ -132,10 +132,11 @@ impl SectionFlowModel {
 pub enum LdvmFlow {
     /// No critical LESP: the flow stays attached.
     Attached,
-    /// Leading-edge vortices shed beyond the critical LESP; the section
-    /// rigid.
+    /// Leading-edge vortices shed beyond the critical LESP, on a rigid
+    /// section (no deformation history).
     Shedding,
-    /// Leading-edge vortices shed; the section deforms.
+    /// Leading-edge vortices shed, on a section given a deformation
+    /// history.
     SheddingDeforming,
 }
 
@@ -161,10 +162,11 @@ impl LdvmFlow {
 /// scores do not converge with the step: its power moves by several per
 /// cent, its gross thrust by about one.
 ///
-/// Measured (2026-12-07, the binary of `39b2d07` with the step divided by
-/// an environment knob and the leading-edge placement rounded as below,
-/// not committed) on the 18 L18 rows of the built-in
-/// design space, the built-in mid-span case
+/// Measured (2026-12-07) by a scratch build of `39b2d07`, not committed,
+/// which divided the step by an environment knob and placed the
+/// leading-edge vortex by `x (1/3)` for the code's `x / 3` (what that
+/// alone does is below), on the 18 L18 rows of the built-in design
+/// space, the built-in mid-span case
 /// ([`super::section::SectionCase::fwav_mid_span`]: rigid, LESP 0.11), at
 /// the discipline's step (0.015 chords) and its half:
 ///
@@ -175,11 +177,11 @@ impl LdvmFlow {
 ///
 /// The margin compares two designs evaluated at the same step, so the
 /// change the rows share (their mean) cancels in it and is taken out: the
-/// changes' standard deviation over √2 (two draws) is one evaluation's,
-/// over strokes 3 and 4 **1.42 %** and **3.09 %** (with the mean kept, as
-/// [`NS_WINDOW_SCATTER`] keeps its small one, 1.40 % and 3.77 %), over 3
-/// to 12 1.42 % and 3.2 %, the same within the 17 % by which a standard
-/// deviation of 18 values is itself uncertain. The scores scatter rather
+/// changes' standard deviation (of 18, with `n − 1`) over √2 (two draws)
+/// is one evaluation's, over strokes 3 and 4 **1.42 %** and **3.09 %**
+/// (with the mean kept 1.40 % and 3.77 %), over 3 to 12 1.46 % and
+/// 3.30 %, the same within the 17 % by which a standard deviation of 18
+/// values is itself uncertain. The scores scatter rather
 /// than converge (row 1, 9 Hz, ±20°, −10°, plane 70°: power 0.3928,
 /// 0.3542, 0.3710 at the step, its half and its quarter;
 /// [`crate::aero2d::ldvm`], "The leading-edge vortices", gives what was
@@ -189,6 +191,9 @@ impl LdvmFlow {
 /// is it all the step's: the leading-edge vortices' placement computed as
 /// `x (1/3)` instead of `x / 3`, a change in the last bit, moved the rows
 /// by 1.22 % and 1.10 % RMS. The figure is assumed for any critical LESP.
+/// [`NS_WINDOW_SCATTER`] keeps its mean (−2.1 % and −1.4 %, within that
+/// figure's own uncertainty); here the efficiency's mean, +3.2 % within
+/// an RMS of 5.3 %, is not.
 pub const LDVM_SHEDDING_SCATTER: (f64, f64) = (0.0142, 0.0309);
 
 /// As [`LDVM_SHEDDING_SCATTER`], on a deforming section, as every design
@@ -206,7 +211,9 @@ pub const LDVM_SHEDDING_SCATTER: (f64, f64) = (0.0142, 0.0309);
 /// positive `A0` cross the plate). The changes' standard deviation over
 /// √2 is one evaluation's, **7.81 %** and **10.18 %** (12.8 % and 13.4 %
 /// with the mean kept). The same section attached (`lesp_critical = 0`)
-/// moves by 0.23 % and 0.04 %: the deformation alone converges.
+/// moves by 0.23 % and 0.04 %: the deformation alone converges. Measured
+/// on that one deformation at LESP 0.11, the figure is assumed for every
+/// cycle's deformation and any critical LESP.
 pub const LDVM_SHEDDING_DEFORMING_SCATTER: (f64, f64) = (0.0781, 0.1018);
 
 /// The relative standard deviation of one Navier–Stokes evaluation's net

@@ -87,9 +87,10 @@ fn section_model_setting_chooses_the_model() {
     let long = SystemConfig::from_toml("[design]\nsection_cycles = 12\n").unwrap();
     assert_eq!(long.section_case().scored_cycles(), 10);
     // The adoption margin's scatter: the shedding LDVM's whatever the
-    // strokes scored, the attached LDVM's none; the Navier–Stokes model's
-    // follows the strokes scored, the two-stroke window's, and the long
-    // mean's from ten strokes on.
+    // strokes scored, on a rigid or a deforming section, the attached
+    // LDVM's none; the Navier–Stokes model's follows the strokes scored,
+    // the two-stroke window's, and the long mean's from ten strokes on,
+    // deforming or not.
     assert_eq!(long.section_case().scatter(), LDVM_SHEDDING_SCATTER);
     assert_eq!(default.section_case().scatter(), LDVM_SHEDDING_SCATTER);
     let attached = SystemConfig::from_toml("[design]\nlesp_critical = 0.0\n").unwrap();
@@ -100,6 +101,9 @@ fn section_model_setting_chooses_the_model() {
     deforming.lesp_critical = None;
     assert_eq!(deforming.scatter(), (0.0, 0.0));
     assert_eq!(ns.section_case().scatter(), NS_WINDOW_SCATTER);
+    let mut ns_deforming = ns.section_case();
+    ns_deforming.deformation = vec![vec![[0.0, 0.0], [1.0, 0.0]]; 8];
+    assert_eq!(ns_deforming.scatter(), NS_WINDOW_SCATTER);
     let long_ns =
         SystemConfig::from_toml("[design]\nsection_model = \"ns\"\nsection_cycles = 12\n").unwrap();
     assert_eq!(long_ns.section_case().scatter(), NS_LONG_MEAN_SCATTER);
