@@ -201,8 +201,9 @@ pub const LDVM_SHEDDING_SCATTER: (f64, f64) = (0.0142, 0.0309);
 /// of the leading-edge vortices passing over the plate pushes on its
 /// camber's slope, so the thrust follows their paths.
 ///
-/// Measured (2026-12-07, the same binary) with `fwav kinematics
-/// --section` on the deformation the default design's first system
+/// Measured (2026-12-07) by a scratch build of `eec04b1` (whose LDVM
+/// computes as `39b2d07`'s) with the step divided by an environment knob,
+/// not committed, with `fwav kinematics --section` on the deformation the default design's first system
 /// analysis found (`fwav design`'s `cycle-1/section.json`), the 18 L18
 /// rows at the discipline's step and its half: net CT changed by 18.2 %
 /// RMS (mean −14.6 %, largest 35 %), net efficiency by 19.0 % (mean
