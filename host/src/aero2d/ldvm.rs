@@ -135,7 +135,7 @@ mod vortex;
 use loads::LoadIntegrals;
 pub(crate) use vortex::induced;
 pub use vortex::FreeVortex;
-use vortex::{far_proxies, near_start};
+use vortex::{far_proxies, Sources};
 
 /// How far from the trailing edge towards the last shed vortex the new
 /// one is placed: `a* / (1 + a*)`, with `a* = 0.302721828598366` the zero
@@ -270,32 +270,6 @@ impl Chord {
         let sin_theta = (2.0 * (foot * (1.0 - foot)).max(0.0).sqrt()).max(end);
         let radius = 0.5 * self.spacing * sin_theta;
         radius * radius * length2
-    }
-}
-
-/// The free vortices that induce velocity during one step: the near wakes
-/// vortex by vortex, the far wakes as proxies.
-struct Sources {
-    /// First near vortex of the trailing-edge wake.
-    near_from: usize,
-    /// First near vortex of the leading-edge vortices.
-    lev_near_from: usize,
-    /// The near vortices, then the far wakes' proxies.
-    vortices: Vec<FreeVortex>,
-}
-
-impl Sources {
-    /// Velocity induced at `(x, y)`, each vortex with its squared core
-    /// from `cores2` (in the order of `vortices`: the vortices' own,
-    /// `repeat(core2)`, or the chord's stations', [`Chord::core2`]).
-    fn induced_at(&self, x: f64, y: f64, cores2: impl IntoIterator<Item = f64>) -> (f64, f64) {
-        let (mut u, mut v) = (0.0, 0.0);
-        for (fv, core2) in self.vortices.iter().zip(cores2) {
-            let (du, dv) = induced(fv, x, y, core2);
-            u += du;
-            v += dv;
-        }
-        (u, v)
     }
 }
 
@@ -459,7 +433,7 @@ impl Ldvm {
         let pose = self.pose(self.time);
         let chord = self.chord(&pose);
         let te = self.edge(1.0, &pose);
-        let sources = self.sources(te.0 + self.settings.far_wake);
+        let sources = Sources::split(&self.wake, &self.leading, te.0 + self.settings.far_wake);
         let news = self.new_vortices(&pose, te, &sources);
         let influence = self.influence(&pose, &chord, &sources, &news);
         let coefficients: Vec<Vec<f64>> =
@@ -541,25 +515,6 @@ impl Ldvm {
         let (x, y) = self.body_point(xb, &pose.kinematics);
         let eta = self.shape(xb, pose.t).0;
         (x + eta * pose.sa, y + eta * pose.ca)
-    }
-
-    /// What induces velocity: the near wakes (up to `limit` downstream)
-    /// vortex by vortex, the far wakes as proxies.
-    fn sources(&self, limit: f64) -> Sources {
-        let near_from = near_start(&self.wake, limit);
-        let lev_near_from = near_start(&self.leading, limit);
-        let vortices: Vec<FreeVortex> = self.wake[near_from..]
-            .iter()
-            .chain(&self.leading[lev_near_from..])
-            .copied()
-            .chain(far_proxies(&self.wake[..near_from]))
-            .chain(far_proxies(&self.leading[..lev_near_from]))
-            .collect();
-        Sources {
-            near_from,
-            lev_near_from,
-            vortices,
-        }
     }
 
     /// The new vortices of unit strength: the trailing-edge one,

@@ -190,10 +190,11 @@ pub const DESIGN: Table<DesignConfig> = Table {
                   by 1.4 % (CT) and 3.1 % (efficiency) on a rigid section and 7.8 % and \
                   10.2 % on a deforming one, which the discipline's adoption margin carries \
                   and more cycles do not narrow. The Navier-Stokes flow round the deforming \
-                  plate has not settled by then: over cycles 3 and 4 (4, the default) its scores scatter by 5.3 % (CT) \
-                  and 4.5 % (efficiency) with any change of what led up to them, which the \
-                  discipline's adoption margin carries; over cycles 3 to 12 (12) by 4.6 % and \
-                  4.2 %, at three times the time (about 1.3 hours a discipline run)",
+                  plate has not settled by then: over cycles 3 and 4 (4, the default) its \
+                  scores scatter by 5.3 % (CT) and 4.5 % (efficiency) with any change of what \
+                  led up to them, which the discipline's adoption margin carries; over cycles \
+                  3 to 12 (12) by 4.6 % and 4.2 %, at three times the time (about 1.3 hours a \
+                  discipline run)",
             value: |d| Value::unsigned(d.section_cycles),
         },
     ],

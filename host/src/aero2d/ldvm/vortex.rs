@@ -1,5 +1,6 @@
 //! The LDVM's free vortices: a vortex with a Vatistas core, the velocity
-//! it induces, and the far wake lumped for induction.
+//! it induces, the far wake lumped for induction, and the step's sources
+//! of induced velocity.
 
 use std::f64::consts::PI;
 
@@ -54,10 +55,61 @@ pub(super) fn far_proxies(far: &[FreeVortex]) -> impl Iterator<Item = FreeVortex
     })
 }
 
+/// The free vortices that induce velocity during one step: the near wakes
+/// vortex by vortex, the far wakes as proxies.
+pub(super) struct Sources {
+    /// First near vortex of the trailing-edge wake.
+    pub(super) near_from: usize,
+    /// First near vortex of the leading-edge vortices.
+    pub(super) lev_near_from: usize,
+    /// The near vortices, then the far wakes' proxies.
+    pub(super) vortices: Vec<FreeVortex>,
+}
+
+impl Sources {
+    /// The sources of the trailing-edge `wake` and the `leading`-edge
+    /// vortices: those up to `limit` downstream one by one, those beyond
+    /// as [`far_proxies`].
+    pub(super) fn split(wake: &[FreeVortex], leading: &[FreeVortex], limit: f64) -> Self {
+        let near_from = near_start(wake, limit);
+        let lev_near_from = near_start(leading, limit);
+        let vortices = wake[near_from..]
+            .iter()
+            .chain(&leading[lev_near_from..])
+            .copied()
+            .chain(far_proxies(&wake[..near_from]))
+            .chain(far_proxies(&leading[..lev_near_from]))
+            .collect();
+        Self {
+            near_from,
+            lev_near_from,
+            vortices,
+        }
+    }
+
+    /// Velocity induced at `(x, y)`, each vortex with its squared core
+    /// from `cores2` (in the order of `vortices`: the vortices' own,
+    /// `repeat(core2)`, or the chord's stations', `Chord::core2`).
+    pub(super) fn induced_at(
+        &self,
+        x: f64,
+        y: f64,
+        cores2: impl IntoIterator<Item = f64>,
+    ) -> (f64, f64) {
+        let (mut u, mut v) = (0.0, 0.0);
+        for (fv, core2) in self.vortices.iter().zip(cores2) {
+            let (du, dv) = induced(fv, x, y, core2);
+            u += du;
+            v += dv;
+        }
+        (u, v)
+    }
+}
+
 /// Index of the first vortex of the near wake: vortices are kept in
 /// shedding order and drift downstream, so the far wake (beyond `limit`) is
 /// a prefix.
-pub(super) fn near_start(vortices: &[FreeVortex], limit: f64) -> usize {
+fn near_start(vortices: &[FreeVortex], limit: f64) -> usize {
     vortices
         .iter()
         .position(|v| v.x <= limit)
