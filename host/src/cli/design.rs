@@ -279,6 +279,12 @@ pub fn run_command(a: &DesignArgs) -> Result<()> {
     if show {
         eprint!("\r\x1b[2K");
     }
+    if let Some(refusal) = &run.refused_now {
+        eprintln!(
+            "warning: {dir} was run with a configuration this fwav refuses ({refusal}); its \
+             results are reported as they were computed, and a new run needs a value in range"
+        );
+    }
     if a.json {
         println!("{}", serde_json::to_string_pretty(&run.summary)?);
     } else {

@@ -70,6 +70,11 @@ pub struct DesignRun {
     /// The run had ended before this invocation, which computed and
     /// wrote nothing.
     pub finished_before: bool,
+    /// A finished run's configuration has a value this fwav refuses (an
+    /// earlier one accepted it): the refusal, said beside the results it
+    /// reports as they were computed. (An unfinished run is refused
+    /// instead, [`DesignError::RefusedNow`].)
+    pub refused_now: Option<String>,
 }
 
 /// Starts a new run of `config` in `dir` (created if missing), or
@@ -133,7 +138,7 @@ fn continue_run(
     let started = state.started_with(dir)?;
     let path = dir.join(CONFIG_FILE);
     let text = std::fs::read_to_string(&path).map_err(DesignError::io(&path))?;
-    let file = SystemConfig::from_toml(&text).map_err(|source| DesignError::RunConfig {
+    let file = SystemConfig::parse_unchecked(&text).map_err(|source| DesignError::RunConfig {
         path: path.clone(),
         source: Box::new(source),
     })?;
@@ -158,6 +163,9 @@ fn continue_run(
         }
     }
     state.consistent_prefix(dir);
+    // The values are checked against this fwav's ranges, which may be
+    // narrower than those of the fwav that started the run.
+    let refused_now = started.check().err();
     if state.outcome.is_some() {
         let summary = summary::build(&started, dir, &state)?;
         return Ok(DesignRun {
@@ -167,6 +175,13 @@ fn continue_run(
             stages_computed: 0,
             stages_reused: 0,
             finished_before: true,
+            refused_now: refused_now.map(|e| e.to_string()),
+        });
+    }
+    if let Some(source) = refused_now {
+        return Err(DesignError::RefusedNow {
+            dir: dir.to_path_buf(),
+            source: Box::new(source),
         });
     }
     drive(started, dir, state, options, progress)
@@ -337,6 +352,7 @@ fn drive(
         stages_computed: computed,
         stages_reused: reused,
         finished_before: false,
+        refused_now: None,
     })
 }
 

@@ -142,6 +142,21 @@ pub enum DesignError {
         /// The cause.
         source: Box<ConfigError>,
     },
+    /// The run's configuration has a value this fwav refuses (an earlier
+    /// one accepted it): its stages stay as they are, but it cannot go on.
+    #[error(
+        "{d} was started with a configuration this fwav refuses: {source}. Its finished stages \
+         and files are kept as they are, but it cannot be continued with that value: copy its \
+         config.toml, change the value, and start a new run (fwav design --config COPY --out \
+         ANOTHER_DIRECTORY)",
+        d = .dir.display()
+    )]
+    RefusedNow {
+        /// The run's directory.
+        dir: PathBuf,
+        /// The first value refused.
+        source: Box<ConfigError>,
+    },
     /// The run's `config.toml` was edited after the run started.
     #[error(
         "{p} was edited after the run started ({field}: {now} in the file, {then} when the run \

@@ -296,6 +296,29 @@ fn coarse_design_converges_writes_everything_and_resumes() {
     assert_eq!(done.stages_computed, 0);
     assert!(done.finished_before);
     assert_eq!(done.outcome, run.outcome);
+    assert_eq!(done.refused_now, None);
+    // Had an earlier fwav run it with a value this one refuses, it is
+    // still reported, as computed, and the refusal said beside it.
+    let kept: Vec<(&str, Vec<u8>)> = ["config.toml", "state.json"]
+        .into_iter()
+        .map(|f| (f, std::fs::read(dir.join(f)).unwrap()))
+        .collect();
+    crate::design_safety::as_started_by_an_earlier_fwav(
+        &dir,
+        ("mass_fraction = 0.7\n", "mass_fraction = 0.1\n"),
+    );
+    let earlier = resume(&dir, None, &RunOptions::default(), &|_| {}).unwrap();
+    assert!(earlier.finished_before && earlier.stages_computed == 0);
+    assert_eq!(earlier.outcome, run.outcome);
+    let refusal = earlier.refused_now.expect("the value now refused, said");
+    assert!(
+        refusal.contains("topology.mass_fraction") && refusal.contains("0.1"),
+        "{refusal}"
+    );
+    assert_eq!(earlier.summary, done.summary);
+    for (file, bytes) in kept {
+        std::fs::write(dir.join(file), bytes).unwrap();
+    }
 
     killed_design_resumes_with_the_same_answer(&reference);
 

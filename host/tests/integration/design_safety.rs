@@ -2,7 +2,8 @@
 //! into a new or empty directory or a run of its own configuration,
 //! never over a user's files or its own input; a run directory is locked
 //! while a process computes in it, and a lock left by a killed process is
-//! taken over; a resume refuses a `config.toml` edited since the start;
+//! taken over; a resume refuses a `config.toml` edited since the start,
+//! and a run an earlier fwav started with a value this one refuses;
 //! every configuration check (cross-field ones too) runs before anything
 //! is written; a corrupt `state.json` is named with the way out; the
 //! progress line fits the terminal. Each test runs the real `fwav` binary
@@ -269,6 +270,66 @@ fn a_resume_refuses_an_edited_configuration() {
         "the restored configuration: {}",
         ran.stderr
     );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// Makes the run in `run` one an earlier fwav started with `edit.1`
+/// where its `config.toml` has `edit.0`, a value that fwav accepted and
+/// this one may refuse: the file and the state's configuration (and its
+/// hash) both say it, as that fwav would have written them.
+pub(crate) fn as_started_by_an_earlier_fwav(run: &Path, edit: (&str, &str)) {
+    let path = run.join("config.toml");
+    let original = text(&path);
+    let edited = original.replace(edit.0, edit.1);
+    assert_ne!(edited, original, "no {:?} in {original}", edit.0);
+    std::fs::write(&path, &edited).unwrap();
+    let earlier = SystemConfig::parse_unchecked(&edited).unwrap();
+    let stored = RunState::new(&earlier).unwrap();
+    let mut state = RunState::load(run).unwrap();
+    state.configuration = stored.configuration;
+    state.configuration_sha256 = stored.configuration_sha256;
+    state.save(run).unwrap();
+}
+
+/// A run an earlier fwav started with a value this one refuses (a carbon
+/// mass fraction of 0.1, which the range's floor of 0.2 now refuses
+/// because the nonlinear analysis fails there) is not continued: the
+/// resume names the directory, the key, its value and the range, keeps
+/// the state as it was, and says how to go on. (A finished one is
+/// reported with a warning: `design::coarse_design_converges_writes_everything_and_resumes`.)
+#[test]
+fn a_run_with_a_value_now_refused_is_not_continued() {
+    let dir = temp("refused-now");
+    let run = dir.join("run");
+    let config = SystemConfig::from_toml(COARSE).unwrap();
+    start(
+        &config,
+        &run,
+        &RunOptions {
+            stage_limit: Some(0),
+        },
+        &|_| {},
+    )
+    .unwrap();
+    as_started_by_an_earlier_fwav(&run, ("mass_fraction = 0.7\n", "mass_fraction = 0.1\n"));
+    let before = RunState::load(&run).unwrap();
+    let ran = fwav_within(
+        &["design", "--quiet", "--resume", run.to_str().unwrap()],
+        REFUSAL,
+    );
+    let stderr = ran.refused("a resume of a run with a value now refused");
+    println!("{stderr}");
+    for part in [
+        run.to_str().unwrap(),
+        "mass_fraction",
+        "0.1",
+        "0.2",
+        "this fwav refuses",
+        "new run",
+    ] {
+        assert!(stderr.contains(part), "{part}: {stderr}");
+    }
+    assert_eq!(RunState::load(&run).unwrap(), before, "the state changed");
     std::fs::remove_dir_all(&dir).ok();
 }
 
