@@ -105,7 +105,27 @@
 //!   instead of Euler's: row 1 0.4434, 0.4302, 0.4030, and over the 18
 //!   rows the power moved by 15.7 % on average from Euler's at the same
 //!   step, and the net efficiency by 9.5 % RMS between its own step and
-//!   half step (Euler's: 5.3 %).
+//!   half step (Euler's: 5.3 %);
+//! - the bound vortices seen by the free ones with the width of their own
+//!   panel as core (the continuous sheet at the chord's resolution, where
+//!   the free vortices' `1.3 U dt` makes the stations ever sharper as the
+//!   step shrinks): 0.3977, 0.3570, 0.3813 with that core alone, 0.3865,
+//!   0.3516, 0.3705 with the larger of it and `1.3 U dt` (the code's own
+//!   placement: 0.3941, 0.3486, 0.3696; the code of `8f458c0`, 2026-12-07,
+//!   with environment knobs);
+//! - a finer bound sheet: 160 chord points and 80 Fourier terms, 0.4022,
+//!   0.3561, 0.3609; 320 and 160, 0.4269, 0.3596, 0.3600, and 0.3878 at
+//!   an eighth of the step (the half and quarter steps' agreement a
+//!   coincidence).
+//!
+//! Free vortices cross the plate's chord line between its edges, which
+//! no vortex of the continuous flow can, and more often the smaller the
+//! step: 195, 550, 1,702 times in row 1's run at the three steps (more
+//! than the steps' count grows), and with 320 chord points 164, 403, 843
+//! and 1,664 at an eighth. Their core `1.3 U dt` shrinks with the step,
+//! and a new leading-edge vortex is placed half a step's travel from the
+//! edge, ever nearer the plate. Mirroring a crossing vortex back (a
+//! first try) made thousands of crossings and a negative power.
 //!
 //! At one step the flow nearly repeats: over strokes 3 to 12, each row's
 //! five two-stroke windows differ by 0.9 % (net thrust) and 1.2 % (net
