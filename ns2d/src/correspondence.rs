@@ -49,6 +49,37 @@
 //! angle. The samples `N` grow with the start's crowding (64 per unit of
 //! largest/smallest step) and double while Newton fails.
 //!
+//! ## Slits that leave the section
+//! The pre-map's slit is a circular arc through the critical points, of
+//! the height of the mid-chord camber. Where the camber line is far from
+//! a circular arc, the arc leaves a thin section near an edge, the
+//! contour crosses the slit, and its pre-image is no closed curve: Newton
+//! failed at its first step on NACA 4706 (4 % camber at 70 % of the
+//! chord, 6 % thick; the camber line's slope at the trailing edge is
+//! −0.27 where the arc's is −0.16), and failed on 34 of 104 NACA
+//! 4-digit sections scanned (camber 0 to 9 % at 10 to 90 % of the chord,
+//! 6 to 30 % thick: those of camber 2 to 9 % at 10 % or 70 to 90 %) and
+//! on NACA 0090 and 0099 (`fwav aero2d --model ns --section nacaXXXX`,
+//! 2026-12-07). When the first pre-map fails, the fit tries pre-maps
+//! whose slits lie inside the section ([`Premap::inside`]): critical
+//! points at the tips' centres of curvature, or one moved to the
+//! mid-line 98 % of the way out (a leading edge whose camber turns fast),
+//! each with the arc height that keeps the slit farthest from the
+//! contour among 81 from a semicircle down to one up. That maps 11 of
+//! the 36: NACA 0090, 2912, 4106, 4706, 4920, 4930, 6706, 8112, 8712,
+//! 9112 and 9712 (`tests/section_maps.rs` checks the boundaries of
+//! 4706, 4106 and 8712 at 2e-5 chords with 128 terms; 9112's, whose
+//! leading edge turns fastest, is 1e-3 off with 128 terms). The other 25
+//! (NACA 2906, 4906, 4912, 6106, 6130, 6906 to 6930, 8106, 8120, 8130,
+//! 8706, 8906 to 8930, 9106, 9120, 9130, 9706, 9906 to 9930, and 0099)
+//! still fail: no one arc fits inside them, and critical points moved
+//! farther in (tried to 90 % of the way) leave a thin tongue Newton does
+//! not converge on. Such a section needs a slit that follows its
+//! mid-line (a composition of elementary maps, as the zipper
+//! algorithm's: Marshall & Rohde 2007, *SIAM J. Numer. Anal.* 45), not
+//! built. Sections the first pre-map fits are fitted as before, to the
+//! bit.
+//!
 //! Accuracy: that of the contour's cubic spline, `O(h⁴)` on smooth
 //! contours (4:1 ellipse from 1024 points: 4e-11), and of the truncation
 //! (`terms⁻²` for the rounded plates and NACA sections, whose curvature
@@ -92,6 +123,10 @@ impl ClosedCurve for CurveSpline {
 /// The most samples round the circle (doubled from the first guess while
 /// Newton fails).
 const MAX_SAMPLES: usize = 1 << 15;
+/// The fitted pre-maps' critical points: how far from the section's
+/// middle to each tip (1: the tip's centre of curvature; module docs,
+/// "Slits that leave the section").
+const REACHES: [(f64, f64); 3] = [(1.0, 1.0), (0.98, 1.0), (1.0, 0.98)];
 /// The most Newton steps.
 const MAX_STEPS: usize = 60;
 /// Converged when the largest correction is below this fraction of the
@@ -237,17 +272,37 @@ pub(crate) fn solve(contour: &Contour, samples: usize) -> Result<Correspondence,
     let probe = premap.start(samples);
     let steps = probe.windows(2).map(|w| w[1] - w[0]);
     let crowding = steps.clone().fold(0.0, f64::max) / steps.fold(f64::INFINITY, f64::min);
-    let mut n = samples.max(((64.0 * crowding) as usize).next_power_of_two());
+    let n = samples.max(((64.0 * crowding) as usize).next_power_of_two());
+    let first = match solve_premapped(&premap, n) {
+        Ok(fit) => return Ok(fit),
+        Err(last) => last,
+    };
+    // The slit of the pre-map above crosses the contour where the
+    // section's camber line is no circular arc (module docs, "Slits
+    // that leave the section"): slits kept inside it instead.
+    for fitted in Premap::inside(&spline, contour) {
+        let probe = fitted.start(samples);
+        let steps = probe.windows(2).map(|w| w[1] - w[0]);
+        let crowding = steps.clone().fold(0.0, f64::max) / steps.fold(f64::INFINITY, f64::min);
+        let n = samples.max(((64.0 * crowding) as usize).next_power_of_two());
+        if let Ok(fit) = solve_premapped(&fitted, n) {
+            return Ok(fit);
+        }
+    }
+    Err(NsError::MapNotConverged {
+        iterations: MAX_STEPS,
+        correction: first,
+        points: contour.len(),
+    })
+}
+
+/// Newton on the pre-mapped curve from `n` samples, doubled while it
+/// fails up to [`MAX_SAMPLES`]; `Err` the last correction.
+fn solve_premapped(premap: &Premap, mut n: usize) -> Result<Correspondence, f64> {
     loop {
-        match solve_curve(&premap, premap.start(n), -premap.beta) {
+        match solve_curve(premap, premap.start(n), -premap.beta) {
             Ok(fit) => return Ok(fit),
-            Err(last) if n >= MAX_SAMPLES => {
-                return Err(NsError::MapNotConverged {
-                    iterations: MAX_STEPS,
-                    correction: last,
-                    points: contour.len(),
-                })
-            }
+            Err(last) if n >= MAX_SAMPLES => return Err(last),
             Err(_) => n *= 2,
         }
     }
@@ -340,6 +395,82 @@ impl<'a> Premap<'a> {
         }
     }
 
+    /// The pre-map whose critical points are `minus` and `plus` and whose
+    /// slit (the arc they span, of height `2 kappa` over their chord) is
+    /// the image of the circle through `±f` round `iκ`.
+    fn through(spline: &'a CurveSpline, minus: Complex64, plus: Complex64, kappa: f64) -> Self {
+        let span = plus - minus;
+        let beta = span.arg();
+        let f = 0.25 * span.norm();
+        Self {
+            spline,
+            centre: 0.5 * (plus + minus),
+            unrotate: Complex64::from_polar(1.0, -beta),
+            beta,
+            f2: f * f,
+            kappa,
+        }
+    }
+
+    /// `samples` points along the slit, global: the images of points
+    /// evenly round the circle through `±f` (`J` covers the slit twice).
+    fn slit(&self, samples: usize) -> impl Iterator<Item = Complex64> + '_ {
+        let f = self.f2.sqrt();
+        let radius = (self.f2 + self.kappa * self.kappa).sqrt();
+        let turn = self.unrotate.conj();
+        (0..samples).map(move |j| {
+            let phi = TAU * (j as f64 + 0.5) / samples as f64;
+            let w = Complex64::new(0.0, self.kappa) + Complex64::from_polar(radius, phi);
+            let z = if f == 0.0 { w } else { w + self.f2 / w };
+            self.centre + z * turn
+        })
+    }
+
+    /// Pre-maps whose slits lie inside `contour`, for a section whose
+    /// camber line is too far from a circular arc for [`Self::new`]'s
+    /// (module docs, "Slits that leave the section"): critical points at
+    /// the [`REACHES`] (the tips' centres of curvature, or the mid-line's
+    /// points 98 % of the way from the middle to one tip), each with the
+    /// arc height that keeps the slit farthest from the contour, when one
+    /// keeps it inside.
+    fn inside(spline: &'a CurveSpline, contour: &'a Contour) -> impl Iterator<Item = Self> + 'a {
+        let points = contour.points();
+        let frame = PrincipalFrame::of(spline, points);
+        REACHES.into_iter().filter_map(move |reach| {
+            let frame = frame.as_ref()?;
+            let (minus, plus) = frame.critical_points(points, reach)?;
+            Self::widest_inside(spline, contour, minus, plus)
+        })
+    }
+
+    /// Of the slits through `minus` and `plus` with heights up to a
+    /// semicircle's, the one farthest from `contour` that lies inside it.
+    fn widest_inside(
+        spline: &'a CurveSpline,
+        contour: &Contour,
+        minus: Complex64,
+        plus: Complex64,
+    ) -> Option<Self> {
+        const HEIGHTS: usize = 80;
+        let f = 0.25 * (plus - minus).norm();
+        let points = contour.points();
+        (0..=HEIGHTS)
+            .filter_map(|i| {
+                let kappa = f * (2.0 * i as f64 / HEIGHTS as f64 - 1.0);
+                let premap = Self::through(spline, minus, plus, kappa);
+                let mut clearance = f64::INFINITY;
+                for z in premap.slit(64) {
+                    if !encloses(points, z) {
+                        return None;
+                    }
+                    clearance = clearance.min(contour.distance_to(z));
+                }
+                Some((clearance, premap))
+            })
+            .max_by(|a, b| a.0.total_cmp(&b.0))
+            .map(|(_, premap)| premap)
+    }
+
     /// The start `S(t)`: the arc length where the polar angle of `w` is
     /// `t - β` (made increasing: a running maximum blended with 2 % of
     /// the arc length), so that `a` comes out real.
@@ -395,6 +526,106 @@ impl ClosedCurve for Premap<'_> {
         let w = if outside { w1 } else { w2 };
         (w, dz / (1.0 - self.f2 / (w * w)))
     }
+}
+
+/// A section's principal axes through its centroid, and the contour's
+/// points at either end along the major one.
+struct PrincipalFrame {
+    centroid: Complex64,
+    /// Multiplies a point's offset from the centroid into the frame.
+    axis: Complex64,
+    /// The points farthest along the axis either way (indices).
+    near: usize,
+    far: usize,
+}
+
+impl PrincipalFrame {
+    /// The frame of `points` (arc-length weighted, as [`Premap::new`]'s);
+    /// `None` for a near-circle.
+    fn of(spline: &CurveSpline, points: &[Complex64]) -> Option<Self> {
+        let knots = spline.knots();
+        let m = points.len();
+        let length = knots[m];
+        let weight = |i: usize| 0.5 * (knots[i + 1] - knots[(i + m - 1) % m]).rem_euclid(length);
+        let centroid = (0..m).map(|i| points[i] * weight(i)).sum::<Complex64>() / length;
+        let (mut ixx, mut iyy, mut ixy) = (0.0, 0.0, 0.0);
+        for (i, p) in points.iter().enumerate() {
+            let d = p - centroid;
+            ixx += weight(i) * d.re * d.re;
+            iyy += weight(i) * d.im * d.im;
+            ixy += weight(i) * d.re * d.im;
+        }
+        if (ixx - iyy).hypot(2.0 * ixy) / (ixx + iyy) < 0.05 {
+            return None;
+        }
+        let axis = Complex64::from_polar(1.0, -0.5 * (2.0 * ixy).atan2(ixx - iyy));
+        let x = |i: usize| ((points[i] - centroid) * axis).re;
+        let near = (0..m).fold(0, |b, i| if x(i) < x(b) { i } else { b });
+        let far = (0..m).fold(0, |b, i| if x(i) > x(b) { i } else { b });
+        Some(Self {
+            centroid,
+            axis,
+            near,
+            far,
+        })
+    }
+
+    /// The critical points `reach` of the way from the section's middle
+    /// to its tips: at 1 the tips' centres of curvature, else the
+    /// mid-line's points there (halfway between the contour's lowest and
+    /// highest crossing of the line across the axis). `None` when a
+    /// point is missing or outside.
+    fn critical_points(
+        &self,
+        points: &[Complex64],
+        reach: (f64, f64),
+    ) -> Option<(Complex64, Complex64)> {
+        let m = points.len();
+        let curvature_centre =
+            |i: usize| circumcentre(points[(i + m - 1) % m], points[i], points[(i + 1) % m]);
+        let frame = |p: Complex64| (p - self.centroid) * self.axis;
+        let (x_near, x_far) = (frame(points[self.near]).re, frame(points[self.far]).re);
+        let middle = 0.5 * (x_near + x_far);
+        let at = |tip: usize, x_tip: f64, reach: f64| -> Option<Complex64> {
+            if reach >= 1.0 {
+                return curvature_centre(tip);
+            }
+            let x = middle + reach * (x_tip - middle);
+            let (mut low, mut high) = (f64::INFINITY, f64::NEG_INFINITY);
+            for i in 0..m {
+                let (p, q) = (frame(points[i]), frame(points[(i + 1) % m]));
+                if (p.re - x) * (q.re - x) <= 0.0 && p.re != q.re {
+                    let y = p.im + (q.im - p.im) * (x - p.re) / (q.re - p.re);
+                    low = low.min(y);
+                    high = high.max(y);
+                }
+            }
+            (low < high).then(|| self.centroid + Complex64::new(x, 0.5 * (low + high)) / self.axis)
+        };
+        let (minus, plus) = (
+            at(self.near, x_near, reach.0)?,
+            at(self.far, x_far, reach.1)?,
+        );
+        (encloses(points, minus) && encloses(points, plus)).then_some((minus, plus))
+    }
+}
+
+/// Whether the polygon `points` encloses `z` (its winding number round
+/// `z` is not zero; crossings of the ray to the right counted with their
+/// direction).
+fn encloses(points: &[Complex64], z: Complex64) -> bool {
+    let m = points.len();
+    let mut winding = 0_i32;
+    for i in 0..m {
+        let (p, q) = (points[i], points[(i + 1) % m]);
+        let side = (q.re - p.re) * (z.im - p.im) - (z.re - p.re) * (q.im - p.im);
+        if p.im <= z.im && q.im > z.im && side > 0.0 {
+            winding += 1;
+        } else if p.im > z.im && q.im <= z.im && side < 0.0 {
+            winding -= 1;
+        }
+    }
+    winding != 0
 }
 
 /// The centre of the circle through three points (`None` when collinear).

@@ -240,3 +240,33 @@ fn the_grid_of_a_fitted_map() {
         assert!(smallest > 0.0 && smallest < largest);
     }
 }
+
+/// Sections whose camber line is far from a circular arc: NACA 4706
+/// (4 % camber at 70 % of the chord, 6 % thick) and 4106 (at 10 %), whose
+/// Joukowski pre-map with the arc of their mid-chord camber crosses the
+/// contour near the trailing or leading edge, so Newton failed at its
+/// first step until 2026-12-07. The pre-map is now one whose slit lies
+/// inside the section, and the fitted boundary reproduces the contour as
+/// closely as NACA 0012's (above) with the same terms.
+#[test]
+fn aft_and_fore_loaded_thin_sections_are_reproduced() {
+    for code in ["4706", "4106", "8712"] {
+        let contour = Contour::naca4(code, 256, 0.005).unwrap();
+        let reference = Contour::naca4(code, 2048, 0.005).unwrap();
+        let mut previous = f64::INFINITY;
+        for terms in [16, 64, 128] {
+            let map = SectionMap::from_contour(&contour, terms).unwrap();
+            let distance = boundary_distance(&map, &reference, 1024);
+            println!("NACA {code}: {terms} terms: worst distance {distance:.2e} chords");
+            assert!(
+                distance < 0.7 * previous,
+                "{code}: {terms} terms: {distance:.2e}"
+            );
+            previous = distance;
+            if terms == 128 {
+                assert!(distance < 4e-5, "{code}: {distance:.2e}");
+                assert_univalent(&map);
+            }
+        }
+    }
+}
