@@ -282,7 +282,8 @@ pub fn run_command(a: &DesignArgs) -> Result<()> {
     if let Some(refusal) = &run.refused_now {
         eprintln!(
             "warning: {dir} was run with a configuration this fwav refuses ({refusal}); its \
-             results are reported as they were computed, and a new run needs a value in range"
+             results are reported as they were computed, and a new run needs a configuration \
+             this fwav accepts"
         );
     }
     if a.json {

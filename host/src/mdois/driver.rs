@@ -71,9 +71,11 @@ pub struct DesignRun {
     /// wrote nothing.
     pub finished_before: bool,
     /// A finished run's configuration has a value this fwav refuses (an
-    /// earlier one accepted it): the refusal, said beside the results it
-    /// reports as they were computed. (An unfinished run is refused
-    /// instead, [`DesignError::RefusedNow`].)
+    /// earlier one accepted it): the refusal's message (a
+    /// [`crate::config::ConfigError`]'s, which is neither `Clone` nor
+    /// `PartialEq`), said beside the results it reports as they were
+    /// computed. (An unfinished run is refused instead,
+    /// [`DesignError::RefusedNow`].)
     pub refused_now: Option<String>,
 }
 
@@ -127,7 +129,9 @@ impl RunDir {
 
 /// Goes on with the run in `dir`: its `config.toml` must be the
 /// configuration it started with (and `given`, if any); a finished run is
-/// reported as it is, nothing written.
+/// reported as it is, nothing written (with the value this fwav refuses,
+/// if any, in [`DesignRun::refused_now`]); an unfinished one with a value
+/// this fwav refuses is refused ([`DesignError::RefusedNow`]).
 fn continue_run(
     dir: &Path,
     given: Option<&SystemConfig>,

@@ -134,7 +134,8 @@ pub enum DesignError {
         /// What is wrong with it.
         problem: StateProblem,
     },
-    /// The run's `config.toml` does not parse or is refused.
+    /// The run's `config.toml` does not parse, or has a key this fwav
+    /// does not know (a value outside its range is [`Self::RefusedNow`]).
     #[error("{}: {source}", .path.display())]
     RunConfig {
         /// The run's `config.toml`.

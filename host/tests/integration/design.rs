@@ -11,7 +11,7 @@ use fwav::config::SystemConfig;
 use fwav::file_format::{FormatError, ReadError};
 use fwav::mdois::state::RunState;
 use fwav::mdois::summary::Summary;
-use fwav::mdois::{resume, start, DesignError, Outcome, RunOptions, Stage};
+use fwav::mdois::{resume, start, DesignError, DesignRun, Outcome, RunOptions, Stage};
 
 use crate::program::{fwav, fwav_command};
 
@@ -129,6 +129,34 @@ fn designed_plant_is_the_final_analysis(dir: &Path, cycle: usize, flown_hz: f64)
 
 fn run_of(state: &RunState, cycle: usize, stage: Stage) -> Option<usize> {
     state.stage(cycle, stage).map(|r| r.run)
+}
+
+/// Had an earlier fwav run the finished coarse run in `dir` with a value
+/// this one refuses (a carbon mass fraction of 0.1, below today's floor
+/// of 0.2), a resume still reports it as computed (`done`'s summary),
+/// computing nothing, with the refusal beside it; the run's files are put
+/// back after.
+fn a_finished_run_now_refused_is_reported(dir: &Path, done: &DesignRun) {
+    let kept: Vec<(&str, Vec<u8>)> = ["config.toml", "state.json"]
+        .into_iter()
+        .map(|f| (f, std::fs::read(dir.join(f)).unwrap()))
+        .collect();
+    crate::design_safety::as_started_by_an_earlier_fwav(
+        dir,
+        ("mass_fraction = 0.7\n", "mass_fraction = 0.1\n"),
+    );
+    let earlier = resume(dir, None, &RunOptions::default(), &|_| {}).unwrap();
+    assert!(earlier.finished_before && earlier.stages_computed == 0);
+    assert_eq!(earlier.outcome, done.outcome);
+    let refusal = earlier.refused_now.expect("the value now refused, said");
+    assert!(
+        refusal.contains("topology.mass_fraction = 0.1 is outside [0.2, 1]"),
+        "{refusal}"
+    );
+    assert_eq!(earlier.summary, done.summary);
+    for (file, bytes) in kept {
+        std::fs::write(dir.join(file), bytes).unwrap();
+    }
 }
 
 /// The coarse design converges (the documented case: cycle 2) and writes
@@ -297,28 +325,7 @@ fn coarse_design_converges_writes_everything_and_resumes() {
     assert!(done.finished_before);
     assert_eq!(done.outcome, run.outcome);
     assert_eq!(done.refused_now, None);
-    // Had an earlier fwav run it with a value this one refuses, it is
-    // still reported, as computed, and the refusal said beside it.
-    let kept: Vec<(&str, Vec<u8>)> = ["config.toml", "state.json"]
-        .into_iter()
-        .map(|f| (f, std::fs::read(dir.join(f)).unwrap()))
-        .collect();
-    crate::design_safety::as_started_by_an_earlier_fwav(
-        &dir,
-        ("mass_fraction = 0.7\n", "mass_fraction = 0.1\n"),
-    );
-    let earlier = resume(&dir, None, &RunOptions::default(), &|_| {}).unwrap();
-    assert!(earlier.finished_before && earlier.stages_computed == 0);
-    assert_eq!(earlier.outcome, run.outcome);
-    let refusal = earlier.refused_now.expect("the value now refused, said");
-    assert!(
-        refusal.contains("topology.mass_fraction") && refusal.contains("0.1"),
-        "{refusal}"
-    );
-    assert_eq!(earlier.summary, done.summary);
-    for (file, bytes) in kept {
-        std::fs::write(dir.join(file), bytes).unwrap();
-    }
+    a_finished_run_now_refused_is_reported(&dir, &done);
 
     killed_design_resumes_with_the_same_answer(&reference);
 

@@ -313,6 +313,15 @@ fn a_run_with_a_value_now_refused_is_not_continued() {
     .unwrap();
     as_started_by_an_earlier_fwav(&run, ("mass_fraction = 0.7\n", "mass_fraction = 0.1\n"));
     let before = RunState::load(&run).unwrap();
+    let listing = |dir: &Path| {
+        let mut names: Vec<_> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        names.sort();
+        names
+    };
+    let (files, config_text) = (listing(&run), text(&run.join("config.toml")));
     let ran = fwav_within(
         &["design", "--quiet", "--resume", run.to_str().unwrap()],
         REFUSAL,
@@ -321,15 +330,15 @@ fn a_run_with_a_value_now_refused_is_not_continued() {
     println!("{stderr}");
     for part in [
         run.to_str().unwrap(),
-        "mass_fraction",
-        "0.1",
-        "0.2",
+        "topology.mass_fraction = 0.1 is outside [0.2, 1]",
         "this fwav refuses",
-        "new run",
+        "start a new run",
     ] {
         assert!(stderr.contains(part), "{part}: {stderr}");
     }
     assert_eq!(RunState::load(&run).unwrap(), before, "the state changed");
+    assert_eq!(listing(&run), files, "the directory's files changed");
+    assert_eq!(text(&run.join("config.toml")), config_text);
     std::fs::remove_dir_all(&dir).ok();
 }
 
