@@ -52,33 +52,38 @@
 //! ## Slits that leave the section
 //! The pre-map's slit is a circular arc through the critical points, of
 //! the height of the mid-chord camber. Where the camber line is far from
-//! a circular arc, the arc leaves a thin section near an edge, the
-//! contour crosses the slit, and its pre-image is no closed curve: Newton
-//! failed at its first step on NACA 4706 (4 % camber at 70 % of the
-//! chord, 6 % thick; the camber line's slope at the trailing edge is
-//! −0.27 where the arc's is −0.16), and failed on 34 of 104 NACA
-//! 4-digit sections scanned (camber 0 to 9 % at 10 to 90 % of the chord,
-//! 6 to 30 % thick: those of camber 2 to 9 % at 10 % or 70 to 90 %) and
-//! on NACA 0090 and 0099 (`fwav aero2d --model ns --section nacaXXXX`,
-//! 2026-12-07). When the first pre-map fails, the fit tries pre-maps
-//! whose slits lie inside the section ([`Premap::inside`]): critical
-//! points at the tips' centres of curvature, or one moved to the
+//! a circular arc, that arc leaves a thin section near an edge, the
+//! contour crosses it, and its pre-image is no closed curve (NACA 4706,
+//! 4 % camber at 70 % of the chord, 6 % thick: the camber line's slope at
+//! the trailing edge is −0.27 where the arc's is about −0.15). Newton then
+//! failed: on the contours `fwav aero2d --model ns --section nacaXXXX`
+//! fits (401 points, the trailing edge opened to 0.005 chords), on 35 of
+//! 104 NACA 4-digit sections scanned (camber 0, 2, 4, 6, 8, 9 % at 10 to
+//! 90 % of the chord, 6 to 30 % thick; those that failed: camber 2 to 9 %
+//! at 10 % or 70 to 90 %) and on NACA 0090 and 0099 (the scan:
+//! 2026-12-07). When the first pre-map fails, the fit tries
+//! pre-maps whose slits lie inside the section ([`Premap::inside`]):
+//! critical points at the tips' centres of curvature, or one moved to the
 //! mid-line 98 % of the way out (a leading edge whose camber turns fast),
-//! each with the arc height that keeps the slit farthest from the
-//! contour among 81 from a semicircle down to one up. That maps 11 of
-//! the 36: NACA 0090, 2912, 4106, 4706, 4920, 4930, 6706, 8112, 8712,
-//! 9112 and 9712 (`tests/section_maps.rs` checks the boundaries of
-//! 4706, 4106 and 8712 at 2e-5 chords with 128 terms; 9112's, whose
-//! leading edge turns fastest, is 1e-3 off with 128 terms). The other 25
-//! (NACA 2906, 4906, 4912, 6106, 6130, 6906 to 6930, 8106, 8120, 8130,
-//! 8706, 8906 to 8930, 9106, 9120, 9130, 9706, 9906 to 9930, and 0099)
-//! still fail: no one arc fits inside them, and critical points moved
-//! farther in (tried to 90 % of the way) leave a thin tongue Newton does
-//! not converge on. Such a section needs a slit that follows its
-//! mid-line (a composition of elementary maps, as the zipper
-//! algorithm's: Marshall & Rohde 2007, *SIAM J. Numer. Anal.* 45), not
-//! built. Sections the first pre-map fits are fitted as before, to the
-//! bit.
+//! each with the arc height, of 81 from a semicircle one way to one the
+//! other, whose slit lies inside and leaves the pre-image roundest. That
+//! maps 12 of the 37: NACA 0090, 2912, 4106, 4706, 4920, 4930, 6706, 6930,
+//! 8112, 8712, 9112 and 9712. The unit tests below check, on 4706, 4106
+//! and 6930 as the command fits them, that the first slit leaves the
+//! section, Newton fails after it, and a fallback fits;
+//! `tests/section_maps.rs` that the boundaries of 4106, 9712 and 6930
+//! (from `Contour::naca4`'s 256 points, where the first pre-map fails
+//! too) converge with the terms, to 2.0e-5, 8.3e-6 and 1.2e-4 chords with
+//! 128. 9112's leading edge, which turns fastest, is about 1e-3 chords
+//! off with 128 terms. The other 25 (NACA 2906, 4906, 4912, 6106, 6130,
+//! 6906, 6912, 6920, 8106, 8120, 8130, 8706, 8906, 8912, 8920, 8930,
+//! 9106, 9120, 9130, 9706, 9906, 9912, 9920, 9930, and 0099) still fail:
+//! no one arc fits inside them, and critical points moved farther in
+//! (tried to 90 % of the way) leave a thin tongue Newton does not
+//! converge on. Such a section needs a slit that follows its mid-line (a
+//! composition of elementary maps, as the zipper algorithm's: Marshall &
+//! Rohde 2007, *SIAM J. Numer. Anal.* 45), not built. Sections the first
+//! pre-map fits are fitted as before, to the bit.
 //!
 //! Accuracy: that of the contour's cubic spline, `O(h⁴)` on smooth
 //! contours (4:1 ellipse from 1024 points: 4e-11), and of the truncation
@@ -127,6 +132,12 @@ const MAX_SAMPLES: usize = 1 << 15;
 /// middle to each tip (1: the tip's centre of curvature; module docs,
 /// "Slits that leave the section").
 const REACHES: [(f64, f64); 3] = [(1.0, 1.0), (0.98, 1.0), (1.0, 0.98)];
+/// The fitted pre-maps' arc heights tried, evenly from a semicircle one
+/// way (`κ = -f`) to one the other (`κ = f`).
+const SLIT_HEIGHTS: usize = 81;
+/// Points round the pre-map's circle at which a slit is tested inside
+/// the section (the slit is covered twice: 128 distinct points along it).
+const SLIT_SAMPLES: usize = 256;
 /// The most Newton steps.
 const MAX_STEPS: usize = 60;
 /// Converged when the largest correction is below this fraction of the
@@ -260,20 +271,19 @@ fn wrap(x: f64) -> f64 {
 
 /// The correspondence of `contour` on `samples` points (a power of two,
 /// at least 16), from `S = arc length` (module docs). Cost: about ten
-/// Newton steps of 5 FFTs and `samples` spline evaluations.
+/// Newton steps of 5 FFTs and `samples` spline evaluations. When Newton
+/// fails after [`Premap::new`], up to three more pre-maps are tried
+/// ([`Premap::inside`]), each with its samples doubled up to
+/// [`MAX_SAMPLES`] while it fails: a contour none fits costs up to about
+/// a second.
 ///
 /// # Errors
-/// [`NsError::MapNotConverged`] when Newton does not converge.
+/// [`NsError::MapNotConverged`] when Newton converges after no pre-map
+/// (the correction it carries is the first pre-map's last).
 pub(crate) fn solve(contour: &Contour, samples: usize) -> Result<Correspondence, NsError> {
     let spline = CurveSpline::closed(contour.points());
-    // The start's crowding (largest over smallest step in S) asks for
-    // about 64 samples per factor of it: a thin section's ends.
     let premap = Premap::new(&spline, contour.points());
-    let probe = premap.start(samples);
-    let steps = probe.windows(2).map(|w| w[1] - w[0]);
-    let crowding = steps.clone().fold(0.0, f64::max) / steps.fold(f64::INFINITY, f64::min);
-    let n = samples.max(((64.0 * crowding) as usize).next_power_of_two());
-    let first = match solve_premapped(&premap, n) {
+    let first = match solve_premapped(&premap, samples) {
         Ok(fit) => return Ok(fit),
         Err(last) => last,
     };
@@ -281,11 +291,7 @@ pub(crate) fn solve(contour: &Contour, samples: usize) -> Result<Correspondence,
     // section's camber line is no circular arc (module docs, "Slits
     // that leave the section"): slits kept inside it instead.
     for fitted in Premap::inside(&spline, contour) {
-        let probe = fitted.start(samples);
-        let steps = probe.windows(2).map(|w| w[1] - w[0]);
-        let crowding = steps.clone().fold(0.0, f64::max) / steps.fold(f64::INFINITY, f64::min);
-        let n = samples.max(((64.0 * crowding) as usize).next_power_of_two());
-        if let Ok(fit) = solve_premapped(&fitted, n) {
+        if let Ok(fit) = solve_premapped(&fitted, samples) {
             return Ok(fit);
         }
     }
@@ -296,9 +302,18 @@ pub(crate) fn solve(contour: &Contour, samples: usize) -> Result<Correspondence,
     })
 }
 
-/// Newton on the pre-mapped curve from `n` samples, doubled while it
-/// fails up to [`MAX_SAMPLES`]; `Err` the last correction.
-fn solve_premapped(premap: &Premap, mut n: usize) -> Result<Correspondence, f64> {
+/// Newton on the pre-mapped curve from at least `samples` samples (more
+/// where the start crowds), doubled while it fails up to
+/// [`MAX_SAMPLES`]; `Err` the last correction.
+fn solve_premapped(premap: &Premap, samples: usize) -> Result<Correspondence, f64> {
+    // The start's crowding (largest over smallest step in S) asks for
+    // about 64 samples per factor of it: a thin section's ends. (Capped
+    // so that an infinite crowding cannot overflow.)
+    let probe = premap.start(samples);
+    let steps = probe.windows(2).map(|w| w[1] - w[0]);
+    let crowding = steps.clone().fold(0.0, f64::max) / steps.fold(f64::INFINITY, f64::min);
+    let wanted = (64.0 * crowding).min((1_u64 << 40) as f64) as usize;
+    let mut n = samples.max(wanted.next_power_of_two());
     loop {
         match solve_curve(premap, premap.start(n), -premap.beta) {
             Ok(fit) => return Ok(fit),
@@ -309,10 +324,12 @@ fn solve_premapped(premap: &Premap, mut n: usize) -> Result<Correspondence, f64>
 }
 
 /// The Joukowski pre-map `z = m + e^{iβ} (w + f²/w)` whose critical
-/// points `m ± 2f e^{iβ}` are the centres of curvature at the contour's two
-/// tips along its principal axis: it opens a thin section into a
-/// near-circle in `w`, where Newton converges from the polar angle (module
-/// docs). A near-circle gets `f = 0` (no pre-map).
+/// points `m ± 2f e^{iβ}` are ([`Premap::new`]) the centres of curvature
+/// at the contour's two tips along its principal axis, or ([`Premap::inside`])
+/// points chosen so that its slit lies inside the section: it opens a
+/// thin section into a near-circle in `w`, where Newton converges from
+/// the polar angle (module docs). A near-circle gets `f = 0` (no
+/// pre-map).
 struct Premap<'a> {
     spline: &'a CurveSpline,
     centre: Complex64,
@@ -327,18 +344,9 @@ struct Premap<'a> {
 
 impl<'a> Premap<'a> {
     fn new(spline: &'a CurveSpline, points: &[Complex64]) -> Self {
-        let knots = spline.knots();
         let m = points.len();
-        let length = knots[m];
-        let weight = |i: usize| 0.5 * (knots[i + 1] - knots[(i + m - 1) % m]).rem_euclid(length);
-        let centroid = (0..m).map(|i| points[i] * weight(i)).sum::<Complex64>() / length;
-        let (mut ixx, mut iyy, mut ixy) = (0.0, 0.0, 0.0);
-        for (i, p) in points.iter().enumerate() {
-            let d = p - centroid;
-            ixx += weight(i) * d.re * d.re;
-            iyy += weight(i) * d.im * d.im;
-            ixy += weight(i) * d.re * d.im;
-        }
+        let frame = PrincipalFrame::of(spline, points);
+        let (centroid, axis) = (frame.centroid, frame.axis);
         let circle = Self {
             spline,
             centre: centroid,
@@ -347,16 +355,11 @@ impl<'a> Premap<'a> {
             f2: 0.0,
             kappa: 0.0,
         };
-        let anisotropy = (ixx - iyy).hypot(2.0 * ixy) / (ixx + iyy);
-        if anisotropy < 0.05 {
+        if frame.anisotropy < 0.05 {
             return circle;
         }
-        let axis = Complex64::from_polar(1.0, -0.5 * (2.0 * ixy).atan2(ixx - iyy));
-        let x: Vec<f64> = points.iter().map(|p| ((p - centroid) * axis).re).collect();
-        let pick = |better: fn(f64, f64) -> bool| {
-            (0..m).fold(0, |b, i| if better(x[i], x[b]) { i } else { b })
-        };
-        let (far, near) = (pick(|a, b| a > b), pick(|a, b| a < b));
+        let (far, near) = (frame.far, frame.near);
+        let x = |i: usize| ((points[i] - centroid) * axis).re;
         let curvature_centre =
             |i: usize| circumcentre(points[(i + m - 1) % m], points[i], points[(i + 1) % m]);
         let (Some(plus), Some(minus)) = (curvature_centre(far), curvature_centre(near)) else {
@@ -365,7 +368,7 @@ impl<'a> Premap<'a> {
         let span = plus - minus;
         // Both critical points well inside, on the tips' side of the centre.
         let inside = ((plus - centroid) * axis).re > 0.0 && ((minus - centroid) * axis).re < 0.0;
-        if !inside || span.norm() < 0.1 * (x[far] - x[near]) {
+        if !inside || span.norm() < 0.1 * (x(far) - x(near)) {
             return circle;
         }
         let beta = span.arg();
@@ -412,6 +415,21 @@ impl<'a> Premap<'a> {
         }
     }
 
+    /// How far the pre-image of the contour is from a circle round `iκ`:
+    /// the largest over the smallest distance of its knots' pre-images
+    /// from `iκ` (1 for a circle).
+    fn roundness(&self) -> f64 {
+        let knots = self.spline.knots();
+        let centre = Complex64::new(0.0, self.kappa);
+        let (near, far) = knots[..knots.len() - 1]
+            .iter()
+            .map(|&s| (self.eval(s).0 - centre).norm())
+            .fold((f64::INFINITY, 0.0_f64), |(lo, hi), r| {
+                (lo.min(r), hi.max(r))
+            });
+        far / near
+    }
+
     /// `samples` points along the slit, global: the images of points
     /// evenly round the circle through `±f` (`J` covers the slit twice).
     fn slit(&self, samples: usize) -> impl Iterator<Item = Complex64> + '_ {
@@ -431,41 +449,50 @@ impl<'a> Premap<'a> {
     /// (module docs, "Slits that leave the section"): critical points at
     /// the [`REACHES`] (the tips' centres of curvature, or the mid-line's
     /// points 98 % of the way from the middle to one tip), each with the
-    /// arc height that keeps the slit farthest from the contour, when one
-    /// keeps it inside.
+    /// arc height whose slit lies inside and leaves the pre-image
+    /// roundest, when one lies inside.
     fn inside(spline: &'a CurveSpline, contour: &'a Contour) -> impl Iterator<Item = Self> + 'a {
         let points = contour.points();
         let frame = PrincipalFrame::of(spline, points);
-        REACHES.into_iter().filter_map(move |reach| {
-            let frame = frame.as_ref()?;
+        // A near-circle has no pre-map to fall back from.
+        let reaches = if frame.anisotropy < 0.05 {
+            &REACHES[..0]
+        } else {
+            &REACHES[..]
+        };
+        reaches.iter().filter_map(move |&reach| {
             let (minus, plus) = frame.critical_points(points, reach)?;
             Self::widest_inside(spline, contour, minus, plus)
         })
     }
 
-    /// Of the slits through `minus` and `plus` with heights up to a
-    /// semicircle's, the one farthest from `contour` that lies inside it.
+    /// Of the [`SLIT_HEIGHTS`] slits through `minus` and `plus`, from a
+    /// semicircle one way to one the other, that which lies inside
+    /// `contour` (each of its [`SLIT_SAMPLES`] points enclosed, and no
+    /// segment between consecutive ones crossing an edge of the contour)
+    /// and leaves the contour's pre-image roundest ([`Self::roundness`]).
+    /// Cost: `O(SLIT_HEIGHTS SLIT_SAMPLES N)` for `N` contour points (a
+    /// few milliseconds for 432).
     fn widest_inside(
         spline: &'a CurveSpline,
         contour: &Contour,
         minus: Complex64,
         plus: Complex64,
     ) -> Option<Self> {
-        const HEIGHTS: usize = 80;
         let f = 0.25 * (plus - minus).norm();
+        if f == 0.0 {
+            return None;
+        }
         let points = contour.points();
-        (0..=HEIGHTS)
+        (0..SLIT_HEIGHTS)
             .filter_map(|i| {
-                let kappa = f * (2.0 * i as f64 / HEIGHTS as f64 - 1.0);
+                let kappa = f * (2.0 * i as f64 / (SLIT_HEIGHTS - 1) as f64 - 1.0);
                 let premap = Self::through(spline, minus, plus, kappa);
-                let mut clearance = f64::INFINITY;
-                for z in premap.slit(64) {
-                    if !encloses(points, z) {
-                        return None;
-                    }
-                    clearance = clearance.min(contour.distance_to(z));
+                let slit: Vec<Complex64> = premap.slit(SLIT_SAMPLES).collect();
+                if !slit.iter().all(|&z| encloses(points, z)) || crosses(&slit, points) {
+                    return None;
                 }
-                Some((clearance, premap))
+                Some((-premap.roundness(), premap))
             })
             .max_by(|a, b| a.0.total_cmp(&b.0))
             .map(|(_, premap)| premap)
@@ -529,20 +556,25 @@ impl ClosedCurve for Premap<'_> {
 }
 
 /// A section's principal axes through its centroid, and the contour's
-/// points at either end along the major one.
+/// points at either end along the major one (the frame of [`Premap::new`]
+/// and of the fallback pre-maps' critical points).
 struct PrincipalFrame {
     centroid: Complex64,
     /// Multiplies a point's offset from the centroid into the frame.
     axis: Complex64,
+    /// How far from round: `|I_xx - I_yy, 2 I_xy| / (I_xx + I_yy)` of
+    /// the points' second moments (0 for a circle); below 0.05 the
+    /// section is taken as a near-circle, with no pre-map.
+    anisotropy: f64,
     /// The points farthest along the axis either way (indices).
     near: usize,
     far: usize,
 }
 
 impl PrincipalFrame {
-    /// The frame of `points` (arc-length weighted, as [`Premap::new`]'s);
-    /// `None` for a near-circle.
-    fn of(spline: &CurveSpline, points: &[Complex64]) -> Option<Self> {
+    /// The frame of `points` (weighted by the arc length each point
+    /// stands for).
+    fn of(spline: &CurveSpline, points: &[Complex64]) -> Self {
         let knots = spline.knots();
         let m = points.len();
         let length = knots[m];
@@ -555,26 +587,31 @@ impl PrincipalFrame {
             iyy += weight(i) * d.im * d.im;
             ixy += weight(i) * d.re * d.im;
         }
-        if (ixx - iyy).hypot(2.0 * ixy) / (ixx + iyy) < 0.05 {
-            return None;
-        }
+        let anisotropy = (ixx - iyy).hypot(2.0 * ixy) / (ixx + iyy);
         let axis = Complex64::from_polar(1.0, -0.5 * (2.0 * ixy).atan2(ixx - iyy));
-        let x = |i: usize| ((points[i] - centroid) * axis).re;
-        let near = (0..m).fold(0, |b, i| if x(i) < x(b) { i } else { b });
-        let far = (0..m).fold(0, |b, i| if x(i) > x(b) { i } else { b });
-        Some(Self {
+        let x: Vec<f64> = points.iter().map(|p| ((p - centroid) * axis).re).collect();
+        let pick = |better: fn(f64, f64) -> bool| {
+            (0..m).fold(0, |b, i| if better(x[i], x[b]) { i } else { b })
+        };
+        Self {
             centroid,
             axis,
-            near,
-            far,
-        })
+            anisotropy,
+            far: pick(|a, b| a > b),
+            near: pick(|a, b| a < b),
+        }
     }
 
-    /// The critical points `reach` of the way from the section's middle
-    /// to its tips: at 1 the tips' centres of curvature, else the
-    /// mid-line's points there (halfway between the contour's lowest and
-    /// highest crossing of the line across the axis). `None` when a
-    /// point is missing or outside.
+    /// The critical points `reach` (towards the near tip, towards the far
+    /// one) of the way from the section's middle to its tips: at 1 the
+    /// tips' centres of curvature, else the mid-line's points there
+    /// (halfway between the contour's lowest and highest crossing of the
+    /// line across the axis). `None` when a point is missing or outside.
+    /// Unlike [`Premap::new`]'s, the two may lie on one side of the
+    /// middle, even crossed (a blunt tip's centre of curvature lies
+    /// beyond the middle): any two points inside give a slit to test, and
+    /// NACA 0090 maps so, through a slit from its leading edge's centre of
+    /// curvature near the trailing edge to the trailing edge's.
     fn critical_points(
         &self,
         points: &[Complex64],
@@ -626,6 +663,22 @@ fn encloses(points: &[Complex64], z: Complex64) -> bool {
         }
     }
     winding != 0
+}
+
+/// Whether the polyline `path` (open) crosses an edge of the closed
+/// polygon `points`.
+fn crosses(path: &[Complex64], points: &[Complex64]) -> bool {
+    let m = points.len();
+    let side = |p: Complex64, q: Complex64, r: Complex64| {
+        (q.re - p.re) * (r.im - p.im) - (r.re - p.re) * (q.im - p.im)
+    };
+    path.windows(2).any(|w| {
+        (0..m).any(|i| {
+            let (p, q) = (points[i], points[(i + 1) % m]);
+            side(w[0], w[1], p) * side(w[0], w[1], q) < 0.0
+                && side(p, q, w[0]) * side(p, q, w[1]) < 0.0
+        })
+    })
 }
 
 /// The centre of the circle through three points (`None` when collinear).
@@ -800,6 +853,133 @@ mod tests {
             let exact = -(3.0 * TAU * j as f64 / n as f64).sin();
             assert!((k - exact).abs() < 1e-14, "{j}: {k} {exact}");
         }
+    }
+
+    /// NACA 4706, 4106 and 6930 as `fwav aero2d --model ns` fits them
+    /// ([`sharp_naca`]; module docs, "Slits that leave the section"): the
+    /// first pre-map's slit leaves the section and Newton fails after it;
+    /// a fallback's slit lies inside, and the fit converges. NACA 9906
+    /// fits none: an error, not a panic.
+    #[test]
+    fn a_slit_inside_the_section_fits_where_the_first_fails() {
+        for code in ["4706", "4106", "6930"] {
+            let contour = sharp_naca(code);
+            let points = contour.points();
+            let spline = CurveSpline::closed(points);
+            let first = Premap::new(&spline, points);
+            let slit: Vec<Complex64> = first.slit(SLIT_SAMPLES).collect();
+            let leaves = crosses(&slit, points) || !slit.iter().all(|&z| encloses(points, z));
+            assert!(leaves, "NACA {code}: the first pre-map's slit stays inside");
+            assert!(
+                solve_premapped(&first, 1024).is_err(),
+                "NACA {code}: the first fits"
+            );
+            let fitted = Premap::inside(&spline, &contour).next();
+            let fitted = fitted.unwrap_or_else(|| panic!("NACA {code}: no slit inside"));
+            let slit: Vec<Complex64> = fitted.slit(SLIT_SAMPLES).collect();
+            assert!(!crosses(&slit, points) && slit.iter().all(|&z| encloses(points, z)));
+            assert!(solve(&contour, 1024).is_ok(), "NACA {code}: not fitted");
+        }
+        let fit = solve(&sharp_naca("9906"), 1024);
+        assert!(
+            matches!(fit, Err(NsError::MapNotConverged { .. })),
+            "NACA 9906: {:?}",
+            fit.map(|_| ())
+        );
+    }
+
+    /// [`Premap::through`] the critical points of [`Premap::new`], with
+    /// its `κ`, is that pre-map; its slit spans the critical points and
+    /// rises `2κ` above their chord (`J(i(κ + r)) = 2iκ`, `r² = f² + κ²`).
+    #[test]
+    fn a_pre_map_through_its_critical_points() {
+        let contour = Contour::naca4("2412", 256, 0.005).unwrap();
+        let spline = CurveSpline::closed(contour.points());
+        let first = Premap::new(&spline, contour.points());
+        let half_span = 2.0 * first.f2.sqrt() * first.unrotate.conj();
+        let (minus, plus) = (first.centre - half_span, first.centre + half_span);
+        let again = Premap::through(&spline, minus, plus, first.kappa);
+        assert!((again.centre - first.centre).norm() < 1e-14);
+        assert!((again.beta - first.beta).abs() < 1e-14);
+        assert!((again.f2 - first.f2).abs() < 1e-14 * first.f2);
+        let slit = Premap::through(
+            &spline,
+            Complex64::new(-2.0, 0.0),
+            Complex64::new(2.0, 0.0),
+            0.3,
+        );
+        let points: Vec<Complex64> = slit.slit(4096).collect();
+        let widest = points.iter().fold(0.0_f64, |m, z| m.max(z.re.abs()));
+        let highest = points.iter().fold(f64::NEG_INFINITY, |m, z| m.max(z.im));
+        let lowest = points.iter().fold(f64::INFINITY, |m, z| m.min(z.im));
+        assert!((widest - 2.0).abs() < 1e-5, "{widest}");
+        assert!((highest - 0.6).abs() < 1e-5, "{highest}");
+        assert!(lowest > -1e-12, "{lowest}");
+    }
+
+    /// A unit square encloses its middle, not a point beside it; a path
+    /// across one side crosses it, one inside does not.
+    #[test]
+    fn inside_a_square() {
+        let square = [
+            Complex64::new(0.0, 0.0),
+            Complex64::new(1.0, 0.0),
+            Complex64::new(1.0, 1.0),
+            Complex64::new(0.0, 1.0),
+        ];
+        assert!(encloses(&square, Complex64::new(0.5, 0.5)));
+        assert!(!encloses(&square, Complex64::new(1.5, 0.5)));
+        let across = [Complex64::new(0.5, 0.5), Complex64::new(1.5, 0.5)];
+        let within = [Complex64::new(0.2, 0.5), Complex64::new(0.8, 0.5)];
+        assert!(crosses(&across, &square));
+        assert!(!crosses(&within, &square));
+    }
+
+    /// The contour `fwav aero2d --model ns --section naca<code>` fits: the
+    /// NACA 4-digit section (Abbott & von Doenhoff 1959, §6.4; the closed
+    /// trailing edge's thickness coefficient −0.1036) through 401 points
+    /// by the cosine rule, its sharp trailing edge opened to 0.005 chords
+    /// and closed by an arc on 512 points
+    /// ([`Contour::with_blunt_trailing_edge`]).
+    fn sharp_naca(code: &str) -> Contour {
+        let digit = |i: usize| f64::from(code.as_bytes()[i] - b'0');
+        let (m, p, t) = (
+            digit(0) / 100.0,
+            digit(1) / 10.0,
+            (10.0 * digit(2) + digit(3)) / 100.0,
+        );
+        let half = |x: f64| {
+            5.0 * t
+                * (0.2969 * x.sqrt() - 0.126 * x - 0.3516 * x * x + 0.2843 * x.powi(3)
+                    - 0.1036 * x.powi(4))
+        };
+        let camber = |x: f64| {
+            if m == 0.0 {
+                (0.0, 0.0)
+            } else if x < p {
+                (
+                    m / (p * p) * (2.0 * p * x - x * x),
+                    2.0 * m / (p * p) * (p - x),
+                )
+            } else {
+                let q = (1.0 - p) * (1.0 - p);
+                (
+                    m / q * (1.0 - 2.0 * p + 2.0 * p * x - x * x),
+                    2.0 * m / q * (p - x),
+                )
+            }
+        };
+        let surface = |x: f64, side: f64| {
+            let ((yc, slope), yt) = (camber(x), half(x));
+            let theta = slope.atan();
+            (x - side * yt * theta.sin(), yc + side * yt * theta.cos())
+        };
+        let n = 200;
+        let x = |i: usize| 0.5 * (1.0 - (PI * i as f64 / n as f64).cos());
+        let mut points: Vec<(f64, f64)> = (0..=n).rev().map(|i| surface(x(i), 1.0)).collect();
+        points.extend((1..n).map(|i| surface(x(i), -1.0)));
+        let sharp = Contour::from_points(&points).unwrap();
+        sharp.with_blunt_trailing_edge(0.005, 512).unwrap()
     }
 
     #[test]

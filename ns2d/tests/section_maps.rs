@@ -241,32 +241,39 @@ fn the_grid_of_a_fitted_map() {
     }
 }
 
-/// Sections whose camber line is far from a circular arc: NACA 4706
-/// (4 % camber at 70 % of the chord, 6 % thick) and 4106 (at 10 %), whose
-/// Joukowski pre-map with the arc of their mid-chord camber crosses the
-/// contour near the trailing or leading edge, so Newton failed at its
-/// first step until 2026-12-07. The pre-map is now one whose slit lies
-/// inside the section, and the fitted boundary reproduces the contour as
-/// closely as NACA 0012's (above) with the same terms.
+/// Sections whose camber line is far from a circular arc, on which
+/// Newton failed after the first pre-map until 2026-12-07 (its slit, the
+/// arc of the mid-chord camber, leaves the section near an edge: module
+/// docs of `correspondence.rs`, whose unit tests check that the first
+/// pre-map still fails on them and a fallback's slit lies inside): NACA
+/// 4106 (4 % camber at 10 % of the chord, 6 % thick), 9712 (9 % at 70 %,
+/// 12 % thick) and 6930 (6 % at 90 %, 30 % thick), from 256 points.
+/// Fitted after a pre-map whose slit lies inside, the boundary converges
+/// with the terms (16, 64, 128: 4106 9.14e-4, 5.03e-5, 2.03e-5 chords;
+/// 9712 3.59e-4, 2.78e-5, 8.33e-6; 6930 4.12e-3, 4.29e-4, 1.18e-4,
+/// measured), and the two thinner come within 4e-5 chords of their
+/// 2048-point contours with 128 terms, as NACA 0012 does with 64 (above;
+/// 8.0e-6 with 128). The thick, aft-loaded 6930's is 1.2e-4.
 #[test]
-fn aft_and_fore_loaded_thin_sections_are_reproduced() {
-    for code in ["4706", "4106", "8712"] {
+fn aft_and_fore_loaded_sections_are_reproduced() {
+    for code in ["4106", "9712", "6930"] {
         let contour = Contour::naca4(code, 256, 0.005).unwrap();
         let reference = Contour::naca4(code, 2048, 0.005).unwrap();
         let mut previous = f64::INFINITY;
-        for terms in [16, 64, 128] {
+        for (terms, fall) in [(16, 1.0), (64, 0.3), (128, 0.5)] {
             let map = SectionMap::from_contour(&contour, terms).unwrap();
             let distance = boundary_distance(&map, &reference, 1024);
             println!("NACA {code}: {terms} terms: worst distance {distance:.2e} chords");
             assert!(
-                distance < 0.7 * previous,
+                distance < fall * previous,
                 "{code}: {terms} terms: {distance:.2e}"
             );
             previous = distance;
-            if terms == 128 {
-                assert!(distance < 4e-5, "{code}: {distance:.2e}");
-                assert_univalent(&map);
-            }
         }
+        if code != "6930" {
+            assert!(previous < 4e-5, "{code}: {previous:.2e}");
+        }
+        let map = SectionMap::from_contour(&contour, 128).unwrap();
+        assert_univalent(&map);
     }
 }

@@ -110,8 +110,9 @@
 //!   panel as core (the continuous sheet at the chord's resolution, where
 //!   the free vortices' `1.3 U dt` makes the stations ever sharper as the
 //!   step shrinks): 0.3977, 0.3570, 0.3813 with that core alone, 0.3865,
-//!   0.3516, 0.3705 with the larger of it and `1.3 U dt` (the code's own
-//!   placement: 0.3941, 0.3486, 0.3696; the code of `8f458c0`, 2026-12-07,
+//!   0.3516, 0.3705 with the larger of it and `1.3 U dt`; without either,
+//!   the same build gives 0.3941, 0.3486, 0.3696 (the code's own
+//!   placement; these and the next, the code of `8f458c0`, 2026-12-07,
 //!   with environment knobs);
 //! - a finer bound sheet: 160 chord points and 80 Fourier terms, 0.4022,
 //!   0.3561, 0.3609; 320 and 160, 0.4269, 0.3596, 0.3600, and 0.3878 at

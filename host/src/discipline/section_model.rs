@@ -214,8 +214,9 @@ pub const LDVM_SHEDDING_SCATTER: (f64, f64) = (0.0142, 0.0309);
 /// with the mean kept). The same section attached (`lesp_critical = 0`)
 /// moves by 0.23 % and 0.04 %: the deformation alone converges. On a
 /// second deformation, that of the design the default run converged on
-/// (9 Hz, ±20°, −10°, 110°: its `cycle-3/section.json`; the same way, a
-/// scratch build of `f6ffb6b`, 2026-12-07), one evaluation's figure is
+/// (9 Hz, ±20°, −10°, stroke plane 110°: its `cycle-3/section.json`; the
+/// same way, a scratch build of `f6ffb6b`, 2026-12-07, which gave the
+/// first deformation's figures above to the digit), one evaluation's figure is
 /// smaller, 5.32 % and 6.69 % (net CT 7.33 % RMS, mean −0.56 %; net
 /// efficiency 9.49 %, mean +2.31 %), so the first deformation's, the
 /// larger, is kept: the margin errs towards keeping the analysed design.
