@@ -936,43 +936,15 @@ mod tests {
     }
 
     /// The contour `fwav aero2d --model ns --section naca<code>` fits: the
-    /// NACA 4-digit section (Abbott & von Doenhoff 1959, §6.4; the closed
-    /// trailing edge's thickness coefficient −0.1036) through 401 points
-    /// by the cosine rule, its sharp trailing edge opened to 0.005 chords
-    /// and closed by an arc on 512 points
-    /// ([`Contour::with_blunt_trailing_edge`]).
+    /// NACA 4-digit section's surfaces (`contour::naca`'s, with the
+    /// closed trailing edge) through 401 points by the cosine rule, its
+    /// sharp trailing edge opened to 0.005 chords and closed by an arc on
+    /// 512 points ([`Contour::with_blunt_trailing_edge`]).
     fn sharp_naca(code: &str) -> Contour {
-        let digit = |i: usize| f64::from(code.as_bytes()[i] - b'0');
-        let (m, p, t) = (
-            digit(0) / 100.0,
-            digit(1) / 10.0,
-            (10.0 * digit(2) + digit(3)) / 100.0,
-        );
-        let half = |x: f64| {
-            5.0 * t
-                * (0.2969 * x.sqrt() - 0.126 * x - 0.3516 * x * x + 0.2843 * x.powi(3)
-                    - 0.1036 * x.powi(4))
-        };
-        let camber = |x: f64| {
-            if m == 0.0 {
-                (0.0, 0.0)
-            } else if x < p {
-                (
-                    m / (p * p) * (2.0 * p * x - x * x),
-                    2.0 * m / (p * p) * (p - x),
-                )
-            } else {
-                let q = (1.0 - p) * (1.0 - p);
-                (
-                    m / q * (1.0 - 2.0 * p + 2.0 * p * x - x * x),
-                    2.0 * m / q * (p - x),
-                )
-            }
-        };
+        let naca = crate::contour::naca::Naca4::parse(code).unwrap();
         let surface = |x: f64, side: f64| {
-            let ((yc, slope), yt) = (camber(x), half(x));
-            let theta = slope.atan();
-            (x - side * yt * theta.sin(), yc + side * yt * theta.cos())
+            let z = naca.surface(x, side);
+            (z.re, z.im)
         };
         let n = 200;
         let x = |i: usize| 0.5 * (1.0 - (PI * i as f64 / n as f64).cos());

@@ -231,18 +231,7 @@ fn a_directory_of_other_files_is_never_overwritten() {
 /// `--resume`, naming the key and both values; nothing is recorded.
 #[test]
 fn a_resume_refuses_an_edited_configuration() {
-    let dir = temp("edited");
-    let run = dir.join("run");
-    let config = SystemConfig::from_toml(COARSE).unwrap();
-    start(
-        &config,
-        &run,
-        &RunOptions {
-            stage_limit: Some(0),
-        },
-        &|_| {},
-    )
-    .unwrap();
+    let (dir, run) = a_coarse_run_not_begun("edited");
     let before = RunState::load(&run).unwrap();
     let path = run.join("config.toml");
     let original = text(&path);
@@ -273,6 +262,24 @@ fn a_resume_refuses_an_edited_configuration() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// A run of the coarse design in `temp(name)/run`, its state written and
+/// no stage begun; `(temp(name), the run)`.
+fn a_coarse_run_not_begun(name: &str) -> (PathBuf, PathBuf) {
+    let dir = temp(name);
+    let run = dir.join("run");
+    let config = SystemConfig::from_toml(COARSE).unwrap();
+    start(
+        &config,
+        &run,
+        &RunOptions {
+            stage_limit: Some(0),
+        },
+        &|_| {},
+    )
+    .unwrap();
+    (dir, run)
+}
+
 /// Makes the run in `run` one an earlier fwav started with `edit.1`
 /// where its `config.toml` has `edit.0`, a value that fwav accepted and
 /// this one may refuse: the file and the state's configuration (and its
@@ -299,18 +306,7 @@ pub(crate) fn as_started_by_an_earlier_fwav(run: &Path, edit: (&str, &str)) {
 /// reported with a warning: `design::coarse_design_converges_writes_everything_and_resumes`.)
 #[test]
 fn a_run_with_a_value_now_refused_is_not_continued() {
-    let dir = temp("refused-now");
-    let run = dir.join("run");
-    let config = SystemConfig::from_toml(COARSE).unwrap();
-    start(
-        &config,
-        &run,
-        &RunOptions {
-            stage_limit: Some(0),
-        },
-        &|_| {},
-    )
-    .unwrap();
+    let (dir, run) = a_coarse_run_not_begun("refused-now");
     as_started_by_an_earlier_fwav(&run, ("mass_fraction = 0.7\n", "mass_fraction = 0.1\n"));
     let before = RunState::load(&run).unwrap();
     let listing = |dir: &Path| {
@@ -481,18 +477,7 @@ fn both_objective_weights_zero_are_refused() {
 /// Item 10: a corrupt `state.json` is named, with what to do about it.
 #[test]
 fn a_corrupt_state_file_is_named_with_the_way_out() {
-    let dir = temp("corrupt");
-    let run = dir.join("run");
-    let config = SystemConfig::from_toml(COARSE).unwrap();
-    start(
-        &config,
-        &run,
-        &RunOptions {
-            stage_limit: Some(0),
-        },
-        &|_| {},
-    )
-    .unwrap();
+    let (dir, run) = a_coarse_run_not_begun("corrupt");
     let state = text(&run.join("state.json"));
     std::fs::write(run.join("state.json"), &state[..state.len() / 2]).unwrap();
     let ran = fwav_within(

@@ -20,7 +20,7 @@
 //! [`Contour::flat_plate`] (a thin plate of given thickness with
 //! semicircular ends round a mid-line).
 
-mod naca;
+pub(crate) mod naca;
 mod plate;
 mod trailing_edge;
 

@@ -29,14 +29,14 @@ use crate::error::NsError;
 
 /// The NACA 4-digit parameters, fractions of the chord.
 #[derive(Debug, Clone, Copy)]
-struct Naca4 {
+pub(crate) struct Naca4 {
     camber: f64,
     position: f64,
     thickness: f64,
 }
 
 impl Naca4 {
-    fn parse(code: &str) -> Result<Self, NsError> {
+    pub(crate) fn parse(code: &str) -> Result<Self, NsError> {
         let bad = || NsError::BadNaca {
             code: code.to_owned(),
         };
@@ -92,7 +92,7 @@ impl Naca4 {
     }
 
     /// The surface point at camber position `x`; `side` +1 upper, -1 lower.
-    fn surface(&self, x: f64, side: f64) -> Complex64 {
+    pub(crate) fn surface(&self, x: f64, side: f64) -> Complex64 {
         let (yc, slope) = self.camber_line(x);
         let normal = Complex64::new(-slope, 1.0) / slope.hypot(1.0);
         Complex64::new(x, yc) + normal * (side * self.half_thickness(x))
