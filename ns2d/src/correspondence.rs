@@ -462,7 +462,7 @@ impl<'a> Premap<'a> {
         };
         reaches.iter().filter_map(move |&reach| {
             let (minus, plus) = frame.critical_points(points, reach)?;
-            Self::widest_inside(spline, contour, minus, plus)
+            Self::roundest_inside(spline, contour, minus, plus)
         })
     }
 
@@ -473,7 +473,7 @@ impl<'a> Premap<'a> {
     /// and leaves the contour's pre-image roundest ([`Self::roundness`]).
     /// Cost: `O(SLIT_HEIGHTS SLIT_SAMPLES N)` for `N` contour points (a
     /// few milliseconds for 432).
-    fn widest_inside(
+    fn roundest_inside(
         spline: &'a CurveSpline,
         contour: &Contour,
         minus: Complex64,
@@ -608,10 +608,10 @@ impl PrincipalFrame {
     /// (halfway between the contour's lowest and highest crossing of the
     /// line across the axis). `None` when a point is missing or outside.
     /// Unlike [`Premap::new`]'s, the two may lie on one side of the
-    /// middle, even crossed (a blunt tip's centre of curvature lies
-    /// beyond the middle): any two points inside give a slit to test, and
-    /// NACA 0090 maps so, through a slit from its leading edge's centre of
-    /// curvature near the trailing edge to the trailing edge's.
+    /// middle, even crossed (a blunt tip's centre of curvature may lie
+    /// beyond it, as NACA 0090's leading edge's does, its radius
+    /// `1.1019 t² = 0.89` chords): any two points inside give a slit to
+    /// test.
     fn critical_points(
         &self,
         points: &[Complex64],
