@@ -101,6 +101,10 @@ use crate::contour::Contour;
 use crate::error::NsError;
 use crate::spline::CurveSpline;
 
+mod premap;
+
+use premap::{Premap, PrincipalFrame};
+
 /// A closed curve round a section, counterclockwise, by a periodic
 /// parameter `s` (the conformal fit's input; a [`Contour`]'s is its
 /// closed cubic spline by arc length).
@@ -128,16 +132,6 @@ impl ClosedCurve for CurveSpline {
 /// The most samples round the circle (doubled from the first guess while
 /// Newton fails).
 const MAX_SAMPLES: usize = 1 << 15;
-/// The fitted pre-maps' critical points: how far from the section's
-/// middle to each tip (1: the tip's centre of curvature; module docs,
-/// "Slits that leave the section").
-const REACHES: [(f64, f64); 3] = [(1.0, 1.0), (0.98, 1.0), (1.0, 0.98)];
-/// The fitted pre-maps' arc heights tried, evenly from a semicircle one
-/// way (`κ = -f`) to one the other (`κ = f`).
-const SLIT_HEIGHTS: usize = 81;
-/// Points round the pre-map's circle at which a slit is tested inside
-/// the section (the slit is covered twice: 128 distinct points along it).
-const SLIT_SAMPLES: usize = 256;
 /// The most Newton steps.
 const MAX_STEPS: usize = 60;
 /// Converged when the largest correction is below this fraction of the
@@ -282,7 +276,8 @@ fn wrap(x: f64) -> f64 {
 /// (the correction it carries is the first pre-map's last).
 pub(crate) fn solve(contour: &Contour, samples: usize) -> Result<Correspondence, NsError> {
     let spline = CurveSpline::closed(contour.points());
-    let premap = Premap::new(&spline, contour.points());
+    let frame = PrincipalFrame::of(&spline, contour.points());
+    let premap = Premap::new(&spline, contour.points(), &frame);
     let first = match solve_premapped(&premap, samples) {
         Ok(fit) => return Ok(fit),
         Err(last) => last,
@@ -290,7 +285,7 @@ pub(crate) fn solve(contour: &Contour, samples: usize) -> Result<Correspondence,
     // The slit of the pre-map above crosses the contour where the
     // section's camber line is no circular arc (module docs, "Slits
     // that leave the section"): slits kept inside it instead.
-    for fitted in Premap::inside(&spline, contour) {
+    for fitted in Premap::inside(&spline, contour, frame) {
         if let Ok(fit) = solve_premapped(&fitted, samples) {
             return Ok(fit);
         }
@@ -321,375 +316,6 @@ fn solve_premapped(premap: &Premap, samples: usize) -> Result<Correspondence, f6
             Err(_) => n *= 2,
         }
     }
-}
-
-/// The Joukowski pre-map `z = m + e^{iβ} (w + f²/w)` whose critical
-/// points `m ± 2f e^{iβ}` are ([`Premap::new`]) the centres of curvature
-/// at the contour's two tips along its principal axis, or ([`Premap::inside`])
-/// points chosen so that its slit lies inside the section: it opens a
-/// thin section into a near-circle in `w`, where Newton converges from
-/// the polar angle (module docs). A near-circle gets `f = 0` (no
-/// pre-map).
-struct Premap<'a> {
-    spline: &'a CurveSpline,
-    centre: Complex64,
-    /// `e^{-iβ}`.
-    unrotate: Complex64,
-    beta: f64,
-    f2: f64,
-    /// The pre-map's circle centre `iκ` in `w` (the arc `J` opens, of
-    /// height `2κ`: a cambered section's).
-    kappa: f64,
-}
-
-impl<'a> Premap<'a> {
-    fn new(spline: &'a CurveSpline, points: &[Complex64]) -> Self {
-        let m = points.len();
-        let frame = PrincipalFrame::of(spline, points);
-        let (centroid, axis) = (frame.centroid, frame.axis);
-        let circle = Self {
-            spline,
-            centre: centroid,
-            unrotate: Complex64::new(1.0, 0.0),
-            beta: 0.0,
-            f2: 0.0,
-            kappa: 0.0,
-        };
-        if frame.anisotropy < 0.05 {
-            return circle;
-        }
-        let (far, near) = (frame.far, frame.near);
-        let x = |i: usize| ((points[i] - centroid) * axis).re;
-        let curvature_centre =
-            |i: usize| circumcentre(points[(i + m - 1) % m], points[i], points[(i + 1) % m]);
-        let (Some(plus), Some(minus)) = (curvature_centre(far), curvature_centre(near)) else {
-            return circle;
-        };
-        let span = plus - minus;
-        // Both critical points well inside, on the tips' side of the centre.
-        let inside = ((plus - centroid) * axis).re > 0.0 && ((minus - centroid) * axis).re < 0.0;
-        if !inside || span.norm() < 0.1 * (x(far) - x(near)) {
-            return circle;
-        }
-        let beta = span.arg();
-        let (centre, unrotate) = (0.5 * (plus + minus), Complex64::from_polar(1.0, -beta));
-        let f = 0.25 * span.norm();
-        // Camber: the middle of the section's height at mid-chord.
-        let (mut top, mut bottom) = (f64::NEG_INFINITY, f64::INFINITY);
-        for p in points {
-            let q = (p - centre) * unrotate;
-            if q.re.abs() < 0.2 * f {
-                top = top.max(q.im);
-                bottom = bottom.min(q.im);
-            }
-        }
-        let kappa = if top > bottom {
-            0.25 * (top + bottom)
-        } else {
-            0.0
-        };
-        Self {
-            spline,
-            centre,
-            unrotate,
-            beta,
-            f2: f * f,
-            kappa,
-        }
-    }
-
-    /// The pre-map whose critical points are `minus` and `plus` and whose
-    /// slit (the arc they span, of height `2 kappa` over their chord) is
-    /// the image of the circle through `±f` round `iκ`.
-    fn through(spline: &'a CurveSpline, minus: Complex64, plus: Complex64, kappa: f64) -> Self {
-        let span = plus - minus;
-        let beta = span.arg();
-        let f = 0.25 * span.norm();
-        Self {
-            spline,
-            centre: 0.5 * (plus + minus),
-            unrotate: Complex64::from_polar(1.0, -beta),
-            beta,
-            f2: f * f,
-            kappa,
-        }
-    }
-
-    /// How far the pre-image of the contour is from a circle round `iκ`:
-    /// the largest over the smallest distance of its knots' pre-images
-    /// from `iκ` (1 for a circle).
-    fn roundness(&self) -> f64 {
-        let knots = self.spline.knots();
-        let centre = Complex64::new(0.0, self.kappa);
-        let (near, far) = knots[..knots.len() - 1]
-            .iter()
-            .map(|&s| (self.eval(s).0 - centre).norm())
-            .fold((f64::INFINITY, 0.0_f64), |(lo, hi), r| {
-                (lo.min(r), hi.max(r))
-            });
-        far / near
-    }
-
-    /// `samples` points along the slit, global: the images of points
-    /// evenly round the circle through `±f` (`J` covers the slit twice).
-    fn slit(&self, samples: usize) -> impl Iterator<Item = Complex64> + '_ {
-        let f = self.f2.sqrt();
-        let radius = (self.f2 + self.kappa * self.kappa).sqrt();
-        let turn = self.unrotate.conj();
-        (0..samples).map(move |j| {
-            let phi = TAU * (j as f64 + 0.5) / samples as f64;
-            let w = Complex64::new(0.0, self.kappa) + Complex64::from_polar(radius, phi);
-            let z = if f == 0.0 { w } else { w + self.f2 / w };
-            self.centre + z * turn
-        })
-    }
-
-    /// Pre-maps whose slits lie inside `contour`, for a section whose
-    /// camber line is too far from a circular arc for [`Self::new`]'s
-    /// (module docs, "Slits that leave the section"): critical points at
-    /// the [`REACHES`] (the tips' centres of curvature, or the mid-line's
-    /// points 98 % of the way from the middle to one tip), each with the
-    /// arc height whose slit lies inside and leaves the pre-image
-    /// roundest, when one lies inside.
-    fn inside(spline: &'a CurveSpline, contour: &'a Contour) -> impl Iterator<Item = Self> + 'a {
-        let points = contour.points();
-        let frame = PrincipalFrame::of(spline, points);
-        // A near-circle has no pre-map to fall back from.
-        let reaches = if frame.anisotropy < 0.05 {
-            &REACHES[..0]
-        } else {
-            &REACHES[..]
-        };
-        reaches.iter().filter_map(move |&reach| {
-            let (minus, plus) = frame.critical_points(points, reach)?;
-            Self::roundest_inside(spline, contour, minus, plus)
-        })
-    }
-
-    /// Of the [`SLIT_HEIGHTS`] slits through `minus` and `plus`, from a
-    /// semicircle one way to one the other, that which lies inside
-    /// `contour` (each of its [`SLIT_SAMPLES`] points enclosed, and no
-    /// segment between consecutive ones crossing an edge of the contour)
-    /// and leaves the contour's pre-image roundest ([`Self::roundness`]).
-    /// Cost: `O(SLIT_HEIGHTS SLIT_SAMPLES N)` for `N` contour points (a
-    /// few milliseconds for 432).
-    fn roundest_inside(
-        spline: &'a CurveSpline,
-        contour: &Contour,
-        minus: Complex64,
-        plus: Complex64,
-    ) -> Option<Self> {
-        let f = 0.25 * (plus - minus).norm();
-        if f == 0.0 {
-            return None;
-        }
-        let points = contour.points();
-        (0..SLIT_HEIGHTS)
-            .filter_map(|i| {
-                let kappa = f * (2.0 * i as f64 / (SLIT_HEIGHTS - 1) as f64 - 1.0);
-                let premap = Self::through(spline, minus, plus, kappa);
-                let slit: Vec<Complex64> = premap.slit(SLIT_SAMPLES).collect();
-                if !slit.iter().all(|&z| encloses(points, z)) || crosses(&slit, points) {
-                    return None;
-                }
-                Some((-premap.roundness(), premap))
-            })
-            .max_by(|a, b| a.0.total_cmp(&b.0))
-            .map(|(_, premap)| premap)
-    }
-
-    /// The start `S(t)`: the arc length where the polar angle of `w` is
-    /// `t - β` (made increasing: a running maximum blended with 2 % of
-    /// the arc length), so that `a` comes out real.
-    fn start(&self, n: usize) -> Vec<f64> {
-        let knots = self.spline.knots();
-        let m = knots.len() - 1;
-        let length = knots[m];
-        let ik = Complex64::new(0.0, self.kappa);
-        let w0 = self.eval(0.0).0 - ik;
-        let mut phi = Vec::with_capacity(m + 1);
-        let (mut previous, mut unwrapped, mut running) = (w0.arg(), 0.0_f64, 0.0_f64);
-        for &s in &knots[..m] {
-            let a = (self.eval(s).0 - ik).arg();
-            unwrapped += wrap(a - previous);
-            previous = a;
-            running = running.max(unwrapped);
-            phi.push(0.98 * running + 0.02 * TAU * s / length);
-        }
-        phi.push(TAU);
-        let offset = w0.arg();
-        (0..n)
-            .map(|j| {
-                let target = TAU * j as f64 / n as f64 - self.beta - offset;
-                let turns = (target / TAU).floor();
-                let f = target - turns * TAU;
-                let k = phi.partition_point(|&p| p <= f).clamp(1, m) - 1;
-                let w = ((f - phi[k]) / (phi[k + 1] - phi[k])).clamp(0.0, 1.0);
-                knots[k] + w * (knots[k + 1] - knots[k]) + turns * length
-            })
-            .collect()
-    }
-}
-
-impl ClosedCurve for Premap<'_> {
-    fn period(&self) -> f64 {
-        self.spline.length()
-    }
-    fn boundary(&self, s: f64) -> Complex64 {
-        self.spline.eval(s).0
-    }
-    fn eval(&self, s: f64) -> (Complex64, Complex64) {
-        let (z, dz) = self.spline.eval(s);
-        let (z, dz) = ((z - self.centre) * self.unrotate, dz * self.unrotate);
-        if self.f2 == 0.0 {
-            return (z, dz);
-        }
-        let root = (z * z - 4.0 * self.f2).sqrt();
-        let (w1, w2) = (0.5 * (z + root), 0.5 * (z - root));
-        let ik = Complex64::new(0.0, self.kappa);
-        // The root outside the circle through ±f round iκ (J maps its
-        // outside one-to-one onto the plane less the arc).
-        let outside = (w1 - ik).norm_sqr() >= self.f2 + self.kappa * self.kappa;
-        let w = if outside { w1 } else { w2 };
-        (w, dz / (1.0 - self.f2 / (w * w)))
-    }
-}
-
-/// A section's principal axes through its centroid, and the contour's
-/// points at either end along the major one (the frame of [`Premap::new`]
-/// and of the fallback pre-maps' critical points).
-struct PrincipalFrame {
-    centroid: Complex64,
-    /// Multiplies a point's offset from the centroid into the frame.
-    axis: Complex64,
-    /// How far from round: `|I_xx - I_yy, 2 I_xy| / (I_xx + I_yy)` of
-    /// the points' second moments (0 for a circle); below 0.05 the
-    /// section is taken as a near-circle, with no pre-map.
-    anisotropy: f64,
-    /// The points farthest along the axis either way (indices).
-    near: usize,
-    far: usize,
-}
-
-impl PrincipalFrame {
-    /// The frame of `points` (weighted by the arc length each point
-    /// stands for).
-    fn of(spline: &CurveSpline, points: &[Complex64]) -> Self {
-        let knots = spline.knots();
-        let m = points.len();
-        let length = knots[m];
-        let weight = |i: usize| 0.5 * (knots[i + 1] - knots[(i + m - 1) % m]).rem_euclid(length);
-        let centroid = (0..m).map(|i| points[i] * weight(i)).sum::<Complex64>() / length;
-        let (mut ixx, mut iyy, mut ixy) = (0.0, 0.0, 0.0);
-        for (i, p) in points.iter().enumerate() {
-            let d = p - centroid;
-            ixx += weight(i) * d.re * d.re;
-            iyy += weight(i) * d.im * d.im;
-            ixy += weight(i) * d.re * d.im;
-        }
-        let anisotropy = (ixx - iyy).hypot(2.0 * ixy) / (ixx + iyy);
-        let axis = Complex64::from_polar(1.0, -0.5 * (2.0 * ixy).atan2(ixx - iyy));
-        let x: Vec<f64> = points.iter().map(|p| ((p - centroid) * axis).re).collect();
-        let pick = |better: fn(f64, f64) -> bool| {
-            (0..m).fold(0, |b, i| if better(x[i], x[b]) { i } else { b })
-        };
-        Self {
-            centroid,
-            axis,
-            anisotropy,
-            far: pick(|a, b| a > b),
-            near: pick(|a, b| a < b),
-        }
-    }
-
-    /// The critical points `reach` (towards the near tip, towards the far
-    /// one) of the way from the section's middle to its tips: at 1 the
-    /// tips' centres of curvature, else the mid-line's points there
-    /// (halfway between the contour's lowest and highest crossing of the
-    /// line across the axis). `None` when a point is missing or outside.
-    /// Unlike [`Premap::new`]'s, the two may lie on one side of the
-    /// middle, even crossed (a blunt tip's centre of curvature may lie
-    /// beyond it, as NACA 0090's leading edge's does, its radius
-    /// `1.1019 t² = 0.89` chords): any two points inside give a slit to
-    /// test.
-    fn critical_points(
-        &self,
-        points: &[Complex64],
-        reach: (f64, f64),
-    ) -> Option<(Complex64, Complex64)> {
-        let m = points.len();
-        let curvature_centre =
-            |i: usize| circumcentre(points[(i + m - 1) % m], points[i], points[(i + 1) % m]);
-        let frame = |p: Complex64| (p - self.centroid) * self.axis;
-        let (x_near, x_far) = (frame(points[self.near]).re, frame(points[self.far]).re);
-        let middle = 0.5 * (x_near + x_far);
-        let at = |tip: usize, x_tip: f64, reach: f64| -> Option<Complex64> {
-            if reach >= 1.0 {
-                return curvature_centre(tip);
-            }
-            let x = middle + reach * (x_tip - middle);
-            let (mut low, mut high) = (f64::INFINITY, f64::NEG_INFINITY);
-            for i in 0..m {
-                let (p, q) = (frame(points[i]), frame(points[(i + 1) % m]));
-                if (p.re - x) * (q.re - x) <= 0.0 && p.re != q.re {
-                    let y = p.im + (q.im - p.im) * (x - p.re) / (q.re - p.re);
-                    low = low.min(y);
-                    high = high.max(y);
-                }
-            }
-            (low < high).then(|| self.centroid + Complex64::new(x, 0.5 * (low + high)) / self.axis)
-        };
-        let (minus, plus) = (
-            at(self.near, x_near, reach.0)?,
-            at(self.far, x_far, reach.1)?,
-        );
-        (encloses(points, minus) && encloses(points, plus)).then_some((minus, plus))
-    }
-}
-
-/// Whether the polygon `points` encloses `z` (its winding number round
-/// `z` is not zero; crossings of the ray to the right counted with their
-/// direction).
-fn encloses(points: &[Complex64], z: Complex64) -> bool {
-    let m = points.len();
-    let mut winding = 0_i32;
-    for i in 0..m {
-        let (p, q) = (points[i], points[(i + 1) % m]);
-        let side = (q.re - p.re) * (z.im - p.im) - (z.re - p.re) * (q.im - p.im);
-        if p.im <= z.im && q.im > z.im && side > 0.0 {
-            winding += 1;
-        } else if p.im > z.im && q.im <= z.im && side < 0.0 {
-            winding -= 1;
-        }
-    }
-    winding != 0
-}
-
-/// Whether the polyline `path` (open) crosses an edge of the closed
-/// polygon `points`.
-fn crosses(path: &[Complex64], points: &[Complex64]) -> bool {
-    let m = points.len();
-    let side = |p: Complex64, q: Complex64, r: Complex64| {
-        (q.re - p.re) * (r.im - p.im) - (r.re - p.re) * (q.im - p.im)
-    };
-    path.windows(2).any(|w| {
-        (0..m).any(|i| {
-            let (p, q) = (points[i], points[(i + 1) % m]);
-            side(w[0], w[1], p) * side(w[0], w[1], q) < 0.0
-                && side(p, q, w[0]) * side(p, q, w[1]) < 0.0
-        })
-    })
-}
-
-/// The centre of the circle through three points (`None` when collinear).
-fn circumcentre(a: Complex64, b: Complex64, c: Complex64) -> Option<Complex64> {
-    let (ab, ac) = (b - a, c - a);
-    let d = 2.0 * (ab.re * ac.im - ab.im * ac.re);
-    if d == 0.0 {
-        return None;
-    }
-    let (nb, nc) = (ab.norm_sqr(), ac.norm_sqr());
-    Some(a + Complex64::new(ac.im * nb - ab.im * nc, ab.re * nc - ac.re * nb) / d)
 }
 
 /// Newton from `start` (module docs); `Err` carries the last correction
@@ -837,6 +463,7 @@ impl NewtonStep {
 
 #[cfg(test)]
 mod tests {
+    use super::premap::SLIT_SAMPLES;
     use super::*;
 
     /// `K cos kt = -sin kt` outside the disk (`ζ^{-k} = cos kt - i sin kt`).
@@ -866,18 +493,19 @@ mod tests {
             let contour = sharp_naca(code);
             let points = contour.points();
             let spline = CurveSpline::closed(points);
-            let first = Premap::new(&spline, points);
+            let frame = PrincipalFrame::of(&spline, points);
+            let first = Premap::new(&spline, points, &frame);
             let slit: Vec<Complex64> = first.slit(SLIT_SAMPLES).collect();
-            let leaves = crosses(&slit, points) || !slit.iter().all(|&z| encloses(points, z));
+            let leaves = contour.crossed_by(&slit) || !slit.iter().all(|&z| contour.encloses(z));
             assert!(leaves, "NACA {code}: the first pre-map's slit stays inside");
             assert!(
                 solve_premapped(&first, 1024).is_err(),
                 "NACA {code}: the first fits"
             );
-            let fitted = Premap::inside(&spline, &contour).next();
+            let fitted = Premap::inside(&spline, &contour, frame).next();
             let fitted = fitted.unwrap_or_else(|| panic!("NACA {code}: no slit inside"));
             let slit: Vec<Complex64> = fitted.slit(SLIT_SAMPLES).collect();
-            assert!(!crosses(&slit, points) && slit.iter().all(|&z| encloses(points, z)));
+            assert!(!contour.crossed_by(&slit) && slit.iter().all(|&z| contour.encloses(z)));
             assert!(solve(&contour, 1024).is_ok(), "NACA {code}: not fitted");
         }
         let fit = solve(&sharp_naca("9906"), 1024);
@@ -886,53 +514,6 @@ mod tests {
             "NACA 9906: {:?}",
             fit.map(|_| ())
         );
-    }
-
-    /// [`Premap::through`] the critical points of [`Premap::new`], with
-    /// its `κ`, is that pre-map; its slit spans the critical points and
-    /// rises `2κ` above their chord (`J(i(κ + r)) = 2iκ`, `r² = f² + κ²`).
-    #[test]
-    fn a_pre_map_through_its_critical_points() {
-        let contour = Contour::naca4("2412", 256, 0.005).unwrap();
-        let spline = CurveSpline::closed(contour.points());
-        let first = Premap::new(&spline, contour.points());
-        let half_span = 2.0 * first.f2.sqrt() * first.unrotate.conj();
-        let (minus, plus) = (first.centre - half_span, first.centre + half_span);
-        let again = Premap::through(&spline, minus, plus, first.kappa);
-        assert!((again.centre - first.centre).norm() < 1e-14);
-        assert!((again.beta - first.beta).abs() < 1e-14);
-        assert!((again.f2 - first.f2).abs() < 1e-14 * first.f2);
-        let slit = Premap::through(
-            &spline,
-            Complex64::new(-2.0, 0.0),
-            Complex64::new(2.0, 0.0),
-            0.3,
-        );
-        let points: Vec<Complex64> = slit.slit(4096).collect();
-        let widest = points.iter().fold(0.0_f64, |m, z| m.max(z.re.abs()));
-        let highest = points.iter().fold(f64::NEG_INFINITY, |m, z| m.max(z.im));
-        let lowest = points.iter().fold(f64::INFINITY, |m, z| m.min(z.im));
-        assert!((widest - 2.0).abs() < 1e-5, "{widest}");
-        assert!((highest - 0.6).abs() < 1e-5, "{highest}");
-        assert!(lowest > -1e-12, "{lowest}");
-    }
-
-    /// A unit square encloses its middle, not a point beside it; a path
-    /// across one side crosses it, one inside does not.
-    #[test]
-    fn inside_a_square() {
-        let square = [
-            Complex64::new(0.0, 0.0),
-            Complex64::new(1.0, 0.0),
-            Complex64::new(1.0, 1.0),
-            Complex64::new(0.0, 1.0),
-        ];
-        assert!(encloses(&square, Complex64::new(0.5, 0.5)));
-        assert!(!encloses(&square, Complex64::new(1.5, 0.5)));
-        let across = [Complex64::new(0.5, 0.5), Complex64::new(1.5, 0.5)];
-        let within = [Complex64::new(0.2, 0.5), Complex64::new(0.8, 0.5)];
-        assert!(crosses(&across, &square));
-        assert!(!crosses(&within, &square));
     }
 
     /// The contour `fwav aero2d --model ns --section naca<code>` fits: the

@@ -132,6 +132,41 @@ impl Contour {
         signed_area(&self.points)
     }
 
+    /// Whether the polygon encloses `z`: its winding number round `z`
+    /// (crossings of the ray to the right of `z`, counted with their
+    /// direction) is not zero. `O(n)`.
+    #[must_use]
+    pub(crate) fn encloses(&self, z: Complex64) -> bool {
+        let n = self.points.len();
+        let mut winding = 0_i32;
+        for i in 0..n {
+            let (p, q) = (self.points[i], self.points[(i + 1) % n]);
+            let side = cross(p, q, z);
+            if p.im <= z.im && q.im > z.im && side > 0.0 {
+                winding += 1;
+            } else if p.im > z.im && q.im <= z.im && side < 0.0 {
+                winding -= 1;
+            }
+        }
+        winding != 0
+    }
+
+    /// Whether the open polyline `path` crosses one of the polygon's
+    /// segments (each of the two strictly on either side of the other's
+    /// line; a touch is no crossing, unlike [`meeting`]'s).
+    /// `O(n × path.len())`.
+    #[must_use]
+    pub(crate) fn crossed_by(&self, path: &[Complex64]) -> bool {
+        let n = self.points.len();
+        path.windows(2).any(|w| {
+            (0..n).any(|i| {
+                let (p, q) = (self.points[i], self.points[(i + 1) % n]);
+                cross(w[0], w[1], p) * cross(w[0], w[1], q) < 0.0
+                    && cross(p, q, w[0]) * cross(p, q, w[1]) < 0.0
+            })
+        })
+    }
+
     /// The distance from `z` to the polygon (its nearest segment), `O(n)`.
     #[must_use]
     pub fn distance_to(&self, z: Complex64) -> f64 {

@@ -158,3 +158,27 @@ fn distance_to_the_polygon() {
     assert!((c.distance_to(Complex64::new(0.5, 0.2)) - 0.2).abs() < 1e-15);
     assert!((c.distance_to(Complex64::new(2.0, 2.0)) - 2f64.sqrt()).abs() < 1e-15);
 }
+
+/// A unit square encloses its middle, not a point beside it; a path
+/// across one side crosses it, one inside does not.
+#[test]
+fn inside_a_square() {
+    // A contour takes at least 8 points: the corners and the sides' middles.
+    let points = [
+        (0.0, 0.0),
+        (0.5, 0.0),
+        (1.0, 0.0),
+        (1.0, 0.5),
+        (1.0, 1.0),
+        (0.5, 1.0),
+        (0.0, 1.0),
+        (0.0, 0.5),
+    ];
+    let square = Contour::from_points(&points).unwrap();
+    assert!(square.encloses(Complex64::new(0.5, 0.5)));
+    assert!(!square.encloses(Complex64::new(1.5, 0.5)));
+    let across = [Complex64::new(0.5, 0.3), Complex64::new(1.5, 0.3)];
+    let within = [Complex64::new(0.2, 0.3), Complex64::new(0.8, 0.3)];
+    assert!(square.crossed_by(&across));
+    assert!(!square.crossed_by(&within));
+}
