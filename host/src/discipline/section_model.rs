@@ -203,24 +203,25 @@ pub const LDVM_SHEDDING_SCATTER: (f64, f64) = (0.0142, 0.0309);
 ///
 /// Measured (2026-12-07) by a scratch build of `eec04b1` (whose LDVM
 /// computes as `39b2d07`'s) with the step divided by an environment knob,
-/// not committed, with `fwav kinematics --section` on the deformation the default design's first system
-/// analysis found (`fwav design`'s `cycle-1/section.json`), the 18 L18
-/// rows at the discipline's step and its half: net CT changed by 18.2 %
-/// RMS (mean −14.6 %, largest 35 %), net efficiency by 19.0 % (mean
-/// −12.8 %, largest 37 %), the gross thrust by up to 22 % (11 Hz, ±40°,
-/// 0°, 70°: 0.0673 and 0.0524, in the phases where the vortices shed at
-/// positive `A0` cross the plate). The changes' standard deviation over
-/// √2 is one evaluation's, **7.81 %** and **10.18 %** (12.8 % and 13.4 %
-/// with the mean kept). The same section attached (`lesp_critical = 0`)
-/// moves by 0.23 % and 0.04 %: the deformation alone converges. On a
-/// second deformation, that of the design the default run converged on
-/// (9 Hz, ±20°, −10°, stroke plane 110°: its `cycle-3/section.json`; the
-/// same way, a scratch build of `f6ffb6b`, 2026-12-07, which gave the
-/// first deformation's figures above to the digit), one evaluation's figure is
-/// smaller, 5.32 % and 6.69 % (net CT 7.33 % RMS, mean −0.56 %; net
-/// efficiency 9.49 %, mean +2.31 %), so the first deformation's, the
-/// larger, is kept: the margin errs towards keeping the analysed design.
-/// Measured at LESP 0.11, the figure is assumed for any critical LESP.
+/// not committed, with `fwav kinematics --section` on the deformation
+/// the default design's first system analysis found (`fwav design`'s
+/// `cycle-1/section.json`), the 18 L18 rows at the discipline's step and
+/// its half: net CT changed by 18.2 % RMS (mean −14.6 %, largest 35 %),
+/// net efficiency by 19.0 % (mean −12.8 %, largest 37 %), the gross
+/// thrust by up to 22 % (11 Hz, ±40°, 0°, 70°: 0.0673 and 0.0524, in the
+/// phases where the vortices shed at positive `A0` cross the plate). The
+/// changes' standard deviation over √2 is one evaluation's, **7.81 %**
+/// and **10.18 %** (12.8 % and 13.4 % with the mean kept). The same
+/// section attached (`lesp_critical = 0`) moves by 0.23 % and 0.04 %: the
+/// deformation alone converges. On a second deformation, that of the
+/// design the default run converged on (9 Hz, ±20°, −10°, stroke plane
+/// 110°: its `cycle-3/section.json`; the same way, a scratch build of
+/// `f6ffb6b`, 2026-12-07, which gave the first deformation's figures
+/// above to the digit), one evaluation's figure is smaller, 5.32 % and
+/// 6.69 % (net CT 7.33 % RMS, mean −0.56 %; net efficiency 9.49 %, mean
+/// +2.31 %), so the first deformation's, the larger, is kept: the margin
+/// errs towards keeping the analysed design. Measured at LESP 0.11, the
+/// figure is assumed for any critical LESP.
 pub const LDVM_SHEDDING_DEFORMING_SCATTER: (f64, f64) = (0.0781, 0.1018);
 
 /// The relative standard deviation of one Navier–Stokes evaluation's net
