@@ -97,17 +97,19 @@ pub enum NsError {
          less extreme section",
         if correction.is_finite() {
             format!(
-                "in {iterations} Newton steps, the last boundary correction {correction:.3e} of \
-                 the perimeter"
+                "in up to {iterations} Newton steps a try, the closest ended with a boundary \
+                 correction {correction:.3e} of the perimeter"
             )
         } else {
-            "its first Newton step failed".to_string()
+            "every try's first Newton step failed".to_string()
         }
     )]
     MapNotConverged {
-        /// Newton steps taken.
+        /// The most Newton steps a try takes.
         iterations: usize,
-        /// The last correction of the boundary correspondence, over the perimeter.
+        /// The smallest of the tries' last corrections of the boundary
+        /// correspondence, over the perimeter (each pre-map's, and the
+        /// zipper's start's: `correspondence.rs`).
         correction: f64,
         /// The contour's points.
         points: usize,
