@@ -231,8 +231,11 @@ pub fn run_command(a: &DesignArgs) -> Result<()> {
     let options = RunOptions::default();
     let (claimed, what) = match &a.resume {
         Some(dir) => {
+            // Compared with the run's own configuration, not checked: an
+            // earlier fwav may have started the run with a value this one
+            // refuses (RunDir::for_resume).
             let config = match &a.config {
-                Some(path) => Some(super::system::read_config(Some(path))?),
+                Some(path) => Some(super::system::read_config_unchecked(path)?),
                 None => None,
             };
             let what = format!("resuming the design run in {}", dir.display());

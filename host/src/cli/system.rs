@@ -52,6 +52,15 @@ pub fn read_config(path: Option<&Path>) -> Result<SystemConfig> {
     SystemConfig::from_toml(&text).with_context(|| format!("{}", path.display()))
 }
 
+/// The configuration file at `path`, its keys and types checked, its
+/// values not ([`SystemConfig::parse_unchecked`]): the one `fwav design
+/// --resume DIR --config FILE` compares with the run's own.
+pub fn read_config_unchecked(path: &Path) -> Result<SystemConfig> {
+    let text =
+        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+    SystemConfig::parse_unchecked(&text).with_context(|| format!("{}", path.display()))
+}
+
 /// Runs the command.
 pub fn run_command(a: &SystemArgs) -> Result<()> {
     let mut config = read_config(a.config.as_deref())?;

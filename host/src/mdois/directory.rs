@@ -131,11 +131,13 @@ impl RunDir {
     }
 
     /// Claims the run in `dir` to resume it; with `config`, that must be
-    /// the run's configuration.
+    /// the run's configuration. `config`'s values are not checked here:
+    /// equal to the run's, they are the run's, which an earlier fwav may
+    /// have accepted with a value this one refuses (the run then goes as
+    /// without `config`: [`DesignError::RefusedNow`], or a finished run
+    /// reported with the refusal); unequal, the first difference is the
+    /// error ([`DesignError::ConfigMismatch`]).
     pub fn for_resume(dir: &Path, config: Option<&SystemConfig>) -> Result<Self, DesignError> {
-        if let Some(c) = config {
-            c.check()?;
-        }
         match contents(dir) {
             Ok(Contents::Run) => Self::claim(dir, Plan::Continue(config.cloned()), false),
             Ok(_) | Err(DesignError::NotADirectory { .. }) => Err(DesignError::NoRun {

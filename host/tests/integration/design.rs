@@ -134,8 +134,8 @@ fn run_of(state: &RunState, cycle: usize, stage: Stage) -> Option<usize> {
 /// Had an earlier fwav run the finished coarse run in `dir` with a value
 /// this one refuses (a carbon mass fraction of 0.1, below today's floor
 /// of 0.2), a resume still reports it as computed (`done`'s summary),
-/// computing nothing, with the refusal beside it; the run's files are put
-/// back after.
+/// computing nothing, with the refusal beside it (and `fwav design
+/// --resume` prints it as a warning); the run's files are put back after.
 fn a_finished_run_now_refused_is_reported(dir: &Path, done: &DesignRun) {
     let kept: Vec<(&str, Vec<u8>)> = ["config.toml", "state.json"]
         .into_iter()
@@ -154,6 +154,26 @@ fn a_finished_run_now_refused_is_reported(dir: &Path, done: &DesignRun) {
         "{refusal}"
     );
     assert_eq!(earlier.summary, done.summary);
+    // The command says so on its warning line, and reports the run.
+    let out = fwav(&["design", "--quiet", "--resume", dir.to_str().unwrap()]);
+    let (stdout, stderr) = (
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr),
+    );
+    assert!(out.status.success(), "{stderr}");
+    for part in [
+        "warning: ",
+        dir.to_str().unwrap(),
+        "was run with a configuration this fwav refuses (topology.mass_fraction = 0.1 is \
+         outside [0.2, 1])",
+        "reported as they were computed",
+    ] {
+        assert!(stderr.contains(part), "{part}: {stderr}");
+    }
+    assert!(
+        stdout.contains("the run had already finished: nothing computed"),
+        "{stdout}"
+    );
     for (file, bytes) in kept {
         std::fs::write(dir.join(file), bytes).unwrap();
     }

@@ -302,7 +302,8 @@ pub(crate) fn as_started_by_an_earlier_fwav(run: &Path, edit: (&str, &str)) {
 /// mass fraction of 0.1, which the range's floor of 0.2 now refuses
 /// because the nonlinear analysis fails there) is not continued: the
 /// resume names the directory, the key, its value and the range, keeps
-/// the state as it was, and says how to go on. (A finished one is
+/// the state as it was, and says how to go on, with or without the
+/// run's configuration given again by --config. (A finished one is
 /// reported with a warning: `design::coarse_design_converges_writes_everything_and_resumes`.)
 #[test]
 fn a_run_with_a_value_now_refused_is_not_continued() {
@@ -318,23 +319,38 @@ fn a_run_with_a_value_now_refused_is_not_continued() {
         names
     };
     let (files, config_text) = (listing(&run), text(&run.join("config.toml")));
-    let ran = fwav_within(
-        &["design", "--quiet", "--resume", run.to_str().unwrap()],
-        REFUSAL,
-    );
-    let stderr = ran.refused("a resume of a run with a value now refused");
-    println!("{stderr}");
-    for part in [
-        run.to_str().unwrap(),
-        "topology.mass_fraction = 0.1 is outside [0.2, 1]",
-        "this fwav refuses",
-        "start a new run",
+    // The same with the run's configuration given again (--config, a
+    // copy of it): compared with the run's, not refused for its range
+    // before the resume can say what to do.
+    let copy = dir.join("copy.toml");
+    std::fs::write(&copy, &config_text).unwrap();
+    let r = run.to_str().unwrap();
+    for args in [
+        vec!["design", "--quiet", "--resume", r],
+        vec![
+            "design",
+            "--quiet",
+            "--resume",
+            r,
+            "--config",
+            copy.to_str().unwrap(),
+        ],
     ] {
-        assert!(stderr.contains(part), "{part}: {stderr}");
+        let ran = fwav_within(&args, REFUSAL);
+        let stderr = ran.refused("a resume of a run with a value now refused");
+        println!("{stderr}");
+        for part in [
+            r,
+            "topology.mass_fraction = 0.1 is outside [0.2, 1]",
+            "this fwav refuses",
+            "start a new run",
+        ] {
+            assert!(stderr.contains(part), "{args:?}: {part}: {stderr}");
+        }
+        assert_eq!(RunState::load(&run).unwrap(), before, "the state changed");
+        assert_eq!(listing(&run), files, "the directory's files changed");
+        assert_eq!(text(&run.join("config.toml")), config_text);
     }
-    assert_eq!(RunState::load(&run).unwrap(), before, "the state changed");
-    assert_eq!(listing(&run), files, "the directory's files changed");
-    assert_eq!(text(&run.join("config.toml")), config_text);
     std::fs::remove_dir_all(&dir).ok();
 }
 
