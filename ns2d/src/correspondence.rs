@@ -74,8 +74,8 @@
 //! `tests/section_maps.rs` that the boundaries of 4106, 9712 and 6930
 //! (from `Contour::naca4`'s 256 points, where the first pre-map fails
 //! too) converge with the terms, to 2.0e-5, 8.3e-6 and 1.2e-4 chords with
-//! 128. 9112's leading edge, which turns fastest, is about 1e-3 chords
-//! off with 128 terms.
+//! 128. 9112 is about 1e-3 chords off with 128 terms: its lower surface
+//! has a corner (below, "Sections no slit fits").
 //!
 //! ## Sections no slit fits
 //! The other 25 (NACA 2906, 4906, 4912, 6106, 6130, 6906, 6912, 6920,
@@ -93,11 +93,19 @@
 //! command builds them (the whole fit 0.05 to 0.9 s each, on 4,096 to
 //! 32,768 samples), and `tests/section_maps.rs` shows 2906, 9906, 6106
 //! and 0099 converging with the terms, to 1.1e-5 to 4.3e-5 chords with
-//! 128. Five fore-loaded thick ones (6130, 8120, 8130, 9120, 9130) fold:
-//! the NACA thickness turns their lower surface back where the camber
-//! line's curvature jumps, and their maps miss the fold by 1.4e-3 to
-//! 5.9e-3 chords with 128 terms; 8130's and 9130's are not one-to-one
-//! with 128 ([`NsError::MapNotUnivalent`]). `fwav aero2d --model ns`
+//! 128.
+//!
+//! The NACA 4-digit lower surface has a corner at the camber's position
+//! `x = p`: the thickness is laid off normal to a camber line whose
+//! curvature jumps there (from `−2m/p²` to `−2m/(1−p)²`), and the
+//! surface's tangent turns at once by an angle that grows with the
+//! camber and thickness and as `p` falls: 1.1° on 4106, 24° on 8112, 37°
+//! on 9112, 61° on 6120, and past 90° on 6130, 8120, 8130, 9120 and 9130
+//! (111° to 136°: the surface folds back on itself). A corner has no
+//! smooth map, and the series converges slowly there: 9112 is 1.0e-3
+//! chords off with 128 terms and 5.6e-4 with 256, and the five folded
+//! miss the fold by 1.4e-3 to 5.9e-3 chords with 128; 8130's and 9130's
+//! maps are not one-to-one even with 256 ([`NsError::MapNotUnivalent`]). `fwav aero2d --model ns`
 //! keeps NACA 0099's trailing-edge corner (it turns by 82°, under the
 //! 90° at which the command rounds one), and there Newton stops 1.7e-5
 //! of the perimeter short. Nor does Newton converge, from the polar

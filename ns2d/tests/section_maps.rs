@@ -311,9 +311,10 @@ fn converges_with_terms(code: &str) -> f64 {
 ///
 /// Five sections camber at 10 % of the chord and 20 or 30 % thick (6130,
 /// 8120, 8130, 9120, 9130) fold: the NACA thickness, laid off normal to a
-/// camber line whose radius of curvature (`p²/2m`, 0.0625 chords for
-/// 8 % at 10 %) is less than the half-thickness there (0.078 and 0.117
-/// chords), turns the lower surface back on itself at `x = p` (its `x`
+/// camber line whose curvature jumps at `x = p` (from `−2m/p²`, a radius
+/// of 0.0625 chords for 8 % at 10 %, to `−2m/(1−p)²`), turns the lower
+/// surface there by 111° to 136°, back on itself where the
+/// half-thickness (0.078 and 0.117 chords) exceeds that radius (its `x`
 /// decreasing over 66 to 134 of 4,000 cosine-spaced steps). Fitted all
 /// the same, their truncated maps miss the fold: 1.4e-3 to 5.9e-3 chords
 /// with 128 terms, and 8130's and 9130's are not one-to-one with 128
