@@ -86,14 +86,20 @@
 //! For them Newton runs on the contour itself, without pre-map, from the
 //! correspondence of the geodesic zipper (Marshall & Rohde 2007, *SIAM J.
 //! Numer. Anal.* 45: a composition of one elementary map per contour
-//! point, `zipper.rs`, second order in the points' spacing), whose
+//! point, `zipper.rs`, its angles' error falling as the points' spacing
+//! squared), whose
 //! crowding sets the samples as the pre-map's start does. On the raw
 //! contour the arc-length start had failed even for plates of 1–8 %
-//! thickness; from the zipper's, Newton converges on all 25 as the
-//! command builds them (the whole fit 0.05 to 0.9 s each, on 4,096 to
-//! 32,768 samples), and `tests/section_maps.rs` shows 2906, 9906, 6106
-//! and 0099 converging with the terms, to 1.1e-5 to 4.3e-5 chords with
-//! 128.
+//! thickness; from the zipper's, Newton converges on all 25 with their
+//! trailing edges opened as the command opens a sharp one (the unit
+//! tests' `sharp_naca`; the whole fit 0.05 to 0.9 s each, on 4,096 to
+//! 32,768 samples), and `tests/section_maps.rs` shows 6106, 8912 and
+//! 9912 (from 256 points, where no pre-map fits them either) converging
+//! with the terms, to 3.8e-5 to 6.1e-5 chords with 128. (`fwav aero2d
+//! --model ns` keeps NACA 0099's trailing-edge corner, which turns by
+//! 82°, under the 90° at which the command rounds one; on the corner
+//! Newton's corrections stall at 1.7e-5 of the perimeter,
+//! above its tolerance, and the fit fails.)
 //!
 //! The NACA 4-digit lower surface has a corner at the camber's position
 //! `x = p`: the thickness is laid off normal to a camber line whose
@@ -105,15 +111,13 @@
 //! smooth map, and the series converges slowly there: 9112 is 1.0e-3
 //! chords off with 128 terms and 5.6e-4 with 256, and the five folded
 //! miss the fold by 1.4e-3 to 5.9e-3 chords with 128; 8130's and 9130's
-//! maps are not one-to-one even with 256 ([`NsError::MapNotUnivalent`]). `fwav aero2d --model ns`
-//! keeps NACA 0099's trailing-edge corner (it turns by 82°, under the
-//! 90° at which the command rounds one), and there Newton stops 1.7e-5
-//! of the perimeter short. Nor does Newton converge, from the polar
-//! angle or the zipper's start, on a six-lobed star `r = 1 + cos(6θ)/2` (its corrections stall at 1e-2 of
-//! the perimeter): [`NsError::MapNotConverged`], carrying the closest
-//! any try came. Sections a pre-map fits are fitted as before, to the
-//! bit.
-
+//! maps are not one-to-one even with 256 ([`NsError::MapNotUnivalent`]).
+//! Nor does Newton converge, from the polar angle's start or the
+//! zipper's, on a six-lobed star `r = 1 + cos(6θ)/2` (its corrections
+//! stall at 1e-2 of the perimeter): [`NsError::MapNotConverged`],
+//! carrying the closest any try came. Sections a pre-map fits are fitted
+//! as before, to the bit.
+//!
 //! Accuracy: that of the contour's cubic spline, `O(h⁴)` on smooth
 //! contours (4:1 ellipse from 1024 points: 4e-11), and of the truncation
 //! (`terms⁻²` for the rounded plates and NACA sections, whose curvature
@@ -356,11 +360,13 @@ fn solve_from(
 ) -> Result<Correspondence, f64> {
     // The start's crowding (largest over smallest step in S) asks for
     // about 64 samples per factor of it: a thin section's ends. (Capped
-    // so that an infinite crowding cannot overflow.)
+    // at MAX_SAMPLES: the zipper's start, unlike the pre-maps', is not
+    // blended with the arc length, and a deep notch's crowding could ask
+    // for gigabytes.)
     let probe = start(samples);
     let steps = probe.windows(2).map(|w| w[1] - w[0]);
     let crowding = steps.clone().fold(0.0, f64::max) / steps.fold(f64::INFINITY, f64::min);
-    let wanted = (64.0 * crowding).min((1_u64 << 40) as f64) as usize;
+    let wanted = (64.0 * crowding).min(MAX_SAMPLES as f64) as usize;
     let mut n = samples.max(wanted.next_power_of_two());
     loop {
         match solve_curve(curve, start(n), rotation) {
@@ -562,33 +568,45 @@ mod tests {
         }
     }
 
-    /// NACA 9906, 2906 and 6106 as the command fits them: no pre-map's
-    /// Newton converges (the first's slit leaves the section, and no
-    /// slit the fallbacks try lies inside, or Newton fails after it), and
-    /// Newton on the contour itself does from the zipper's start (module
-    /// docs, "Sections no slit fits"; how close the maps come:
-    /// `tests/section_maps.rs`). A six-lobed star `r = 1 + cos(6θ)/2`,
-    /// where Newton stalls from every start, is an error carrying the
-    /// closest correction, not a panic.
+    /// NACA 9906, 2906 and 6106 as the command fits them, and 6106, 8912
+    /// and 9912 as `tests/section_maps.rs` builds them
+    /// (`Contour::naca4`, 256 points): no pre-map's Newton converges (the
+    /// first's slit leaves the section, and no slit the fallbacks try
+    /// lies inside, or Newton fails after it), and Newton on the contour
+    /// itself does from the zipper's start (module docs, "Sections no
+    /// slit fits"; how close the maps come: `tests/section_maps.rs`). The
+    /// start is within 2e-4 of the perimeter of the fitted correspondence
+    /// (measured: 1.7e-5 to 6.4e-5). A six-lobed star
+    /// `r = 1 + cos(6θ)/2`, where Newton stalls from the polar angle's
+    /// start and the zipper's, is an error carrying the closest of the
+    /// two, not a panic.
     #[test]
     fn the_zipper_starts_newton_where_no_slit_fits() {
-        for code in ["9906", "2906", "6106"] {
-            let contour = sharp_naca(code);
+        let command = ["9906", "2906", "6106"].map(|code| (code, sharp_naca(code)));
+        let tested =
+            ["6106", "8912", "9912"].map(|code| (code, Contour::naca4(code, 256, 0.005).unwrap()));
+        for (code, contour) in command.iter().chain(&tested) {
             let points = contour.points();
             let spline = CurveSpline::closed(points);
             let frame = PrincipalFrame::of(&spline, points);
             let first = Premap::new(&spline, points, &frame);
             assert!(solve_premapped(&first, 1024).is_err(), "NACA {code}");
-            for fitted in Premap::inside(&spline, &contour, frame) {
+            for fitted in Premap::inside(&spline, contour, frame) {
                 assert!(solve_premapped(&fitted, 1024).is_err(), "NACA {code}");
             }
             let angles = zipper::exterior_angles(points).expect("the zipper's angles");
             let start = |n: usize| zipper::start(&angles, spline.knots(), n);
-            assert!(
-                solve_from(&spline, start, 0.0, 1024).is_ok(),
-                "NACA {code}: Newton from the zipper's start"
-            );
-            assert!(solve(&contour, 1024).is_ok(), "NACA {code}: not fitted");
+            let fit = solve_from(&spline, start, 0.0, 1024);
+            let fit = fit.unwrap_or_else(|e| panic!("NACA {code}: Newton from the zipper: {e}"));
+            let away = start(fit.parameters.len())
+                .iter()
+                .zip(&fit.parameters)
+                .map(|(s, fitted)| (s - fitted).abs())
+                .fold(0.0, f64::max)
+                / fit.period;
+            println!("NACA {code}: the zipper's start within {away:.2e} of the perimeter");
+            assert!(away < 2e-4, "NACA {code}: the start {away:.2e} off");
+            assert!(solve(contour, 1024).is_ok(), "NACA {code}: not fitted");
         }
         let star: Vec<(f64, f64)> = (0..512)
             .map(|k| {
@@ -597,10 +615,22 @@ mod tests {
                 (r * t.cos(), r * t.sin())
             })
             .collect();
-        let fit = solve(&Contour::from_points(&star).unwrap(), 1024);
+        let star = Contour::from_points(&star).unwrap();
+        let spline = CurveSpline::closed(star.points());
+        let frame = PrincipalFrame::of(&spline, star.points());
+        let first = Premap::new(&spline, star.points(), &frame);
+        assert_eq!(Premap::inside(&spline, &star, frame).count(), 0);
+        let polar = solve_premapped(&first, 1024).map(|_| ()).unwrap_err();
+        let angles = zipper::exterior_angles(star.points()).expect("the zipper's angles");
+        let start = |n: usize| zipper::start(&angles, spline.knots(), n);
+        let zipped = solve_from(&spline, start, 0.0, 1024)
+            .map(|_| ())
+            .unwrap_err();
+        let fit = solve(&star, 1024);
         let Err(NsError::MapNotConverged { correction, .. }) = fit else {
             panic!("the star: {:?}", fit.map(|_| ()));
         };
+        assert_eq!(correction, polar.min(zipped));
         assert!(correction.is_finite() && correction > 1e-3, "{correction}");
     }
 

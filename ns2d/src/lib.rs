@@ -70,9 +70,9 @@
 //! [`Contour::with_blunt_trailing_edge`], as a corner has no conformal
 //! map) gets its map from [`SectionMap::from_contour`] (Wegmann's
 //! Newton method after a Joukowski/circular-arc pre-map; about 2-4 ms for
-//! 256 points on this loaded machine, `examples/fit_timing.rs`; a thin
-//! section no circular-arc slit fits, on the contour itself from the
-//! geodesic zipper's correspondence, 0.05 to 0.9 s).
+//! 256 points on this loaded machine, `examples/fit_timing.rs`; a
+//! section inside which no circular-arc slit fits, on the contour itself
+//! from the geodesic zipper's correspondence, 0.05 to 0.9 s).
 //!
 //! The host runs it behind `fwav aero2d --model ns` (`fwav::aero2d::viscous`:
 //! harmonic plunge and pitch, and the discipline's flapping section).
