@@ -135,7 +135,8 @@ fn run_of(state: &RunState, cycle: usize, stage: Stage) -> Option<usize> {
 /// this one refuses (a carbon mass fraction of 0.1, below today's floor
 /// of 0.2), a resume still reports it as computed (`done`'s summary),
 /// computing nothing, with the refusal beside it (and `fwav design
-/// --resume` prints it as a warning); the run's files are put back after.
+/// --resume`, with or without `--config` giving the run's configuration
+/// again, prints it as a warning); the run's files are put back after.
 fn a_finished_run_now_refused_is_reported(dir: &Path, done: &DesignRun) {
     let kept: Vec<(&str, Vec<u8>)> = ["config.toml", "state.json"]
         .into_iter()
@@ -154,26 +155,33 @@ fn a_finished_run_now_refused_is_reported(dir: &Path, done: &DesignRun) {
         "{refusal}"
     );
     assert_eq!(earlier.summary, done.summary);
-    // The command says so on its warning line, and reports the run.
-    let out = fwav(&["design", "--quiet", "--resume", dir.to_str().unwrap()]);
-    let (stdout, stderr) = (
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr),
-    );
-    assert!(out.status.success(), "{stderr}");
-    for part in [
-        "warning: ",
-        dir.to_str().unwrap(),
-        "was run with a configuration this fwav refuses (topology.mass_fraction = 0.1 is \
-         outside [0.2, 1])",
-        "reported as they were computed",
-    ] {
-        assert!(stderr.contains(part), "{part}: {stderr}");
+    // The command says so on its warning line, and reports the run; the
+    // same with the run's configuration given again (--config, a copy).
+    let copy = dir.with_extension("config-copy.toml");
+    let d = dir.to_str().unwrap();
+    for args in crate::design_safety::resumes(dir, &copy) {
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let out = fwav(&args);
+        let (stdout, stderr) = (
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr),
+        );
+        assert!(out.status.success(), "{args:?}: {stderr}");
+        for part in [
+            "warning: ",
+            d,
+            "was run with a configuration this fwav refuses (topology.mass_fraction = 0.1 is \
+             outside [0.2, 1])",
+            "reported as they were computed",
+        ] {
+            assert!(stderr.contains(part), "{args:?}: {part}: {stderr}");
+        }
+        assert!(
+            stdout.contains("the run had already finished: nothing computed"),
+            "{args:?}: {stdout}"
+        );
     }
-    assert!(
-        stdout.contains("the run had already finished: nothing computed"),
-        "{stdout}"
-    );
+    std::fs::remove_file(&copy).ok();
     for (file, bytes) in kept {
         std::fs::write(dir.join(file), bytes).unwrap();
     }

@@ -298,6 +298,17 @@ pub(crate) fn as_started_by_an_earlier_fwav(run: &Path, edit: (&str, &str)) {
     state.save(run).unwrap();
 }
 
+/// The two resumes of the run in `run` that must behave alike: `fwav
+/// design --resume RUN`, and the same with `--config COPY`, its
+/// configuration given again (copied here to `copy`).
+pub(crate) fn resumes(run: &Path, copy: &Path) -> [Vec<String>; 2] {
+    std::fs::copy(run.join("config.toml"), copy).unwrap();
+    let resume = ["design", "--quiet", "--resume", run.to_str().unwrap()].map(String::from);
+    let mut with_config = resume.to_vec();
+    with_config.extend(["--config".to_string(), copy.display().to_string()]);
+    [resume.to_vec(), with_config]
+}
+
 /// A run an earlier fwav started with a value this one refuses (a carbon
 /// mass fraction of 0.1, which the range's floor of 0.2 now refuses
 /// because the nonlinear analysis fails there) is not continued: the
@@ -322,20 +333,9 @@ fn a_run_with_a_value_now_refused_is_not_continued() {
     // The same with the run's configuration given again (--config, a
     // copy of it): compared with the run's, not refused for its range
     // before the resume can say what to do.
-    let copy = dir.join("copy.toml");
-    std::fs::write(&copy, &config_text).unwrap();
     let r = run.to_str().unwrap();
-    for args in [
-        vec!["design", "--quiet", "--resume", r],
-        vec![
-            "design",
-            "--quiet",
-            "--resume",
-            r,
-            "--config",
-            copy.to_str().unwrap(),
-        ],
-    ] {
+    for args in resumes(&run, &dir.join("copy.toml")) {
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
         let ran = fwav_within(&args, REFUSAL);
         let stderr = ran.refused("a resume of a run with a value now refused");
         println!("{stderr}");
