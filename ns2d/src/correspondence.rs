@@ -95,7 +95,13 @@
 //! tests' `sharp_naca`; the whole fit 0.05 to 0.9 s each, on 4,096 to
 //! 32,768 samples), and `tests/section_maps.rs` shows 6106, 8912 and
 //! 9912 (from 256 points, where no pre-map fits them either) converging
-//! with the terms, to 3.8e-5 to 6.1e-5 chords with 128. (`fwav aero2d
+//! with the terms, to 3.8e-5 to 6.1e-5 chords with 128. The same path
+//! maps membranes whose mid-line is no arc, which no pre-map had: an S
+//! (`y = 0.02 sin 2πx`, 0.02 chords thick) to 1.7e-6 chords with 256
+//! terms, a dragonfly-like corrugation of three waves of 0.04 chords to
+//! 9.1e-6 (`tests/section_maps.rs`); five waves of 0.03 converge slowly
+//! (8.1e-4 with 256), and of 0.05 Newton stalls at 4e-7 of the perimeter,
+//! above its tolerance (an error). (`fwav aero2d
 //! --model ns` keeps NACA 0099's trailing-edge corner, which turns by
 //! 82°, under the 90° at which the command rounds one; on the corner
 //! Newton's corrections stall at 1.7e-5 of the perimeter,
@@ -570,43 +576,55 @@ mod tests {
 
     /// NACA 9906, 2906 and 6106 as the command fits them, and 6106, 8912
     /// and 9912 as `tests/section_maps.rs` builds them
-    /// (`Contour::naca4`, 256 points): no pre-map's Newton converges (the
+    /// (`Contour::naca4`, 256 points), and its two corrugated membranes
+    /// (an S and three waves): no pre-map's Newton converges (the
     /// first's slit leaves the section, and no slit the fallbacks try
     /// lies inside, or Newton fails after it), and Newton on the contour
     /// itself does from the zipper's start (module docs, "Sections no
     /// slit fits"; how close the maps come: `tests/section_maps.rs`). The
     /// start is within 2e-4 of the perimeter of the fitted correspondence
-    /// (measured: 1.7e-5 to 6.4e-5). A six-lobed star
+    /// (measured: 1.7e-5 to 1.0e-4). A six-lobed star
     /// `r = 1 + cos(6θ)/2`, where Newton stalls from the polar angle's
     /// start and the zipper's, is an error carrying the closest of the
     /// two, not a panic.
     #[test]
     fn the_zipper_starts_newton_where_no_slit_fits() {
-        let command = ["9906", "2906", "6106"].map(|code| (code, sharp_naca(code)));
-        let tested =
-            ["6106", "8912", "9912"].map(|code| (code, Contour::naca4(code, 256, 0.005).unwrap()));
-        for (code, contour) in command.iter().chain(&tested) {
+        let command = ["9906", "2906", "6106"].map(|c| (format!("NACA {c}, sharp"), sharp_naca(c)));
+        let tested = ["6106", "8912", "9912"]
+            .map(|c| (format!("NACA {c}"), Contour::naca4(c, 256, 0.005).unwrap()));
+        // And the corrugated membranes of `tests/section_maps.rs`.
+        let corrugated = [(1.0, 0.02), (3.0, 0.04)].map(|(waves, amplitude): (f64, f64)| {
+            let midline: Vec<(f64, f64)> = (0..=200)
+                .map(|i| {
+                    let x = i as f64 / 200.0;
+                    (x, amplitude * (TAU * waves * x).sin())
+                })
+                .collect();
+            let contour = Contour::membrane(&midline, 0.02, 512).unwrap();
+            (format!("{waves} waves of {amplitude}"), contour)
+        });
+        for (code, contour) in command.iter().chain(&tested).chain(&corrugated) {
             let points = contour.points();
             let spline = CurveSpline::closed(points);
             let frame = PrincipalFrame::of(&spline, points);
             let first = Premap::new(&spline, points, &frame);
-            assert!(solve_premapped(&first, 1024).is_err(), "NACA {code}");
+            assert!(solve_premapped(&first, 1024).is_err(), "{code}");
             for fitted in Premap::inside(&spline, contour, frame) {
-                assert!(solve_premapped(&fitted, 1024).is_err(), "NACA {code}");
+                assert!(solve_premapped(&fitted, 1024).is_err(), "{code}");
             }
             let angles = zipper::exterior_angles(points).expect("the zipper's angles");
             let start = |n: usize| zipper::start(&angles, spline.knots(), n);
             let fit = solve_from(&spline, start, 0.0, 1024);
-            let fit = fit.unwrap_or_else(|e| panic!("NACA {code}: Newton from the zipper: {e}"));
+            let fit = fit.unwrap_or_else(|e| panic!("{code}: Newton from the zipper: {e}"));
             let away = start(fit.parameters.len())
                 .iter()
                 .zip(&fit.parameters)
                 .map(|(s, fitted)| (s - fitted).abs())
                 .fold(0.0, f64::max)
                 / fit.period;
-            println!("NACA {code}: the zipper's start within {away:.2e} of the perimeter");
-            assert!(away < 2e-4, "NACA {code}: the start {away:.2e} off");
-            assert!(solve(contour, 1024).is_ok(), "NACA {code}: not fitted");
+            println!("{code}: the zipper's start within {away:.2e} of the perimeter");
+            assert!(away < 2e-4, "{code}: the start {away:.2e} off");
+            assert!(solve(contour, 1024).is_ok(), "{code}: not fitted");
         }
         let star: Vec<(f64, f64)> = (0..512)
             .map(|k| {

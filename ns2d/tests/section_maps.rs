@@ -331,3 +331,49 @@ fn sections_no_slit_fits_are_reproduced() {
         fit.map(|_| ())
     );
 }
+
+/// Corrugated membranes (a dragonfly wing's section, smoothed: the
+/// mid-line `y = A sin(2π k x)`, 0.02 chords thick,
+/// `Contour::membrane` on 512 points), on which no pre-map fits (unit
+/// tests of `correspondence.rs`), fitted from the zipper's start. Their
+/// boundaries converge with the terms (worst distance from the
+/// 4096-point contour, chords, measured):
+///
+/// | mid-line | 16 | 64 | 128 | 256 |
+/// |---|---:|---:|---:|---:|
+/// | one wave, A = 0.02 (an S) | 3.33e-4 | 2.35e-5 | 6.41e-6 | 1.67e-6 |
+/// | three waves, A = 0.04 | 2.19e-2 | 2.05e-3 | 2.44e-4 | 9.08e-6 |
+///
+/// Sharper corrugations are beyond the fit: five waves of A = 0.03 map
+/// but converge slowly (8.4e-3, 3.3e-3 and 8.1e-4 with 64, 128 and 256
+/// terms, not one-to-one with 16), and with A = 0.05 Newton's
+/// corrections stall at 4e-7 of the perimeter, above its tolerance: an
+/// error (module docs of `correspondence.rs`, "Sections no slit fits").
+#[test]
+fn corrugated_membranes_are_reproduced() {
+    for (waves, amplitude, bound) in [(1.0, 0.02, 3e-6), (3.0, 0.04, 2e-5)] {
+        let midline: Vec<(f64, f64)> = (0..=200)
+            .map(|i| {
+                let x = i as f64 / 200.0;
+                (x, amplitude * (TAU * waves * x).sin())
+            })
+            .collect();
+        let contour = Contour::membrane(&midline, 0.02, 512).unwrap();
+        let reference = Contour::membrane(&midline, 0.02, 4096).unwrap();
+        let mut previous = f64::INFINITY;
+        for terms in [16, 64, 128, 256] {
+            let map = SectionMap::from_contour(&contour, terms).unwrap();
+            let distance = boundary_distance(&map, &reference, 2048);
+            println!("{waves} waves of {amplitude}: {terms} terms: {distance:.2e} chords");
+            assert!(
+                distance < 0.3 * previous,
+                "{waves} waves: {terms} terms: {distance:.2e}"
+            );
+            previous = distance;
+            if terms == 256 {
+                assert_univalent(&map);
+            }
+        }
+        assert!(previous < bound, "{waves} waves: {previous:.2e}");
+    }
+}
