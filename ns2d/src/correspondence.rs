@@ -196,6 +196,22 @@ pub(crate) struct Correspondence {
 }
 
 impl Correspondence {
+    /// The largest distance, at the `N` samples, between the fitted
+    /// boundary `η(S(t_j))` (on the contour) and the boundary of the map
+    /// kept to `a`, `z0` and `terms` coefficients `b_k`: the modes left out,
+    /// summed by one inverse FFT ([`crate::SectionMap::from_contour_with_deviation`]).
+    pub(crate) fn truncation_deviation(&self, terms: usize) -> f64 {
+        let n = self.modes.len();
+        let mut left = self.modes.clone();
+        left[0] = Complex64::new(0.0, 0.0);
+        left[1] = Complex64::new(0.0, 0.0);
+        for k in 1..=terms.min(n - 2) {
+            left[n - k] = Complex64::new(0.0, 0.0);
+        }
+        FftPlanner::new().plan_fft_inverse(n).process(&mut left);
+        left.iter().fold(0.0, |worst, e| worst.max(e.norm()))
+    }
+
     /// The angles `t` on the unit circle the curve's parameters `s` map
     /// from (inverse of the monotone `S`, linear between samples).
     pub(crate) fn angles(&self, s: &[f64]) -> Vec<f64> {

@@ -94,7 +94,7 @@ impl SectionMap {
     /// or sharp for its points), [`NsError::MapNotUnivalent`] when the
     /// truncated series is not one-to-one outside the circle.
     pub fn from_contour(contour: &Contour, terms: usize) -> Result<Self, NsError> {
-        Ok(Self::from_contour_with_angles(contour, terms)?.0)
+        Ok(Self::fitted(contour, terms)?.0)
     }
 
     /// [`Self::from_contour`], and the angle `θ` on the unit circle of each
@@ -108,6 +108,42 @@ impl SectionMap {
         contour: &Contour,
         terms: usize,
     ) -> Result<(Self, Vec<f64>), NsError> {
+        let (map, fit) = Self::fitted(contour, terms)?;
+        let knots = crate::spline::CurveSpline::closed(contour.points())
+            .knots()
+            .to_vec();
+        let angles = fit.angles(&knots[..contour.len()]);
+        Ok((map, angles))
+    }
+
+    /// [`Self::from_contour`], and how far the map's boundary lies from the
+    /// contour at most (the contour's units): at each of the fit's `N`
+    /// samples, the distance from the fitted point on the contour to the
+    /// truncated series' boundary point, which is the sum of the modes the
+    /// series leaves out (an upper bound on the distance there to the
+    /// spline through the contour's points). Where the contour has a
+    /// corner or a fold, the series converges slowly and the grid's
+    /// section is the contour smoothed: NACA 9112 from 256 points, 1.4e-3
+    /// chords with 128 terms (1.0e-3 measured from a finer contour);
+    /// NACA 0012, 1.7e-5 (`tests/section_maps.rs`). One FFT of `N` more
+    /// than the fit.
+    ///
+    /// # Errors
+    /// As [`Self::from_contour`].
+    pub fn from_contour_with_deviation(
+        contour: &Contour,
+        terms: usize,
+    ) -> Result<(Self, f64), NsError> {
+        let (map, fit) = Self::fitted(contour, terms)?;
+        Ok((map, fit.truncation_deviation(terms)))
+    }
+
+    /// The fit behind [`Self::from_contour`]: the map, checked one-to-one,
+    /// and the correspondence it came from.
+    fn fitted(
+        contour: &Contour,
+        terms: usize,
+    ) -> Result<(Self, correspondence::Correspondence), NsError> {
         if !(1..=4096).contains(&terms) {
             return Err(NsError::BadSection {
                 what: "number of Laurent terms (1 to 4096)",
@@ -132,11 +168,7 @@ impl SectionMap {
         if zeros != 0 {
             return Err(NsError::MapNotUnivalent { terms, zeros });
         }
-        let knots = crate::spline::CurveSpline::closed(contour.points())
-            .knots()
-            .to_vec();
-        let angles = fit.angles(&knots[..contour.len()]);
-        Ok((map, angles))
+        Ok((map, fit))
     }
 
     /// The same section with its circle turned: `F(e^{iφ} ζ)` (the one

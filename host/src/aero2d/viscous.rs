@@ -298,6 +298,35 @@ impl ViscousSection {
     /// from the leading edge) at the origin.
     fn map(&self, pivot: f64) -> Result<SectionMap, ViscousError> {
         let terms = self.laurent_terms()?;
+        match self.outline(pivot)? {
+            Outline::Contour(contour) => Ok(SectionMap::from_contour(&contour, terms)?),
+            Outline::Ellipse(t) => Ok(SectionMap::ellipse(0.5, 0.5 * t, (0.5 - pivot, 0.0))?),
+        }
+    }
+
+    /// How far the grid's section lies from the given one at most,
+    /// chords ([`SectionMap::from_contour_with_deviation`]): the conformal
+    /// map's series, kept to half the nodes round, smooths a corner or a
+    /// fold. `None` for the ellipse, whose map is exact. Cost: one fit of
+    /// the map (milliseconds; up to about a second for a contour no
+    /// pre-map opens).
+    ///
+    /// # Errors
+    /// As the run's: a bad thickness, a contour that is no simple curve,
+    /// a map that does not converge or is not one-to-one.
+    pub fn map_deviation(&self) -> Result<Option<f64>, ViscousError> {
+        let terms = self.laurent_terms()?;
+        match self.outline(0.0)? {
+            Outline::Contour(contour) => Ok(Some(
+                SectionMap::from_contour_with_deviation(&contour, terms)?.1,
+            )),
+            Outline::Ellipse(_) => Ok(None),
+        }
+    }
+
+    /// The section's outline, the pitch axis `pivot` (chords from the
+    /// leading edge) at the origin, its thickness checked.
+    fn outline(&self, pivot: f64) -> Result<Outline, ViscousError> {
         let shifted = |points: &[(f64, f64)]| -> Vec<(f64, f64)> {
             points.iter().map(|&(x, y)| (x - pivot, y)).collect()
         };
@@ -305,9 +334,7 @@ impl ViscousSection {
             ViscousShape::Ellipse(t) | ViscousShape::Plate(t) if !(0.005..=0.3).contains(t) => {
                 return Err(ViscousError::Thickness(*t))
             }
-            ViscousShape::Ellipse(t) => {
-                return Ok(SectionMap::ellipse(0.5, 0.5 * t, (0.5 - pivot, 0.0))?)
-            }
+            ViscousShape::Ellipse(t) => return Ok(Outline::Ellipse(*t)),
             ViscousShape::Plate(t) => {
                 let plate = Contour::flat_plate(1.0 - t, *t, CONTOUR_POINTS)?;
                 let points: Vec<(f64, f64)> = plate
@@ -319,7 +346,7 @@ impl ViscousSection {
             }
             ViscousShape::Contour(points) => Contour::from_points(&shifted(points))?,
         };
-        Ok(SectionMap::from_contour(&contour, terms)?)
+        Ok(Outline::Contour(contour))
     }
 
     /// The Laurent terms of the section's maps: half the nodes round,
@@ -388,6 +415,22 @@ impl ViscousSection {
             around,
         })
     }
+}
+
+/// How far (chords) the grid's section may lie from the given contour
+/// ([`ViscousSection::map_deviation`]) before `fwav aero2d --model ns`
+/// warns: ten times what smooth sections show with 128 terms (NACA 0012,
+/// 2412, 4106 and 6106 from 256 points: 1.7e-5 to 3.3e-5), a seventh of
+/// a NACA lower surface's corner at `x = p` (9112: 1.4e-3) or fold (6130,
+/// 8120, 9120: 1.5e-3 to 7.4e-3; `ns2d/tests/section_maps.rs`).
+pub const MAP_DEVIATION_WARNING: f64 = 2e-4;
+
+/// A section's outline as its map is built ([`ViscousSection::map`]).
+enum Outline {
+    /// The ellipse of this thickness (chords), mapped exactly.
+    Ellipse(f64),
+    /// A contour, whose map is fitted.
+    Contour(Contour),
 }
 
 /// What a viscous run leaves.

@@ -11,7 +11,9 @@ use fwav::aero2d::case::{
 };
 use fwav::aero2d::friction::FWAV_REYNOLDS;
 use fwav::aero2d::motion::Motion;
-use fwav::aero2d::viscous::{FlowField, FrameSink, ViscousCost, ViscousError, ViscousSection};
+use fwav::aero2d::viscous::{
+    FlowField, FrameSink, ViscousCost, ViscousError, ViscousSection, MAP_DEVIATION_WARNING,
+};
 use fwav::aero2d::window::MIN_SHEDDING_PERIODS;
 use fwav::aeroelastic::handoff::SectionFile;
 use fwav::discipline::section::FWAV_LESP_CRITICAL;
@@ -508,6 +510,19 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
                 a.yes,
                 "choose a coarser grid (--ns-around, --ns-radial) or fewer --field-frames",
             )?;
+        }
+        // A map that does not fit is the run's error, said there.
+        if let Ok(Some(deviation)) = section.map_deviation() {
+            if deviation > MAP_DEVIATION_WARNING {
+                eprintln!(
+                    "warning: --section {}: the grid's section lies up to {deviation:.1e} chords \
+                     from the contour given (its conformal map, {} terms, smooths a corner or \
+                     fold there): the run is of that smoothed section; round the contour there, \
+                     or give more --ns-around (terms are half of it) where it is merely curved",
+                    a.section,
+                    section.around / 2
+                );
+            }
         }
     }
     // The series is written as the run reaches each frame.

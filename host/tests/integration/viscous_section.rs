@@ -12,7 +12,9 @@ use std::f64::consts::PI;
 use fwav::aero2d::camber::CamberError;
 use fwav::aero2d::case::{Case, SectionModel};
 use fwav::aero2d::motion::Motion;
-use fwav::aero2d::viscous::{SectionPath, ViscousError, ViscousSection, ViscousShape};
+use fwav::aero2d::viscous::{
+    SectionPath, ViscousError, ViscousSection, ViscousShape, MAP_DEVIATION_WARNING,
+};
 use fwav::validation::aero2d::{ldvm_case1_cfd, window_mean};
 
 use crate::program::fwav;
@@ -580,6 +582,65 @@ fn a_thick_sections_blunt_edge_has_a_map() {
         let terms = ViscousSection::plate(ViscousSection::DEFAULT_THICKNESS).around / 2;
         if let Err(e) = fwav_ns2d::SectionMap::from_contour(&contour, terms) {
             panic!("{code}: {e}");
+        }
+    }
+}
+
+/// A NACA lower surface's corner at `x = p` (37° on 9112) has no smooth
+/// conformal map, and the series the grid is built on smooths it: the
+/// map's own figure of how far its section lies from the contour
+/// ([`ViscousSection::map_deviation`]; `ns2d/tests/section_maps.rs`
+/// checks it against the measured distance) exceeds
+/// [`MAP_DEVIATION_WARNING`] on NACA 9112 at 128 terms (1.3e-3 c), and
+/// `fwav aero2d --model ns` warns of it, naming the section and the
+/// distance. NACA 0012 and the plate, smooth, stay below (no warning),
+/// and the ellipse, mapped exactly, has no such figure.
+#[test]
+fn a_section_its_map_smooths_is_warned_of() {
+    let with = |shape: ViscousShape| ViscousSection {
+        around: 256,
+        ..ViscousSection::new(shape)
+    };
+    let named = |code: &str| with(SectionModel::named_viscous(code, 0.04).unwrap());
+    let corner = named("naca9112").map_deviation().unwrap().unwrap();
+    assert!(corner > MAP_DEVIATION_WARNING, "{corner:.2e}");
+    for smooth in [named("naca0012"), with(ViscousShape::Plate(0.04))] {
+        let deviation = smooth.map_deviation().unwrap().unwrap();
+        assert!(deviation < 0.2 * MAP_DEVIATION_WARNING, "{deviation:.2e}");
+    }
+    assert_eq!(
+        with(ViscousShape::Ellipse(0.1)).map_deviation().unwrap(),
+        None
+    );
+    for (code, warned) in [("naca9112", true), ("naca0012", false)] {
+        let args = [
+            "aero2d",
+            "--model",
+            "ns",
+            "--section",
+            code,
+            "--ns-around",
+            "256",
+            "--ns-radial",
+            "48",
+            "--reynolds",
+            "1000",
+            "--duration",
+            "0.04",
+        ];
+        let out = fwav(&args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            out.status.code().is_some_and(|c| c != 1),
+            "{code}: {stderr}"
+        );
+        let warning = format!("warning: --section {code}: the grid's section lies up to");
+        assert_eq!(stderr.contains(&warning), warned, "{code}: {stderr}");
+        if warned {
+            assert!(
+                stderr.contains("e-3 chords from the contour given"),
+                "{stderr}"
+            );
         }
     }
 }
