@@ -304,10 +304,11 @@ impl ViscousSection {
         }
     }
 
-    /// How far the grid's section lies from the given one at most,
-    /// chords ([`SectionMap::from_contour_with_deviation`]): the conformal
-    /// map's series, kept to half the nodes round, smooths a corner or a
-    /// fold. `None` for the ellipse, whose map is exact. Cost: one fit of
+    /// How far the grid's section departs from the given one, chords,
+    /// where it departs most among the map's samples
+    /// ([`SectionMap::from_contour_with_deviation`]): the conformal map's
+    /// series, kept to half the nodes round, smooths a corner or a fold.
+    /// `None` for the ellipse, whose map is exact. Cost: one fit of
     /// the map (milliseconds; up to about a second for a contour no
     /// pre-map opens).
     ///
@@ -417,12 +418,15 @@ impl ViscousSection {
     }
 }
 
-/// How far (chords) the grid's section may lie from the given contour
+/// How far (chords) the grid's section may depart from the given contour
 /// ([`ViscousSection::map_deviation`]) before `fwav aero2d --model ns`
-/// warns: ten times what smooth sections show with 128 terms (NACA 0012,
-/// 2412, 4106 and 6106 from 256 points: 1.7e-5 to 3.3e-5), a seventh of
-/// a NACA lower surface's corner at `x = p` (9112: 1.4e-3) or fold (6130,
-/// 8120, 9120: 1.5e-3 to 7.4e-3; `ns2d/tests/section_maps.rs`).
+/// warns. With 128 terms, smooth sections show 1.7e-5 to 3.3e-5 (NACA
+/// 0012, 2412 and 6106 from 256 points: six to twelve times below), and
+/// a NACA lower surface's corner at `x = p` or fold 1.4e-3 to 7.4e-3
+/// (9112, 6130, 8120, 9120; `ns2d/tests/section_maps.rs`; 9112 through
+/// the command's 512-point contour, 1.3e-3). A smooth section on too few
+/// terms may pass it too (NACA 0012's boundary is 1.1e-4 chords off with
+/// 32 terms): the warning names both causes.
 pub const MAP_DEVIATION_WARNING: f64 = 2e-4;
 
 /// A section's outline as its map is built ([`ViscousSection::map`]).

@@ -495,6 +495,30 @@ fn run_bar(duration: f64) -> ProgressBar {
     bar
 }
 
+/// How far the viscous grid's section departs from the contour given
+/// (chords, at the map's samples: [`ViscousSection::map_deviation`]),
+/// warned of on stderr beyond [`MAP_DEVIATION_WARNING`]; `None` for the
+/// inviscid models and the ellipse. A map that does not fit is the run's
+/// error, said there.
+fn map_deviation(a: &Aero2dArgs, case: &Case) -> Option<f64> {
+    let SectionModel::Viscous(section) = &case.section else {
+        return None;
+    };
+    let deviation = section.map_deviation().ok().flatten()?;
+    if deviation > MAP_DEVIATION_WARNING {
+        eprintln!(
+            "warning: --section {}: the grid's section departs from the contour given by about \
+             {deviation:.1e} chords where it departs most (its conformal map, {} terms, smooths \
+             a corner or fold there, or a bend too tight for so few terms): the run is of that \
+             smoothed section; round the contour there, or give more --ns-around (the terms are \
+             half of it) where it is merely curved",
+            a.section,
+            section.around / 2
+        );
+    }
+    Some(deviation)
+}
+
 /// Runs the command.
 pub fn run(a: &Aero2dArgs) -> Result<()> {
     check(a)?;
@@ -511,20 +535,8 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
                 "choose a coarser grid (--ns-around, --ns-radial) or fewer --field-frames",
             )?;
         }
-        // A map that does not fit is the run's error, said there.
-        if let Ok(Some(deviation)) = section.map_deviation() {
-            if deviation > MAP_DEVIATION_WARNING {
-                eprintln!(
-                    "warning: --section {}: the grid's section lies up to {deviation:.1e} chords \
-                     from the contour given (its conformal map, {} terms, smooths a corner or \
-                     fold there): the run is of that smoothed section; round the contour there, \
-                     or give more --ns-around (terms are half of it) where it is merely curved",
-                    a.section,
-                    section.around / 2
-                );
-            }
-        }
     }
+    let map_deviation = map_deviation(a, &case);
     // The series is written as the run reaches each frame.
     let series = match &a.field_series {
         Some(dir) => {
@@ -585,8 +597,8 @@ pub fn run(a: &Aero2dArgs) -> Result<()> {
         write_flow_field(field, vtu).with_context(|| not_written("--field", vtu))?;
     }
     match a.duration {
-        Some(duration) => report_window(a, &case, &run, duration),
-        None => report_cycles(a, &case, &run),
+        Some(duration) => report_window(a, &case, &run, duration, map_deviation),
+        None => report_cycles(a, &case, &run, map_deviation),
     }
 }
 
@@ -605,7 +617,11 @@ fn motion_words(a: &Aero2dArgs, still: bool) -> String {
 
 /// The case as the JSON output names it (the section, its motion and
 /// deformation, the Reynolds number), with the report's own `fields`.
-fn case_json(a: &Aero2dArgs, fields: serde_json::Value) -> serde_json::Value {
+fn case_json(
+    a: &Aero2dArgs,
+    map_deviation: Option<f64>,
+    fields: serde_json::Value,
+) -> serde_json::Value {
     let mut v = serde_json::json!({
         "section": a.section,
         "reduced_frequency": a.reduced_frequency,
@@ -616,6 +632,7 @@ fn case_json(a: &Aero2dArgs, fields: serde_json::Value) -> serde_json::Value {
         "pivot_chords": a.pivot,
         "deforming": a.deformation.is_some(),
         "reynolds": a.reynolds,
+        "section_map_deviation_chords": map_deviation,
     });
     if let (Some(v), serde_json::Value::Object(fields)) = (v.as_object_mut(), fields) {
         v.extend(fields);
@@ -625,7 +642,13 @@ fn case_json(a: &Aero2dArgs, fields: serde_json::Value) -> serde_json::Value {
 
 /// Prints a run without a period (`--duration`): the loads over its
 /// second half and at its end.
-fn report_window(a: &Aero2dArgs, case: &Case, run: &CaseRun, duration: f64) -> Result<()> {
+fn report_window(
+    a: &Aero2dArgs,
+    case: &Case,
+    run: &CaseRun,
+    duration: f64,
+    map_deviation: Option<f64>,
+) -> Result<()> {
     let w = run.second_half().context(
         "the run left fewer than two load samples over its second half: give a longer --duration",
     )?;
@@ -636,6 +659,7 @@ fn report_window(a: &Aero2dArgs, case: &Case, run: &CaseRun, duration: f64) -> R
     if a.json {
         let v = case_json(
             a,
+            map_deviation,
             serde_json::json!({
                 "model": model_name(&case.section),
                 "at_rest": still,
@@ -693,7 +717,12 @@ fn report_window(a: &Aero2dArgs, case: &Case, run: &CaseRun, duration: f64) -> R
 
 /// Prints a periodic run: the last cycle's means and its periodicity
 /// (an error, [`Doubtful`], when it is not periodic).
-fn report_cycles(a: &Aero2dArgs, case: &Case, run: &CaseRun) -> Result<()> {
+fn report_cycles(
+    a: &Aero2dArgs,
+    case: &Case,
+    run: &CaseRun,
+    map_deviation: Option<f64>,
+) -> Result<()> {
     let m = run.means();
     let periodic = (!m.is_periodic()).then(|| {
         format!(
@@ -714,6 +743,7 @@ fn report_cycles(a: &Aero2dArgs, case: &Case, run: &CaseRun) -> Result<()> {
     if a.json {
         let mut v = case_json(
             a,
+            map_deviation,
             serde_json::json!({
                 "lesp_critical": a.lesp_critical,
                 "cycles": a.cycles,

@@ -593,8 +593,9 @@ fn a_thick_sections_blunt_edge_has_a_map() {
 /// checks it against the measured distance) exceeds
 /// [`MAP_DEVIATION_WARNING`] on NACA 9112 at 128 terms (1.3e-3 c), and
 /// `fwav aero2d --model ns` warns of it, naming the section and the
-/// distance. NACA 0012 and the plate, smooth, stay below (no warning),
-/// and the ellipse, mapped exactly, has no such figure.
+/// distance, and gives the figure in `--json`. NACA 0012 and the plate,
+/// smooth, stay below (no warning), and the ellipse, mapped exactly, has
+/// no such figure.
 #[test]
 fn a_section_its_map_smooths_is_warned_of() {
     let with = |shape: ViscousShape| ViscousSection {
@@ -627,6 +628,7 @@ fn a_section_its_map_smooths_is_warned_of() {
             "1000",
             "--duration",
             "0.04",
+            "--json",
         ];
         let out = fwav(&args);
         let stderr = String::from_utf8_lossy(&out.stderr);
@@ -634,14 +636,20 @@ fn a_section_its_map_smooths_is_warned_of() {
             out.status.code().is_some_and(|c| c != 1),
             "{code}: {stderr}"
         );
-        let warning = format!("warning: --section {code}: the grid's section lies up to");
+        let warning = format!("warning: --section {code}: the grid's section departs from");
         assert_eq!(stderr.contains(&warning), warned, "{code}: {stderr}");
         if warned {
-            assert!(
-                stderr.contains("e-3 chords from the contour given"),
-                "{stderr}"
-            );
+            assert!(stderr.contains("by about 1.3e-3 chords"), "{stderr}");
         }
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON on stdout");
+        let figure = v["section_map_deviation_chords"]
+            .as_f64()
+            .expect("the figure");
+        assert_eq!(
+            figure > MAP_DEVIATION_WARNING,
+            warned,
+            "{code}: {figure:.2e}"
+        );
     }
 }
 
