@@ -455,6 +455,26 @@ fn solve_curve(
     Err(last)
 }
 
+/// The start `S(t_j)` at `t_j = 2πj/n` of a correspondence known at the
+/// curve's knots: knot `k` (parameter `knots[k]`, the period at
+/// `knots[m]`) at the angle `phi[k] + shift.0 + shift.1`, `phi` increasing
+/// from 0 at the first knot to `2π` at the last; linear between knots, by
+/// whole turns beyond (the pre-map's start and the zipper's).
+fn start_at_angles(phi: &[f64], knots: &[f64], shift: (f64, f64), n: usize) -> Vec<f64> {
+    let m = phi.len() - 1;
+    let length = knots[m];
+    (0..n)
+        .map(|j| {
+            let target = TAU * j as f64 / n as f64 - shift.0 - shift.1;
+            let turns = (target / TAU).floor();
+            let f = target - turns * TAU;
+            let k = phi.partition_point(|&p| p <= f).clamp(1, m) - 1;
+            let w = ((f - phi[k]) / (phi[k + 1] - phi[k])).clamp(0.0, 1.0);
+            knots[k] + w * (knots[k + 1] - knots[k]) + turns * length
+        })
+        .collect()
+}
+
 /// Whether `s` increases all round (within one period).
 fn increasing(s: &[f64], length: f64) -> bool {
     s.windows(2).all(|w| w[1] > w[0]) && s[0] + length > s[s.len() - 1]

@@ -8,7 +8,7 @@
 use realfft::num_complex::Complex64;
 use std::f64::consts::TAU;
 
-use super::{wrap, ClosedCurve};
+use super::{start_at_angles, wrap, ClosedCurve};
 use crate::contour::Contour;
 use crate::spline::CurveSpline;
 
@@ -221,17 +221,7 @@ impl<'a> Premap<'a> {
             phi.push(0.98 * running + 0.02 * TAU * s / length);
         }
         phi.push(TAU);
-        let offset = w0.arg();
-        (0..n)
-            .map(|j| {
-                let target = TAU * j as f64 / n as f64 - self.beta - offset;
-                let turns = (target / TAU).floor();
-                let f = target - turns * TAU;
-                let k = phi.partition_point(|&p| p <= f).clamp(1, m) - 1;
-                let w = ((f - phi[k]) / (phi[k + 1] - phi[k])).clamp(0.0, 1.0);
-                knots[k] + w * (knots[k + 1] - knots[k]) + turns * length
-            })
-            .collect()
+        start_at_angles(&phi, knots, (self.beta, w0.arg()), n)
     }
 }
 

@@ -48,7 +48,7 @@
 use realfft::num_complex::Complex64;
 use std::f64::consts::{PI, TAU};
 
-use super::wrap;
+use super::{start_at_angles, wrap};
 
 /// Directions round the far field in which the map's rotation is read.
 const FAR_DIRECTIONS: usize = 16;
@@ -226,22 +226,12 @@ impl Zipped {
 
 /// The start `S(t_j)` at `t_j = 2πj/n` from the points' `angles`
 /// ([`exterior_angles`]) and their spline parameters `knots` (one more
-/// than the points: the period at the end), linear between points.
+/// than the points: the period at the end), linear between points
+/// ([`start_at_angles`], the angles taken from the first point's).
 pub(super) fn start(angles: &[f64], knots: &[f64], n: usize) -> Vec<f64> {
-    let m = angles.len();
-    let length = knots[m];
-    let mut t = angles.to_vec();
-    t.push(angles[0] + TAU);
-    (0..n)
-        .map(|j| {
-            let target = TAU * j as f64 / n as f64 - t[0];
-            let turns = (target / TAU).floor();
-            let x = t[0] + target - turns * TAU;
-            let k = t.partition_point(|&p| p <= x).clamp(1, m) - 1;
-            let w = ((x - t[k]) / (t[k + 1] - t[k])).clamp(0.0, 1.0);
-            knots[k] + w * (knots[k + 1] - knots[k]) + turns * length
-        })
-        .collect()
+    let mut phi: Vec<f64> = angles.iter().map(|t| t - angles[0]).collect();
+    phi.push(TAU);
+    start_at_angles(&phi, knots, (angles[0], 0.0), n)
 }
 
 #[cfg(test)]
