@@ -41,5 +41,6 @@ mod validate;
 mod viscous_default_section;
 mod viscous_field;
 mod viscous_section;
+mod viscous_shapes;
 mod viscous_stream;
 mod vtk_reader;
